@@ -1,0 +1,61 @@
+// Microfacet BRDF: anisotropic GGX or Beckmann NDF, height-correlated Smith masking-shadowing,
+// Schlick Fresnel; Lambert diffuse. Directions are in the local shading frame (z = normal).
+#include "common/constants.glsl"
+
+// GGX (Trowbridge-Reitz) NDF, Walter et al. 2007 eq. 33 with Heitz 2014's anisotropic form.
+float ndfGGX(vec3 h, vec2 alpha) {
+  if (h.z <= 0.0) return 0.0;
+  vec2 a = max(alpha, vec2(MIN_ALPHA));
+  float e = (h.x * h.x) / (a.x * a.x) + (h.y * h.y) / (a.y * a.y) + h.z * h.z;
+  return 1.0 / (PI * a.x * a.y * e * e);
+}
+
+// Beckmann NDF, Walter et al. 2007 eq. 25 (anisotropic).
+float ndfBeckmann(vec3 h, vec2 alpha) {
+  if (h.z <= 0.0) return 0.0;
+  vec2 a = max(alpha, vec2(MIN_ALPHA));
+  float cos2 = h.z * h.z;
+  float e = ((h.x * h.x) / (a.x * a.x) + (h.y * h.y) / (a.y * a.y)) / cos2;
+  return exp(-e) / (PI * a.x * a.y * cos2 * cos2);
+}
+
+float ndf(int kind, vec3 h, vec2 alpha) { return kind == 1 ? ndfBeckmann(h, alpha) : ndfGGX(h, alpha); }
+
+// Smith Lambda (Heitz 2014, eqs. 72 and 80) for direction w; a^-2 = alpha(w)^2 tan^2(theta).
+float smithLambda(int kind, vec3 w, vec2 alpha) {
+  vec2 a = max(alpha, vec2(MIN_ALPHA));
+  float z2 = max(w.z * w.z, 1e-12);
+  float t2 = (a.x * a.x * w.x * w.x + a.y * a.y * w.y * w.y) / z2;  // alpha^2 tan^2
+  if (kind == 1) {
+    // Beckmann: Lambda(a) with a = 1 / (alpha tan); Walter et al. 2007's rational fit (eq. 27).
+    float b = inversesqrt(max(t2, 1e-12));
+    if (b >= 1.6) return 0.0;
+    return (1.0 - 1.259 * b + 0.396 * b * b) / (3.535 * b + 2.181 * b * b);
+  }
+  return 0.5 * (-1.0 + sqrt(1.0 + t2));
+}
+
+float smithG1(int kind, vec3 w, vec2 alpha) { return 1.0 / (1.0 + smithLambda(kind, w, alpha)); }
+
+// Height-correlated masking-shadowing (Heitz 2014, eq. 99).
+float smithG2(int kind, vec3 wo, vec3 wi, vec2 alpha) {
+  return 1.0 / (1.0 + smithLambda(kind, wo, alpha) + smithLambda(kind, wi, alpha));
+}
+
+vec3 fresnelSchlick(vec3 f0, float cosTheta) {
+  float m = clamp(1.0 - cosTheta, 0.0, 1.0);
+  float m2 = m * m;
+  return f0 + (1.0 - f0) * (m2 * m2 * m);
+}
+
+// f_s(wo, wi) * cos(theta_i): the specular BRDF times the cosine, for local directions.
+vec3 specularCos(int kind, vec3 wo, vec3 wi, vec2 alpha, vec3 f0) {
+  if (wo.z <= 0.0 || wi.z <= 0.0) return vec3(0.0);
+  vec3 h = normalize(wo + wi);
+  float d = ndf(kind, h, alpha);
+  float g = smithG2(kind, wo, wi, alpha);
+  return fresnelSchlick(f0, dot(wo, h)) * (d * g / (4.0 * wo.z));
+}
+
+// Lambert diffuse times the cosine.
+vec3 diffuseCos(vec3 albedo, vec3 wi) { return albedo * (INV_PI * max(wi.z, 0.0)); }

@@ -1,0 +1,154 @@
+// Lights (std430, binding 1; see src/render/gpu_scene.cpp) and their exact geometry: ray hits,
+// sampling and densities. Approximations of a light belong to the methods, not here.
+#include "common/constants.glsl"
+
+struct LightData {
+  vec4 colour_type;      // rgb: intensity (point), irradiance (directional) or radiance; a: type
+  vec4 position_radius;  // xyz: centre; w: radius (disk, sphere)
+  vec4 direction_cos;    // xyz: travel direction (directional) or emitting normal (disk, quad);
+                         // w: cos(angular radius) of a directional light (1 = delta)
+  vec4 axisU;            // quad: half edge vectors
+  vec4 axisV;
+};
+layout(std430, binding = 1) readonly buffer LightBlock { LightData lights[]; };
+
+const int LIGHT_POINT = 0;
+const int LIGHT_DIRECTIONAL = 1;
+const int LIGHT_DISK = 2;
+const int LIGHT_SPHERE = 3;
+const int LIGHT_QUAD = 4;
+const float FAR_AWAY = 1e30;
+
+int lightType(LightData L) { return int(L.colour_type.a); }
+
+// Lights with extent: a delta-free integral over solid angle (area lights, directional with
+// an angular radius).
+bool lightHasExtent(LightData L) {
+  int t = lightType(L);
+  return t >= LIGHT_DISK || (t == LIGHT_DIRECTIONAL && L.direction_cos.w < 1.0);
+}
+
+// Radiance of lights with extent. A directional light of angular radius theta with irradiance E
+// at normal incidence has radiance E / (pi sin^2 theta).
+vec3 lightRadiance(LightData L) {
+  if (lightType(L) == LIGHT_DIRECTIONAL) {
+    float sin2 = max(1.0 - L.direction_cos.w * L.direction_cos.w, 1e-12);
+    return L.colour_type.rgb / (PI * sin2);
+  }
+  return L.colour_type.rgb;
+}
+
+float lightArea(LightData L) {
+  int t = lightType(L);
+  float r = L.position_radius.w;
+  if (t == LIGHT_DISK) return PI * r * r;
+  if (t == LIGHT_QUAD) return 4.0 * length(L.axisU.xyz) * length(L.axisV.xyz);
+  return 4.0 * PI * r * r;
+}
+
+// Does the ray (origin, unit dir) reach the emitting side of the light? dist: hit distance.
+bool lightHit(LightData L, vec3 origin, vec3 dir, out float dist) {
+  int t = lightType(L);
+  dist = FAR_AWAY;
+  if (t == LIGHT_DIRECTIONAL) return L.direction_cos.w < 1.0 && dot(dir, -L.direction_cos.xyz) >= L.direction_cos.w;
+  vec3 c = L.position_radius.xyz;
+  if (t == LIGHT_SPHERE) {
+    float r = L.position_radius.w;
+    vec3 oc = origin - c;
+    float b = dot(oc, dir);
+    float disc = b * b - (dot(oc, oc) - r * r);
+    if (disc < 0.0) return false;
+    float s = sqrt(disc);
+    dist = -b - s;
+    if (dist <= 0.0) dist = -b + s;
+    return dist > 0.0;
+  }
+  if (t == LIGHT_DISK || t == LIGHT_QUAD) {
+    vec3 n = L.direction_cos.xyz;
+    float cosL = dot(dir, n);
+    if (cosL >= 0.0) return false;  // one-sided: only the front face emits
+    dist = dot(c - origin, n) / cosL;
+    if (dist <= 0.0) return false;
+    vec3 d = origin + dist * dir - c;
+    if (t == LIGHT_DISK) return dot(d, d) <= L.position_radius.w * L.position_radius.w;
+    vec3 u = L.axisU.xyz, v = L.axisV.xyz;
+    return abs(dot(d, u)) <= dot(u, u) && abs(dot(d, v)) <= dot(v, v);
+  }
+  return false;
+}
+
+// Orthonormal basis around unit n (Duff et al. 2017).
+void basisAround(vec3 n, out vec3 t, out vec3 b) {
+  float s = n.z >= 0.0 ? 1.0 : -1.0;
+  float a = -1.0 / (s + n.z);
+  float c = n.x * n.y * a;
+  t = vec3(1.0 + s * n.x * n.x * a, s * c, -s * n.x);
+  b = vec3(c, s + n.y * n.y * a, -n.y);
+}
+
+// Uniform direction in the cone of half-angle acos(cosMax) around axis; pdf = 1 / (2 pi (1 - cosMax)).
+vec3 sampleCone(vec3 axis, float cosMax, vec2 u) {
+  float cosT = 1.0 - u.x * (1.0 - cosMax);
+  float sinT = sqrt(max(0.0, 1.0 - cosT * cosT));
+  float phi = TWO_PI * u.y;
+  vec3 t, b;
+  basisAround(axis, t, b);
+  return normalize(sinT * cos(phi) * t + sinT * sin(phi) * b + cosT * axis);
+}
+
+// cos of the half-angle a sphere light subtends from p (1e-6 floor keeps the pdf finite).
+float sphereConeCos(LightData L, vec3 p) {
+  vec3 d = L.position_radius.xyz - p;
+  float r = L.position_radius.w;
+  float sin2 = min(r * r / max(dot(d, d), 1e-12), 1.0);
+  return sqrt(max(1.0 - sin2, 0.0));
+}
+
+// Solid-angle density with which sampleLightDirection picks `dir` (which hits at `dist`).
+float lightPdf(LightData L, vec3 p, vec3 dir, float dist) {
+  int t = lightType(L);
+  if (t == LIGHT_DIRECTIONAL) return 1.0 / (TWO_PI * (1.0 - L.direction_cos.w));
+  if (t == LIGHT_SPHERE) return 1.0 / (TWO_PI * max(1.0 - sphereConeCos(L, p), 1e-9));
+  float cosL = abs(dot(dir, L.direction_cos.xyz));
+  return dist * dist / max(lightArea(L) * cosL, 1e-20);
+}
+
+// Samples a direction towards the light from p; returns false if the sample is unusable.
+bool sampleLightDirection(LightData L, vec3 p, vec2 u, out vec3 dir, out float dist, out float pdf) {
+  int t = lightType(L);
+  dist = FAR_AWAY;
+  if (t == LIGHT_DIRECTIONAL) {
+    dir = sampleCone(-L.direction_cos.xyz, L.direction_cos.w, u);
+    pdf = lightPdf(L, p, dir, dist);
+    return true;
+  }
+  vec3 c = L.position_radius.xyz;
+  if (t == LIGHT_SPHERE) {
+    vec3 toC = c - p;
+    float cosMax = sphereConeCos(L, p);
+    dir = sampleCone(normalize(toC), cosMax, u);
+    pdf = lightPdf(L, p, dir, dist);
+    return lightHit(L, p, dir, dist);
+  }
+  vec3 q;
+  if (t == LIGHT_DISK) {
+    // Concentric square-to-disk mapping (Shirley & Chiu 1997).
+    vec2 s = 2.0 * u - 1.0;
+    float r, phi;
+    if (s == vec2(0.0)) { r = 0.0; phi = 0.0; }
+    else if (abs(s.x) > abs(s.y)) { r = s.x; phi = (PI / 4.0) * (s.y / s.x); }
+    else { r = s.y; phi = PI / 2.0 - (PI / 4.0) * (s.x / s.y); }
+    vec3 tx, ty;
+    basisAround(L.direction_cos.xyz, tx, ty);
+    q = c + L.position_radius.w * r * (cos(phi) * tx + sin(phi) * ty);
+  } else {
+    q = c + (2.0 * u.x - 1.0) * L.axisU.xyz + (2.0 * u.y - 1.0) * L.axisV.xyz;
+  }
+  vec3 d = q - p;
+  dist = length(d);
+  if (dist <= 0.0) return false;
+  dir = d / dist;
+  if (dot(dir, L.direction_cos.xyz) >= 0.0) return false;  // behind the emitting face
+  pdf = lightPdf(L, p, dir, dist);
+  return true;
+}

@@ -1,0 +1,29 @@
+// The per-pixel surface record every method receives (DESIGN.md, "Method interface").
+// Built once per fragment in uniform control flow by passes/forward.frag.
+struct Surface {
+  vec3 position;   // world space
+  vec3 view;       // unit vector from the surface to the camera
+  vec3 normal;     // shading normal (normal-mapped, facing the viewer)
+  vec3 tangent;    // shading frame x (alpha_x direction), orthogonal to normal
+  vec3 bitangent;  // shading frame y
+  vec3 vertexNormal;  // interpolated geometric normal (before the normal map)
+  vec2 uv;         // normal-map coordinates (tiling applied)
+  vec3 dPdx, dPdy; // screen-space derivatives of position (per pixel of the render target)
+  vec3 dNdx, dNdy; // of vertexNormal
+  vec2 dUVdx, dUVdy;
+  // Material
+  int ndf;
+  vec2 alpha;
+  vec3 f0;
+  vec3 diffuse;
+  bool hasNormalMap;
+};
+
+// Reflected radiance towards the viewer, split so that metrics can isolate the specular part.
+struct Radiance {
+  vec3 diffuse;
+  vec3 specular;
+};
+
+vec3 toLocal(Surface s, vec3 w) { return vec3(dot(w, s.tangent), dot(w, s.bitangent), dot(w, s.normal)); }
+vec3 toWorld(Surface s, vec3 w) { return w.x * s.tangent + w.y * s.bitangent + w.z * s.normal; }

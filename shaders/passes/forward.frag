@@ -1,0 +1,68 @@
+// Forward shading: builds the surface record once per fragment (derivatives in uniform control
+// flow), then sums the method's (or the reference's) radiance over every light. The module is
+// chosen by the renderer through the $METHOD include; this pass never names a method.
+#include "common/frame.glsl"
+#include "common/material.glsl"
+#include "common/lights.glsl"
+#include "common/surface.glsl"
+#include "$METHOD"
+
+layout(binding = 0) uniform sampler2D uNormalMap;
+uniform int uMaterial;
+
+in vec3 vPosition;
+in vec3 vNormal;
+in vec4 vTangent;
+in vec2 vUV;
+
+layout(location = 0) out vec4 outTotal;
+layout(location = 1) out vec4 outSpecular;
+
+void main() {
+  MaterialData m = materials[uMaterial];
+  vec2 uv = vUV * m.diffuse_tiling.a;
+  // Screen-space derivatives first, while control flow is uniform (fine: per pixel, not per quad).
+  vec3 dPdx = dFdxFine(vPosition), dPdy = dFdyFine(vPosition);
+  vec3 dNdx = dFdxFine(vNormal), dNdy = dFdyFine(vNormal);
+  vec2 dUVdx = dFdxFine(uv), dUVdy = dFdyFine(uv);
+  vec3 mapped = m.alpha_flags.z > 0.5 ? textureGrad(uNormalMap, uv, dUVdx, dUVdy).xyz : vec3(0.0, 0.0, 1.0);
+
+  Surface s;
+  s.position = vPosition;
+  s.view = uCameraPos.w > 0.5 ? normalize(uCameraPos.xyz - vPosition) : -uCameraForward.xyz;
+  // Two-sided: flip the frame to the side of the triangle the camera sees (face normal from
+  // the position derivatives, so silhouettes of closed objects keep their vertex normals).
+  vec3 faceNormal = cross(dPdx, dPdy);
+  float faceLength = length(faceNormal);
+  vec3 n = normalize(vNormal);
+  float side = 1.0;
+  if (faceLength > 0.0 && dot(faceNormal, s.view) * dot(faceNormal, n) < 0.0) side = -1.0;
+  n *= side;
+  vec3 t = normalize(vTangent.xyz - n * dot(n, vTangent.xyz));
+  vec3 b = cross(n, t) * (vTangent.w * side);  // along +v whichever side is seen
+  s.vertexNormal = n;
+  s.normal = normalize(mapped.x * t + mapped.y * b + mapped.z * n);
+  s.tangent = normalize(t - s.normal * dot(s.normal, t));
+  s.bitangent = cross(s.normal, s.tangent);  // right-handed local frame: z = normal
+  s.uv = uv;
+  s.dPdx = dPdx;
+  s.dPdy = dPdy;
+  s.dNdx = dNdx * side;
+  s.dNdy = dNdy * side;
+  s.dUVdx = dUVdx;
+  s.dUVdy = dUVdy;
+  s.ndf = int(m.f0_ndf.a + 0.5);
+  s.alpha = m.alpha_flags.xy;
+  s.f0 = m.f0_ndf.rgb;
+  s.diffuse = m.diffuse_tiling.rgb;
+  s.hasNormalMap = m.alpha_flags.z > 0.5;
+
+  Radiance sum = Radiance(vec3(0.0), vec3(0.0));
+  for (int i = 0; i < uTarget.w; ++i) {
+    Radiance r = shadeLight(s, lights[i]);
+    sum.diffuse += r.diffuse;
+    sum.specular += r.specular;
+  }
+  outTotal = vec4(sum.diffuse + sum.specular, 1.0);
+  outSpecular = vec4(sum.specular, 1.0);
+}

@@ -1,0 +1,98 @@
+// Ground truth for one sub-pixel sample: the material's exact BRDF at this sub-pixel, lights with
+// extent integrated by multiple importance sampling of the light and the BRDF (power heuristic,
+// Veach 1997) with low-discrepancy samples stratified over the pixel's k x k sub-pixels.
+// Never uses the approximations of any method. Included in place of a method module.
+#include "common/brdf.glsl"
+#include "common/frame.glsl"
+#include "common/lights.glsl"
+#include "common/sampling.glsl"
+#include "common/surface.glsl"
+
+// Below this alpha the material is treated as a perfect mirror (a delta BRDF).
+const float REFERENCE_MIRROR_ALPHA = 1e-4;
+
+uint gReferenceLightIndex = 0u;
+
+// Solid-angle density of the BRDF sampling strategy below.
+float brdfSamplePdf(Surface s, vec3 wo, vec3 wi) {
+  vec3 h = normalize(wo + wi);
+  if (s.ndf == NDF_BECKMANN) return ndfBeckmann(h, s.alpha) * h.z / (4.0 * max(dot(wo, h), 1e-9));
+  return smithG1(NDF_GGX, wo, s.alpha) * ndfGGX(h, s.alpha) / (4.0 * wo.z);
+}
+
+vec3 sampleBrdfNormal(Surface s, vec3 wo, vec2 u) {
+  return s.ndf == NDF_BECKMANN ? sampleBeckmannNormal(s.alpha, u) : sampleGGXVisibleNormal(wo, s.alpha, u);
+}
+
+Radiance shadeLight(Surface s, LightData L) {
+  uint lightIndex = gReferenceLightIndex++;
+  Radiance result = Radiance(vec3(0.0), vec3(0.0));
+  vec3 wo = toLocal(s, s.view);
+  if (wo.z <= 0.0) return result;
+
+  if (!lightHasExtent(L)) {  // delta lights: the exact BRDF, as any method would
+    vec3 l, irradiance;
+    if (lightType(L) == LIGHT_POINT) {
+      vec3 d = L.position_radius.xyz - s.position;
+      float d2 = max(dot(d, d), 1e-12);
+      l = d * inversesqrt(d2);
+      irradiance = L.colour_type.rgb / d2;
+    } else {
+      l = -L.direction_cos.xyz;
+      irradiance = L.colour_type.rgb;
+    }
+    vec3 wi = toLocal(s, l);
+    result.specular = specularCos(s.ndf, wo, wi, s.alpha, s.f0) * irradiance;
+    result.diffuse = diffuseCos(s.diffuse, wi) * irradiance;
+    return result;
+  }
+
+  int k = uTarget.z;
+  ivec2 global = uTile.xy + ivec2(gl_FragCoord.xy);
+  ivec2 pixel = global / k;
+  ivec2 sub = global - pixel * k;
+  uint n = uint(max(uTile.z, 1));
+  uint first = uint(sub.y * k + sub.x) * n;  // this sub-pixel's slice of the pixel's sequence
+  uint seed = hash3(uvec3(uvec2(pixel), lightIndex * 9781u + uint(uTile.w)));
+  vec2 rotLight = hashToUnit2(seed);
+  vec2 rotBrdf = hashToUnit2(pcgHash(seed + 1u));
+  vec3 radiance = lightRadiance(L);
+  bool mirror = max(s.alpha.x, s.alpha.y) < REFERENCE_MIRROR_ALPHA;
+
+  for (uint j = 0u; j < n; ++j) {
+    vec3 dir;
+    float dist, pdfLight;
+    if (sampleLightDirection(L, s.position, r2Point(first + j, rotLight), dir, dist, pdfLight) && pdfLight > 0.0) {
+      vec3 wi = toLocal(s, dir);
+      if (wi.z > 0.0) {
+        result.diffuse += diffuseCos(s.diffuse, wi) * radiance / pdfLight;
+        if (!mirror) {
+          float pdfBrdf = brdfSamplePdf(s, wo, wi);
+          float w = pdfLight * pdfLight / (pdfLight * pdfLight + pdfBrdf * pdfBrdf);
+          result.specular += specularCos(s.ndf, wo, wi, s.alpha, s.f0) * radiance * (w / pdfLight);
+        }
+      }
+    }
+    if (!mirror) {
+      vec3 h = sampleBrdfNormal(s, wo, r2Point(first + j, rotBrdf));
+      vec3 wi = reflect(-wo, h);
+      vec3 dirWorld = toWorld(s, wi);
+      if (wi.z > 0.0 && lightHit(L, s.position, dirWorld, dist)) {
+        float pdfBrdf = brdfSamplePdf(s, wo, wi);
+        float pdfL = lightPdf(L, s.position, dirWorld, dist);
+        if (pdfBrdf > 0.0) {
+          float w = pdfBrdf * pdfBrdf / (pdfBrdf * pdfBrdf + pdfL * pdfL);
+          result.specular += specularCos(s.ndf, wo, wi, s.alpha, s.f0) * radiance * (w / pdfBrdf);
+        }
+      }
+    }
+  }
+  result.diffuse /= float(n);
+  result.specular /= float(n);
+  if (mirror) {
+    float dist;
+    vec3 r = reflect(-s.view, s.normal);
+    if (lightHit(L, s.position, r, dist)) result.specular = fresnelSchlick(s.f0, wo.z) * radiance;
+  }
+  return result;
+}

@@ -1,0 +1,193 @@
+#include "app/cli.hpp"
+
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "core/error.hpp"
+#include "eval/commands.hpp"
+#include "eval/outputs.hpp"
+#include "eval/session.hpp"
+#include "scene/scene_loader.hpp"
+#include "shading/registry.hpp"
+
+namespace glintlab {
+
+namespace {
+
+/// The flags shared by the commands that render; the same names everywhere.
+void add_common(CLI::App* cmd, CommonOptions& o, bool many_methods) {
+  cmd->add_option("--scene", o.scene, "scene file (.toml) or builtin:NAME (see 'glintlab scenes')")
+      ->default_str(kDefaultScene);
+  if (many_methods) {
+    cmd->add_option("--methods,--method", o.methods, "comma-separated method ids, or 'all' (see 'glintlab methods')")
+        ->default_str("all");
+    o.methods = "all";
+  } else {
+    cmd->add_option("--method,--methods", o.methods, "method id (see 'glintlab methods')")->default_str("conventional");
+  }
+  cmd->add_option("--param", o.params, "set a method parameter: name=value or method.name=value (repeatable)");
+  cmd->add_option("--spp", o.spp, "reference samples per pixel, k*k with k = 1..32")->default_str("64");
+  cmd->add_option("--light-samples", o.light_samples,
+                  "reference light samples per sub-pixel and area light (0: max(1, 256/spp))")->default_str("0");
+  cmd->add_option("--width", o.width, "film width in pixels (overrides the scene)");
+  cmd->add_option("--height", o.height, "film height in pixels (overrides the scene)");
+  cmd->add_option("--frames", o.frames, "frames of the camera path (overrides the scene)");
+  cmd->add_flag("--no-cache", o.no_cache, "do not read or write the reference cache");
+  cmd->add_flag("-q,--quiet", o.quiet, "no progress bar");
+}
+
+std::string default_out(const std::string& command, const CommonOptions& o) {
+  std::string scene = o.scene.empty() ? kDefaultScene : o.scene;
+  if (scene.rfind("builtin:", 0) == 0) scene = scene.substr(8);
+  else scene = std::filesystem::path(scene).stem().string();
+  return "out/" + command + "/" + scene;
+}
+
+void print_methods() {
+  for (const auto& m : all_methods()) {
+    std::cout << m.id << " — " << m.title << "\n  " << m.summary << "\n  source: " << m.citation << "\n";
+    for (const auto& p : m.params)
+      std::cout << "  --param " << p.name << "=" << p.default_value << "  (" << p.min << " .. " << p.max << ") "
+                << p.description << "\n";
+    std::cout << "\n";
+  }
+}
+
+void print_info() {
+  auto ctx = GlContext::create_headless();
+  const auto i = ctx->info();
+  std::cout << "platform:        " << i.egl_platform << "\n"
+            << "vendor:          " << i.vendor << "\n"
+            << "renderer:        " << i.renderer << (ctx->is_software() ? " (software)" : "") << "\n"
+            << "version:         " << i.version << "\n"
+            << "GLSL:            " << i.glsl_version << "\n"
+            << "limits used:\n"
+            << "  max texture size          " << i.max_texture_size << "\n"
+            << "  max array texture layers  " << i.max_array_layers << "\n"
+            << "  max SSBO bindings         " << i.max_ssbo_bindings << "\n"
+            << "  max compute invocations   " << i.max_compute_invocations << "\n"
+            << "  max draw buffers          " << i.max_draw_buffers << "\n"
+            << "  timer queries             " << (i.timer_query ? "yes" : "no") << "\n"
+            << "reference cache: " << ReferenceCache::default_directory().string() << "\n";
+}
+
+int render_command(const CommonOptions& o, const std::string& reference_arg, bool reference_given, int frame) {
+  CommonOptions opts = o;
+  if (reference_given && !reference_arg.empty()) {
+    try {
+      std::size_t used = 0;
+      opts.spp = std::stoi(reference_arg, &used);
+      if (used != reference_arg.size()) throw std::invalid_argument("");
+    } catch (const std::exception&) {
+      throw InputError("--reference=" + reference_arg + ": not an integer; allowed: k*k with k = 1..32");
+    }
+  }
+  const auto methods = resolve_methods(o.methods, o.params);
+  if (methods.size() != 1) throw InputError("render: --method takes one method; use 'compare' for several");
+  Session session(opts);
+  if (frame < 0 || frame >= session.frames())
+    throw InputError("--frame " + std::to_string(frame) + ": allowed: 0 .. " + std::to_string(session.frames() - 1));
+  const std::string out = o.out.empty() ? default_out("render", o) : o.out;
+  const std::filesystem::path path(out);
+  const std::string ext = path.extension().string();
+  const Frame f = reference_given ? session.reference(frame) : session.render(methods[0], frame);
+  const std::string name = reference_given ? "reference" : methods[0].method->id;
+  if (ext == ".exr" || ext == ".png") {
+    write_frame(path.parent_path(), path.stem().string(), f, session.scene().film.exposure);
+    std::cout << "written " << (path.parent_path() / path.stem()).string() << ".exr and .png\n";
+  } else {
+    write_frame(path, name, f, session.scene().film.exposure);
+    std::cout << "written " << (path / name).string() << ".exr and .png\n";
+  }
+  return 0;
+}
+
+}  // namespace
+
+int run_cli(int argc, char** argv) {
+  CLI::App app{"glintlab: sub-pixel specular highlights and glints in real time, measured against ground truth"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "glintlab 0.1.0");
+
+  CommonOptions render_o, compare_o, animate_o, bench_o;
+  auto* render = app.add_subcommand("render", "render one frame with one method, or the reference");
+  add_common(render, render_o, false);
+  std::string reference_arg;
+  render->add_option("--reference", reference_arg, "render the ground truth instead, with SPP samples per pixel (default 64)")
+      ->expected(0, 1);
+  int render_frame = 0;
+  render->add_option("--frame", render_frame, "frame of the camera path")->default_str("0");
+  render->add_option("-o,--out", render_o.out, "output directory, or a .exr/.png file name");
+
+  auto* compare = app.add_subcommand("compare", "render the reference and each method; images, error maps, metrics");
+  add_common(compare, compare_o, true);
+  int compare_frame = 0;
+  compare->add_option("--frame", compare_frame, "frame of the camera path")->default_str("0");
+  compare->add_option("-o,--out", compare_o.out, "output directory (default out/compare/SCENE)");
+
+  auto* animate = app.add_subcommand("animate", "render the camera path; per-frame RMSE and flicker, videos");
+  add_common(animate, animate_o, true);
+  animate->add_option("-o,--out", animate_o.out, "output directory (default out/animate/SCENE)");
+
+  auto* bench = app.add_subcommand("bench", "time each method's frame (GL timer queries and wall clock), as JSON");
+  add_common(bench, bench_o, true);
+  int bench_frames = 30, bench_warmup = 3;
+  bench->add_option("--bench-frames", bench_frames, "timed frames per method")->default_str("30")->check(CLI::Range(1, 100000));
+  bench->add_option("--warmup", bench_warmup, "untimed frames first")->default_str("3")->check(CLI::Range(0, 1000));
+  bench->add_option("-o,--out", bench_o.out, "also write bench.json into this directory");
+
+  app.add_subcommand("methods", "list every method with its parameters, defaults and ranges");
+  auto* scenes = app.add_subcommand("scenes", "list the built-in scenes");
+  std::string print_scene;
+  scenes->add_option("--print", print_scene, "print a built-in scene's TOML (a template for your own)");
+  app.add_subcommand("info", "print the OpenGL device, version and the limits glintlab uses");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+
+  try {
+    if (app.got_subcommand("methods")) {
+      print_methods();
+    } else if (app.got_subcommand("scenes")) {
+      if (!print_scene.empty()) {
+        std::cout << builtin_scene_toml(print_scene);
+      } else {
+        for (const auto& s : builtin_scenes()) std::cout << "builtin:" << s.name << "\n  " << s.description << "\n";
+      }
+    } else if (app.got_subcommand("info")) {
+      print_info();
+    } else if (app.got_subcommand("render")) {
+      return render_command(render_o, reference_arg, render->count("--reference") > 0, render_frame);
+    } else if (app.got_subcommand("compare")) {
+      const auto methods = resolve_methods(compare_o.methods, compare_o.params);
+      Session session(compare_o);
+      if (compare_frame < 0 || compare_frame >= session.frames())
+        throw InputError("--frame " + std::to_string(compare_frame) + ": allowed: 0 .. " + std::to_string(session.frames() - 1));
+      run_compare(session, methods, compare_o.out.empty() ? default_out("compare", compare_o) : compare_o.out, compare_frame);
+    } else if (app.got_subcommand("animate")) {
+      const auto methods = resolve_methods(animate_o.methods, animate_o.params);
+      Session session(animate_o);
+      run_animate(session, methods, animate_o.out.empty() ? default_out("animate", animate_o) : animate_o.out);
+    } else if (app.got_subcommand("bench")) {
+      const auto methods = resolve_methods(bench_o.methods, bench_o.params);
+      Session session(bench_o);
+      run_bench(session, methods, bench_frames, bench_warmup, bench_o.out);
+    }
+  } catch (const InputError& e) {
+    std::cerr << "glintlab: error: " << e.what() << "\n";
+    return 2;
+  } catch (const RuntimeFailure& e) {
+    std::cerr << "glintlab: failed: " << e.what() << "\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "glintlab: failed: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace glintlab

@@ -1,0 +1,17 @@
+#pragma once
+// Display transforms. Metrics are never computed on these: they act on linear radiance only.
+#include "core/image.hpp"
+
+namespace glintlab {
+
+/// Exposure (in stops), ACES filmic tonemap (Narkowicz 2015 fit), then sRGB encoding.
+/// The fit keeps highlights' hue and rolls off smoothly, which matters for tiny bright glints.
+Image tonemap_for_display(const Image& linear, float exposure_stops);
+
+float aces_filmic(float x);
+float srgb_encode(float linear);
+
+/// False-colour map of |error| scaled so that `scale` maps to the top of the colour ramp.
+Image false_colour(const Image& error_magnitude, float scale);
+
+}  // namespace glintlab

@@ -1,0 +1,21 @@
+#pragma once
+// Error classes that map to the CLI's exit codes (DESIGN.md, "Errors"):
+// InputError -> 2 (bad usage or input), RuntimeFailure -> 1 (failure at run time).
+#include <stdexcept>
+#include <string>
+
+namespace glintlab {
+
+/// Bad user input: the message names the file, key or line, the value and what is allowed.
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Something failed at run time (GL context, driver, disk, NaN in a result).
+class RuntimeFailure : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace glintlab

@@ -1,0 +1,113 @@
+#include "core/image_io.hpp"
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+#include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+
+namespace glintlab {
+
+namespace {
+std::string channel_name(const std::string& layer, char c) {
+  return layer.empty() ? std::string(1, c) : layer + "." + c;
+}
+}  // namespace
+
+void write_exr(const std::filesystem::path& path, const std::vector<ImageLayer>& layers) {
+  if (layers.empty()) throw RuntimeFailure(path.string() + ": nothing to write");
+  const int w = layers.front().image->width();
+  const int h = layers.front().image->height();
+  AtomicFile file(path);
+  try {
+    Imf::Header header(w, h);
+    header.compression() = Imf::ZIP_COMPRESSION;
+    Imf::FrameBuffer fb;
+    for (const auto& layer : layers) {
+      for (int c = 0; c < 3; ++c) {
+        const std::string name = channel_name(layer.name, "RGB"[c]);
+        header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+        auto* base = reinterpret_cast<char*>(const_cast<glm::vec3*>(layer.image->pixels().data())) +
+                     c * sizeof(float);
+        fb.insert(name, Imf::Slice(Imf::FLOAT, base, sizeof(glm::vec3), sizeof(glm::vec3) * w));
+      }
+    }
+    Imf::OutputFile out(file.temp_path().c_str(), header, 1);
+    out.setFrameBuffer(fb);
+    out.writePixels(h);
+  } catch (const std::exception& e) {
+    throw RuntimeFailure(path.string() + ": cannot write EXR: " + e.what());
+  }
+  file.commit();
+}
+
+Image read_exr(const std::filesystem::path& path, const std::string& layer) {
+  try {
+    Imf::InputFile in(path.c_str());
+    const auto dw = in.header().dataWindow();
+    const int w = dw.max.x - dw.min.x + 1;
+    const int h = dw.max.y - dw.min.y + 1;
+    Image img(w, h);
+    Imf::FrameBuffer fb;
+    for (int c = 0; c < 3; ++c) {
+      const std::string name = channel_name(layer, "RGB"[c]);
+      if (!in.header().channels().findChannel(name))
+        throw InputError(path.string() + ": EXR has no channel '" + name + "'");
+      auto* base = reinterpret_cast<char*>(img.pixels().data()) + c * sizeof(float) -
+                   (static_cast<std::ptrdiff_t>(dw.min.x) + static_cast<std::ptrdiff_t>(dw.min.y) * w) *
+                       static_cast<std::ptrdiff_t>(sizeof(glm::vec3));
+      fb.insert(name, Imf::Slice(Imf::FLOAT, base, sizeof(glm::vec3), sizeof(glm::vec3) * w));
+    }
+    in.setFrameBuffer(fb);
+    in.readPixels(dw.min.y, dw.max.y);
+    return img;
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw InputError(path.string() + ": cannot read EXR: " + e.what());
+  }
+}
+
+void write_png(const std::filesystem::path& path, const Image& img) {
+  std::vector<std::uint8_t> bytes(img.pixel_count() * 3);
+  for (std::size_t i = 0; i < img.pixel_count(); ++i)
+    for (int c = 0; c < 3; ++c)
+      bytes[3 * i + c] = static_cast<std::uint8_t>(
+          std::lround(std::clamp(img.pixels()[i][c], 0.0f, 1.0f) * 255.0f));
+  AtomicFile file(path);
+  if (!stbi_write_png(file.temp_path().c_str(), img.width(), img.height(), 3, bytes.data(),
+                      img.width() * 3))
+    throw RuntimeFailure(path.string() + ": cannot write PNG");
+  file.commit();
+}
+
+Image read_ldr_image(const std::filesystem::path& path) {
+  int w = 0, h = 0, channels = 0;
+  const bool is16 = stbi_is_16_bit(path.c_str());
+  void* data = is16 ? static_cast<void*>(stbi_load_16(path.c_str(), &w, &h, &channels, 3))
+                    : static_cast<void*>(stbi_load(path.c_str(), &w, &h, &channels, 3));
+  if (!data) {
+    const char* why = stbi_failure_reason();
+    throw InputError(path.string() + ": cannot read image (" + (why ? why : "unknown error") +
+                     "); allowed: PNG, JPEG, TGA or BMP, 8 or 16 bits per channel");
+  }
+  Image img(w, h);
+  const float scale = is16 ? 1.0f / 65535.0f : 1.0f / 255.0f;
+  for (std::size_t i = 0; i < img.pixel_count(); ++i)
+    for (int c = 0; c < 3; ++c)
+      img.pixels()[i][c] = scale * (is16 ? static_cast<float>(static_cast<std::uint16_t*>(data)[3 * i + c])
+                                         : static_cast<float>(static_cast<std::uint8_t*>(data)[3 * i + c]));
+  stbi_image_free(data);
+  return img;
+}
+
+}  // namespace glintlab

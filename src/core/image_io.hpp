@@ -1,0 +1,29 @@
+#pragma once
+// Image files: linear EXR (float, with named layers) and 8-bit sRGB PNG. All writes are atomic.
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/image.hpp"
+
+namespace glintlab {
+
+/// A named layer of an EXR file; the empty name is the main RGB layer.
+struct ImageLayer {
+  std::string name;
+  const Image* image;
+};
+
+void write_exr(const std::filesystem::path& path, const std::vector<ImageLayer>& layers);
+/// Reads one layer ("" = main RGB). Throws InputError naming the file if it is missing or broken.
+Image read_exr(const std::filesystem::path& path, const std::string& layer = "");
+
+/// Writes already display-encoded values in [0,1] as 8-bit PNG.
+void write_png(const std::filesystem::path& path, const Image& display_image);
+
+/// Reads a PNG/JPEG/TGA/BMP (8 or 16 bit) as raw values in [0,1] (no colour decoding).
+/// Throws InputError naming the file if it is unreadable.
+Image read_ldr_image(const std::filesystem::path& path);
+
+}  // namespace glintlab

@@ -1,0 +1,93 @@
+#include "core/metrics.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace glintlab {
+
+namespace {
+void require_same_size(const Image& a, const Image& b) {
+  if (a.width() != b.width() || a.height() != b.height())
+    throw std::invalid_argument("metrics: image sizes differ (" + std::to_string(a.width()) + "x" +
+                                std::to_string(a.height()) + " vs " + std::to_string(b.width()) + "x" +
+                                std::to_string(b.height()) + ")");
+}
+}  // namespace
+
+double rmse(const Image& test, const Image& ref) {
+  require_same_size(test, ref);
+  if (test.empty()) return 0.0;
+  double sum = 0;
+  for (std::size_t i = 0; i < test.pixel_count(); ++i) {
+    const glm::dvec3 d = glm::dvec3(test.pixels()[i]) - glm::dvec3(ref.pixels()[i]);
+    sum += d.x * d.x + d.y * d.y + d.z * d.z;
+  }
+  return std::sqrt(sum / (3.0 * static_cast<double>(test.pixel_count())));
+}
+
+double psnr(double rmse_value) {
+  if (rmse_value <= 0) return std::numeric_limits<double>::infinity();
+  return -20.0 * std::log10(rmse_value);
+}
+
+double max_abs_error(const Image& test, const Image& ref) {
+  require_same_size(test, ref);
+  double m = 0;
+  for (std::size_t i = 0; i < test.pixel_count(); ++i)
+    for (int c = 0; c < 3; ++c)
+      m = std::max(m, std::abs(static_cast<double>(test.pixels()[i][c]) - ref.pixels()[i][c]));
+  return m;
+}
+
+double energy_ratio(const Image& test, const Image& ref) {
+  require_same_size(test, ref);
+  double a = 0, b = 0;
+  for (std::size_t i = 0; i < test.pixel_count(); ++i) {
+    a += luminance(test.pixels()[i]);
+    b += luminance(ref.pixels()[i]);
+  }
+  if (b == 0) return a == 0 ? 1.0 : std::numeric_limits<double>::infinity();
+  return a / b;
+}
+
+Image abs_error_map(const Image& test, const Image& ref) {
+  require_same_size(test, ref);
+  Image out(test.width(), test.height());
+  for (std::size_t i = 0; i < test.pixel_count(); ++i)
+    out.pixels()[i] = glm::vec3(std::abs(luminance(test.pixels()[i]) - luminance(ref.pixels()[i])));
+  return out;
+}
+
+ImageMetrics measure(const Image& total, const Image& specular, const Image& ref_total,
+                     const Image& ref_specular) {
+  ImageMetrics m;
+  m.rmse = rmse(total, ref_total);
+  m.rmse_specular = rmse(specular, ref_specular);
+  m.psnr = psnr(m.rmse);
+  m.energy_ratio = energy_ratio(total, ref_total);
+  m.energy_ratio_specular = energy_ratio(specular, ref_specular);
+  m.max_error = max_abs_error(total, ref_total);
+  return m;
+}
+
+void FlickerAccumulator::add_frame(const Image& method, const Image& reference) {
+  require_same_size(method, reference);
+  Image error(method.width(), method.height());
+  for (std::size_t i = 0; i < error.pixel_count(); ++i)
+    error.pixels()[i] = method.pixels()[i] - reference.pixels()[i];
+  if (frames_ > 0) {
+    require_same_size(error, previous_error_);
+    for (std::size_t i = 0; i < error.pixel_count(); ++i)
+      for (int c = 0; c < 3; ++c)
+        sum_ += std::abs(static_cast<double>(error.pixels()[i][c]) - previous_error_.pixels()[i][c]);
+    count_ += 3.0 * static_cast<double>(error.pixel_count());
+  }
+  previous_error_ = std::move(error);
+  ++frames_;
+}
+
+double FlickerAccumulator::flicker() const { return count_ > 0 ? sum_ / count_ : 0.0; }
+
+}  // namespace glintlab

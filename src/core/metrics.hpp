@@ -1,0 +1,46 @@
+#pragma once
+// Image metrics against a reference, on linear radiance (never on tonemapped values).
+#include <optional>
+
+#include "core/image.hpp"
+
+namespace glintlab {
+
+/// Root-mean-square error over all pixels and RGB channels.
+double rmse(const Image& test, const Image& reference);
+/// PSNR in dB with peak 1 (display white at exposure 0); +inf for identical images.
+double psnr(double rmse_value);
+/// Largest absolute channel difference.
+double max_abs_error(const Image& test, const Image& reference);
+/// mean luminance(test) / mean luminance(reference); 1 is unbiased, < 1 lost energy.
+/// Returns 1 when both are black, +inf when only the reference is.
+double energy_ratio(const Image& test, const Image& reference);
+/// Per-pixel |luminance(test) - luminance(reference)| in the red channel (for error maps).
+Image abs_error_map(const Image& test, const Image& reference);
+
+/// Everything `compare` reports for one method.
+struct ImageMetrics {
+  double rmse = 0, rmse_specular = 0, psnr = 0, energy_ratio = 0, energy_ratio_specular = 0,
+         max_error = 0;
+};
+ImageMetrics measure(const Image& total, const Image& specular, const Image& ref_total,
+                     const Image& ref_specular);
+
+/// Flicker: the mean over pixels, RGB channels and frames t >= 1 of
+///   |(m_t - r_t) - (m_{t-1} - r_{t-1})|,
+/// zero for a method whose error against the reference does not change between frames.
+class FlickerAccumulator {
+ public:
+  void add_frame(const Image& method, const Image& reference);
+  /// 0 until two frames were added.
+  [[nodiscard]] double flicker() const;
+  [[nodiscard]] int frames() const { return frames_; }
+
+ private:
+  Image previous_error_;
+  double sum_ = 0;
+  double count_ = 0;
+  int frames_ = 0;
+};
+
+}  // namespace glintlab

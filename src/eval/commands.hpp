@@ -1,0 +1,44 @@
+#pragma once
+// The evaluation drivers behind `glintlab compare`, `animate` and `bench`.
+#include <filesystem>
+#include <vector>
+
+#include "core/metrics.hpp"
+#include "eval/session.hpp"
+
+namespace glintlab {
+
+struct MethodMetrics {
+  std::string method;
+  ImageMetrics metrics;
+};
+
+/// Reference and every method on one frame: images, error maps, worst-region crops,
+/// metrics.csv and metrics.json under `out`. Returns the metrics (also printed to stdout).
+std::vector<MethodMetrics> run_compare(Session& session, const std::vector<MethodChoice>& methods,
+                                       const std::filesystem::path& out, int frame = 0);
+
+struct TemporalMetrics {
+  std::string method;
+  std::vector<double> rmse_per_frame;
+  double mean_rmse = 0;
+  double flicker = 0;
+};
+
+/// The camera path for every method and the reference: per-frame RMSE and flicker, an MP4 per
+/// method when ffmpeg is installed (PNG frames otherwise), metrics.json under `out`.
+std::vector<TemporalMetrics> run_animate(Session& session, const std::vector<MethodChoice>& methods,
+                                         const std::filesystem::path& out);
+
+struct BenchResult {
+  std::string method;
+  double gpu_ms_median = 0;   ///< GL_TIME_ELAPSED, median over frames
+  double wall_ms_median = 0;  ///< draw + glFinish on the CPU clock, median
+  int frames = 0;
+};
+
+/// Times every method's frame; writes bench.json under `out` if it is not empty.
+std::vector<BenchResult> run_bench(Session& session, const std::vector<MethodChoice>& methods, int frames, int warmup,
+                                   const std::filesystem::path& out);
+
+}  // namespace glintlab

@@ -1,0 +1,91 @@
+#include "eval/session.hpp"
+
+#include "core/error.hpp"
+#include "eval/progress.hpp"
+#include "scene/scene_loader.hpp"
+#include "shading/registry.hpp"
+
+namespace glintlab {
+
+std::vector<MethodChoice> resolve_methods(const std::string& methods, const std::vector<std::string>& params) {
+  std::vector<MethodChoice> choices;
+  for (const MethodDescriptor* m : parse_method_list(methods)) choices.push_back({m, {}});
+  std::vector<std::map<std::string, std::string>> overrides(choices.size());
+  for (const auto& p : params) {
+    const auto eq = p.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw InputError("--param '" + p + "': expected name=value or method.name=value");
+    std::string name = p.substr(0, eq);
+    const std::string value = p.substr(eq + 1);
+    std::string only;
+    if (const auto dot = name.find('.'); dot != std::string::npos) {
+      only = name.substr(0, dot);
+      name = name.substr(dot + 1);
+      find_method(only);  // unknown method ids are an error
+    }
+    bool used = false;
+    for (std::size_t i = 0; i < choices.size(); ++i) {
+      const auto& m = *choices[i].method;
+      if ((!only.empty() && m.id != only) || (only.empty() && !m.find_param(name) && choices.size() > 1)) continue;
+      overrides[i][name] = value;  // resolve_params reports unknown names and bad values
+      used = true;
+    }
+    if (!used) {
+      std::string known;
+      for (const auto& c : choices)
+        for (const auto& q : c.method->params) known += (known.empty() ? "" : ", ") + c.method->id + "." + q.name;
+      throw InputError("--param '" + p + "': no selected method has this parameter; allowed: " + (known.empty() ? "none" : known));
+    }
+  }
+  for (std::size_t i = 0; i < choices.size(); ++i) choices[i].params = resolve_params(*choices[i].method, overrides[i]);
+  return choices;
+}
+
+void require_finite(const Frame& frame, const std::string& what) {
+  const auto bad = std::max(frame.total.count_non_finite(), frame.specular.count_non_finite());
+  if (bad > 0)
+    throw RuntimeFailure(what + ": " + std::to_string(bad) + " pixels are NaN or Inf; no output was written for it");
+}
+
+Session::Session(const CommonOptions& options)
+    : options_(options),
+      scene_(load_scene(options.scene.empty() ? kDefaultScene : options.scene)),
+      cache_(options.no_cache ? std::filesystem::path() : ReferenceCache::default_directory()) {
+  validate_spp(options.spp);
+  if (options.light_samples < 0 || options.light_samples > 4096)
+    throw InputError("--light-samples " + std::to_string(options.light_samples) + ": allowed: 0 (auto) .. 4096");
+  width_ = options.width > 0 ? options.width : scene_.film.width;
+  height_ = options.height > 0 ? options.height : scene_.film.height;
+  if (width_ > 16384 || height_ > 16384 || static_cast<double>(width_) * height_ > 64.0 * 1024 * 1024)
+    throw InputError("--width/--height " + std::to_string(width_) + "x" + std::to_string(height_) +
+                     ": allowed: 1 .. 16384 per side and at most 67108864 pixels");
+  frames_ = options.frames > 0 ? options.frames : scene_.path.frames;
+  if (options.frames > 0) scene_.path.frames = options.frames;
+  reference_.spp = options.spp;
+  reference_.light_samples = options.light_samples;
+  context_ = GlContext::create_headless();
+  gpu_scene_ = std::make_unique<GpuScene>(scene_);
+  renderer_ = std::make_unique<Renderer>(shaders_, *gpu_scene_);
+}
+
+Frame Session::render(const MethodChoice& choice, int frame) {
+  Frame f = renderer_->render(*choice.method, choice.params, camera(frame), width_, height_);
+  require_finite(f, "method '" + choice.method->id + "'");
+  return f;
+}
+
+Frame Session::reference(int frame) {
+  ReferenceSettings settings = reference_;
+  settings.seed = frame;
+  const Camera cam = camera(frame);
+  const auto key = ReferenceCache::key(scene_, cam, width_, height_, settings, shaders_.sources_hash(),
+                                       context_->info().renderer);
+  if (auto cached = cache_.load(key)) return *cached;
+  ProgressBar bar("reference " + std::to_string(settings.spp) + " spp, frame " + std::to_string(frame), !options_.quiet);
+  Frame f = renderer_->render_reference(cam, width_, height_, settings, [&](int d, int t) { bar.update(d, t); });
+  require_finite(f, "reference");
+  cache_.store(key, f);
+  return f;
+}
+
+}  // namespace glintlab

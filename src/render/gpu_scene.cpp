@@ -1,0 +1,140 @@
+#include "render/gpu_scene.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/vec4.hpp>
+
+#include "gl/context.hpp"
+
+namespace glintlab {
+
+namespace {
+
+struct Vertex {
+  glm::vec3 position;
+  glm::vec3 normal;
+  glm::vec4 tangent;
+  glm::vec2 uv;
+};
+
+// Mirrors MaterialData in shaders/common/material.glsl (std430).
+struct MaterialGpu {
+  glm::vec4 f0_ndf;
+  glm::vec4 diffuse_tiling;
+  glm::vec4 alpha_flags;
+};
+
+// Mirrors LightData in shaders/common/lights.glsl (std430).
+struct LightGpu {
+  glm::vec4 colour_type;
+  glm::vec4 position_radius;
+  glm::vec4 direction_cos;
+  glm::vec4 axis_u;
+  glm::vec4 axis_v;
+};
+
+GpuMesh upload(const Mesh& mesh, const glm::mat4& transform, int material) {
+  std::vector<Vertex> vertices(mesh.positions.size());
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+    vertices[i] = {mesh.positions[i], mesh.normals[i], mesh.tangents.empty() ? glm::vec4(1, 0, 0, 1) : mesh.tangents[i],
+                   mesh.uvs[i]};
+  GpuMesh g;
+  g.vertices = gl::make_buffer(static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)), vertices.data());
+  g.indices = gl::make_buffer(static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)), mesh.indices.data());
+  g.index_count = static_cast<GLsizei>(mesh.indices.size());
+  g.transform = transform;
+  g.material = material;
+  g.vao = gl::make_vertex_array();
+  const GLuint vao = g.vao.id();
+  glVertexArrayVertexBuffer(vao, 0, g.vertices.id(), 0, sizeof(Vertex));
+  glVertexArrayElementBuffer(vao, g.indices.id());
+  const GLuint sizes[] = {3, 3, 4, 2};
+  const GLuint offsets[] = {offsetof(Vertex, position), offsetof(Vertex, normal), offsetof(Vertex, tangent),
+                            offsetof(Vertex, uv)};
+  for (GLuint a = 0; a < 4; ++a) {
+    glEnableVertexArrayAttrib(vao, a);
+    glVertexArrayAttribFormat(vao, a, static_cast<GLint>(sizes[a]), GL_FLOAT, GL_FALSE, offsets[a]);
+    glVertexArrayAttribBinding(vao, a, 0);
+  }
+  return g;
+}
+
+/// Rotation taking +y to `n` (the generators build disks and planes facing +y).
+glm::mat4 orient_y_to(glm::vec3 n, glm::vec3 up_hint) {
+  glm::vec3 x = glm::cross(up_hint, n);
+  if (glm::length(x) < 1e-6f) x = glm::cross(glm::vec3(1, 0, 0), n);
+  if (glm::length(x) < 1e-6f) x = glm::cross(glm::vec3(0, 0, 1), n);
+  x = glm::normalize(x);
+  const glm::vec3 z = glm::cross(x, n);
+  glm::mat4 m(1.0f);
+  m[0] = glm::vec4(x, 0);
+  m[1] = glm::vec4(n, 0);
+  m[2] = glm::vec4(z, 0);
+  return m;
+}
+
+}  // namespace
+
+GpuScene::GpuScene(const Scene& scene) {
+  for (const auto& shape : scene.shapes) meshes_.push_back(upload(*shape.mesh, shape.transform, shape.material));
+
+  std::vector<MaterialGpu> materials;
+  for (const auto& m : scene.materials) {
+    materials.push_back({glm::vec4(m.f0, m.ndf == Ndf::Beckmann ? 1.0f : 0.0f), glm::vec4(m.diffuse, m.normal_map_tiling),
+                         glm::vec4(m.alpha, m.normal_map ? 1.0f : 0.0f, 0.0f)});
+    gl::Texture tex;
+    if (m.normal_map) {
+      const NormalMap& map = *m.normal_map;
+      tex = gl::make_texture(GL_TEXTURE_2D);
+      int levels = 1;
+      for (int s = std::max(map.width, map.height); s > 1; s /= 2) ++levels;
+      glTextureStorage2D(tex.id(), levels, GL_RGBA32F, map.width, map.height);
+      std::vector<glm::vec4> texels(map.normals.size());
+      for (std::size_t i = 0; i < texels.size(); ++i) texels[i] = glm::vec4(map.normals[i], 1.0f);
+      glTextureSubImage2D(tex.id(), 0, 0, 0, map.width, map.height, GL_RGBA, GL_FLOAT, texels.data());
+      glGenerateTextureMipmap(tex.id());
+      glTextureParameteri(tex.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+      glTextureParameteri(tex.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+      glTextureParameteri(tex.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+      glTextureParameteri(tex.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+      glTextureParameterf(tex.id(), GL_TEXTURE_MAX_ANISOTROPY, 16.0f);
+    }
+    normal_maps_.push_back(std::move(tex));
+  }
+  materials_ = gl::make_buffer(static_cast<GLsizeiptr>(materials.size() * sizeof(MaterialGpu)), materials.data());
+
+  std::vector<LightGpu> lights;
+  for (const auto& l : scene.lights) {
+    LightGpu g{};
+    g.colour_type = glm::vec4(l.colour, static_cast<float>(l.type));
+    g.position_radius = glm::vec4(l.position, l.radius);
+    g.direction_cos = glm::vec4(l.direction, std::cos(glm::radians(l.angular_radius_degrees)));
+    if (l.type == LightType::Quad) {
+      const glm::vec3 u = glm::normalize(glm::cross(l.up, l.direction));
+      const glm::vec3 v = glm::cross(l.direction, u);
+      g.axis_u = glm::vec4(0.5f * l.size.x * u, 0.0f);
+      g.axis_v = glm::vec4(0.5f * l.size.y * v, 0.0f);
+    }
+    lights.push_back(g);
+    if (!l.is_area() || !l.visible) continue;
+    GpuEmitter e;
+    e.radiance = l.colour;
+    if (l.type == LightType::Sphere) {
+      e.mesh = upload(make_sphere(l.radius, 48, 24), glm::translate(glm::mat4(1.0f), l.position), 0);
+      e.two_sided = true;
+    } else {
+      const Mesh m = l.type == LightType::Disk ? make_disk(l.radius, 96) : make_plane(l.size, 1.0f);
+      e.mesh = upload(m, glm::translate(glm::mat4(1.0f), l.position) * orient_y_to(l.direction, l.up), 0);
+    }
+    emitters_.push_back(std::move(e));
+  }
+  light_count_ = static_cast<int>(lights.size());
+  lights_ = gl::make_buffer(static_cast<GLsizeiptr>(lights.size() * sizeof(LightGpu)), lights.data());
+  check_gl("uploading the scene");
+}
+
+void GpuScene::bind_buffers() const {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, lights_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, materials_.id());
+}
+
+}  // namespace glintlab

@@ -1,0 +1,73 @@
+#include "render/reference_cache.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+
+#include "core/hash.hpp"
+#include "core/image_io.hpp"
+
+namespace glintlab {
+
+ReferenceCache::ReferenceCache(std::filesystem::path directory) : directory_(std::move(directory)) {}
+
+std::filesystem::path ReferenceCache::default_directory() {
+  if (const char* d = std::getenv("GLINTLAB_CACHE_DIR"); d && *d) return d;
+  if (const char* d = std::getenv("XDG_CACHE_HOME"); d && *d) return std::filesystem::path(d) / "glintlab";
+  if (const char* h = std::getenv("HOME"); h && *h) return std::filesystem::path(h) / ".cache" / "glintlab";
+  return {};
+}
+
+std::uint64_t ReferenceCache::key(const Scene& scene, const Camera& camera, int width, int height,
+                                  const ReferenceSettings& settings, std::uint64_t shaders_hash,
+                                  const std::string& renderer) {
+  Hasher h;
+  h.text("glintlab-reference-v1");
+  h.value(scene.content_hash());
+  h.value(camera.projection);
+  h.value(camera.position);
+  h.value(camera.target);
+  h.value(camera.up);
+  h.value(camera.fov_y_degrees);
+  h.value(camera.view_height);
+  h.value(camera.near_plane);
+  h.value(camera.far_plane);
+  h.value(width);
+  h.value(height);
+  h.value(settings.spp);
+  h.value(settings.effective_light_samples());
+  h.value(settings.seed);
+  h.value(shaders_hash);
+  h.text(renderer);
+  return h.digest();
+}
+
+std::filesystem::path ReferenceCache::path(std::uint64_t key) const {
+  char name[32];
+  std::snprintf(name, sizeof name, "ref-%016llx.exr", static_cast<unsigned long long>(key));
+  return directory_ / name;
+}
+
+std::optional<Frame> ReferenceCache::load(std::uint64_t key) const {
+  if (!enabled()) return std::nullopt;
+  const auto p = path(key);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(p, ec)) return std::nullopt;
+  try {
+    return Frame{read_exr(p), read_exr(p, "specular")};
+  } catch (const std::exception& e) {
+    std::cerr << "glintlab: ignoring unreadable cache entry " << p.string() << ": " << e.what() << "\n";
+    return std::nullopt;
+  }
+}
+
+void ReferenceCache::store(std::uint64_t key, const Frame& frame) const {
+  if (!enabled()) return;
+  try {
+    write_exr(path(key), {{"", &frame.total}, {"specular", &frame.specular}});
+  } catch (const std::exception& e) {
+    std::cerr << "glintlab: cannot write to the reference cache: " << e.what() << "\n";
+  }
+}
+
+}  // namespace glintlab

@@ -1,0 +1,34 @@
+#pragma once
+// On-disk cache of ground-truth frames, keyed by a hash of everything that affects them: scene
+// content, camera, film size, reference settings, shader sources and the GL renderer.
+// Location: $GLINTLAB_CACHE_DIR, else $XDG_CACHE_HOME/glintlab, else ~/.cache/glintlab.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "render/renderer.hpp"
+#include "scene/scene.hpp"
+
+namespace glintlab {
+
+class ReferenceCache {
+ public:
+  /// An empty directory disables the cache.
+  explicit ReferenceCache(std::filesystem::path directory);
+  static std::filesystem::path default_directory();
+
+  [[nodiscard]] static std::uint64_t key(const Scene& scene, const Camera& camera, int width, int height,
+                                         const ReferenceSettings& settings, std::uint64_t shaders_hash,
+                                         const std::string& renderer);
+  [[nodiscard]] std::optional<Frame> load(std::uint64_t key) const;
+  /// Failures to write are reported on stderr and otherwise ignored: the cache is an optimisation.
+  void store(std::uint64_t key, const Frame& frame) const;
+  [[nodiscard]] bool enabled() const { return !directory_.empty(); }
+
+ private:
+  [[nodiscard]] std::filesystem::path path(std::uint64_t key) const;
+  std::filesystem::path directory_;
+};
+
+}  // namespace glintlab

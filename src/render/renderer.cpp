@@ -1,0 +1,164 @@
+#include "render/renderer.hpp"
+
+#include <cmath>
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/mat3x3.hpp>
+
+#include "core/error.hpp"
+#include "gl/context.hpp"
+
+namespace glintlab {
+
+// Mirrors FrameBlock in shaders/common/frame.glsl (std140).
+struct Renderer::FrameUniforms {
+  glm::mat4 view_proj;
+  glm::vec4 camera_pos;
+  glm::vec4 camera_forward;
+  glm::ivec4 target;
+  glm::ivec4 tile;
+};
+
+int ReferenceSettings::subpixels() const { return static_cast<int>(std::lround(std::sqrt(static_cast<double>(spp)))); }
+
+int ReferenceSettings::effective_light_samples() const {
+  return light_samples > 0 ? light_samples : std::max(1, (256 + spp - 1) / spp);
+}
+
+void validate_spp(int spp) {
+  const int k = static_cast<int>(std::lround(std::sqrt(static_cast<double>(spp))));
+  if (spp < 1 || k * k != spp || k > 32)
+    throw InputError("--spp " + std::to_string(spp) + ": allowed: k*k samples per pixel with k = 1..32 "
+                     "(1, 4, 16, 64, 256, 1024, ...)");
+}
+
+Renderer::Renderer(ShaderLibrary& shaders, const GpuScene& scene) : shaders_(shaders), scene_(scene) {
+  frame_ubo_ = gl::make_buffer(sizeof(FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
+}
+
+RenderTarget& Renderer::target(int width, int height) {
+  if (!target_ || target_->width() != width || target_->height() != height)
+    target_ = std::make_unique<RenderTarget>(width, height);
+  return *target_;
+}
+
+GLuint Renderer::method_program(const MethodDescriptor& method) {
+  return shaders_.graphics("passes/forward.vert", "passes/forward.frag", {{"$METHOD", method.module_path()}});
+}
+
+void Renderer::draw_scene(GLuint program, const FrameUniforms& frame) {
+  glNamedBufferSubData(frame_ubo_.id(), 0, sizeof(FrameUniforms), &frame);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 0, frame_ubo_.id());
+  scene_.bind_buffers();
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+
+  glUseProgram(program);
+  const GLint model_loc = glGetUniformLocation(program, "uModel");
+  const GLint normal_loc = glGetUniformLocation(program, "uNormalMatrix");
+  const GLint material_loc = glGetUniformLocation(program, "uMaterial");
+  for (const auto& mesh : scene_.meshes()) {
+    const glm::mat3 normal_matrix = glm::inverseTranspose(glm::mat3(mesh.transform));
+    glProgramUniformMatrix4fv(program, model_loc, 1, GL_FALSE, &mesh.transform[0][0]);
+    glProgramUniformMatrix3fv(program, normal_loc, 1, GL_FALSE, &normal_matrix[0][0]);
+    glProgramUniform1i(program, material_loc, mesh.material);
+    glBindTextureUnit(0, scene_.normal_map(mesh.material));
+    glBindVertexArray(mesh.vao.id());
+    glDrawElements(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr);
+  }
+
+  const GLuint emitter = shaders_.graphics("passes/forward.vert", "passes/emitter.frag");
+  glUseProgram(emitter);
+  for (const auto& e : scene_.emitters()) {
+    const glm::mat3 normal_matrix = glm::inverseTranspose(glm::mat3(e.mesh.transform));
+    glProgramUniformMatrix4fv(emitter, glGetUniformLocation(emitter, "uModel"), 1, GL_FALSE, &e.mesh.transform[0][0]);
+    glProgramUniformMatrix3fv(emitter, glGetUniformLocation(emitter, "uNormalMatrix"), 1, GL_FALSE, &normal_matrix[0][0]);
+    glProgramUniform3fv(emitter, glGetUniformLocation(emitter, "uRadiance"), 1, &e.radiance[0]);
+    glProgramUniform1i(emitter, glGetUniformLocation(emitter, "uTwoSided"), e.two_sided ? 1 : 0);
+    glBindVertexArray(e.mesh.vao.id());
+    glDrawElements(GL_TRIANGLES, e.mesh.index_count, GL_UNSIGNED_INT, nullptr);
+  }
+  glBindVertexArray(0);
+  check_gl("drawing the scene");
+}
+
+namespace {
+glm::vec4 camera_position(const Camera& c) {
+  return {c.position, c.projection == Projection::Perspective ? 1.0f : 0.0f};
+}
+}  // namespace
+
+void Renderer::draw(const MethodDescriptor& method, const ParamValues& params, const Camera& camera, int width, int height) {
+  const GLuint program = method_program(method);
+  for (const auto& [name, value] : params) {
+    const GLint loc = glGetUniformLocation(program, ("param_" + name).c_str());
+    if (loc >= 0) glProgramUniform1f(program, loc, value);
+  }
+  RenderTarget& rt = target(width, height);
+  rt.bind_and_clear();
+  FrameUniforms frame{};
+  frame.view_proj = camera.projection_matrix(static_cast<float>(width) / static_cast<float>(height)) * camera.view_matrix();
+  frame.camera_pos = camera_position(camera);
+  frame.camera_forward = glm::vec4(glm::normalize(camera.target - camera.position), 0.0f);
+  frame.target = {width, height, 1, scene_.light_count()};
+  frame.tile = {0, 0, 1, 0};
+  draw_scene(program, frame);
+}
+
+Frame Renderer::render(const MethodDescriptor& method, const ParamValues& params, const Camera& camera, int width, int height) {
+  draw(method, params, camera, width, height);
+  return {RenderTarget::read(target_->total(), width, height), RenderTarget::read(target_->specular(), width, height)};
+}
+
+Frame Renderer::render_reference(const Camera& camera, int width, int height, const ReferenceSettings& settings,
+                                 const ProgressFn& progress) {
+  validate_spp(settings.spp);
+  const int k = settings.subpixels();
+  constexpr int kMaxTileSide = 2048;  // sub-pixels per side of one high-resolution tile
+  const int tile = std::max(1, kMaxTileSide / k);
+  const int tiles_x = (width + tile - 1) / tile, tiles_y = (height + tile - 1) / tile;
+
+  RenderTarget high(std::min(width, tile) * k, std::min(height, tile) * k);
+  gl::Texture out_total = gl::make_texture(GL_TEXTURE_2D), out_specular = gl::make_texture(GL_TEXTURE_2D);
+  glTextureStorage2D(out_total.id(), 1, GL_RGBA32F, width, height);
+  glTextureStorage2D(out_specular.id(), 1, GL_RGBA32F, width, height);
+
+  const GLuint program = shaders_.graphics("passes/forward.vert", "passes/forward.frag", {{"$METHOD", "passes/reference.glsl"}});
+  const GLuint downsample = shaders_.compute("passes/downsample.comp");
+  const glm::ivec2 film(width, height);
+  int done = 0;
+  for (int ty = 0; ty < tiles_y; ++ty)
+    for (int tx = 0; tx < tiles_x; ++tx) {
+      // Tile in output pixels, y down (film convention).
+      const glm::ivec2 origin(tx * tile, ty * tile);
+      const glm::ivec2 size(std::min(tile, width - origin.x), std::min(tile, height - origin.y));
+      const int gl_y = height - origin.y - size.y;  // the same tile in GL's y-up pixel rows
+      high.bind_and_clear(size.x * k, size.y * k);
+      FrameUniforms frame{};
+      frame.view_proj = camera.tile_projection_matrix(film, origin, size) * camera.view_matrix();
+      frame.camera_pos = camera_position(camera);
+      frame.camera_forward = glm::vec4(glm::normalize(camera.target - camera.position), 0.0f);
+      frame.target = {size.x * k, size.y * k, k, scene_.light_count()};
+      frame.tile = {origin.x * k, gl_y * k, settings.effective_light_samples(), settings.seed};
+      draw_scene(program, frame);
+
+      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+      glUseProgram(downsample);
+      glBindImageTexture(0, high.total(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+      glBindImageTexture(1, high.specular(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+      glBindImageTexture(2, out_total.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+      glBindImageTexture(3, out_specular.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+      glProgramUniform1i(downsample, glGetUniformLocation(downsample, "uSubpixels"), k);
+      glProgramUniform2i(downsample, glGetUniformLocation(downsample, "uTileSize"), size.x, size.y);
+      glProgramUniform2i(downsample, glGetUniformLocation(downsample, "uOutOrigin"), origin.x, gl_y);
+      glDispatchCompute(static_cast<GLuint>((size.x + 7) / 8), static_cast<GLuint>((size.y + 7) / 8), 1);
+      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+      glFinish();  // one tile at a time keeps progress honest and the driver's queue short
+      check_gl("rendering a reference tile");
+      if (progress) progress(++done, tiles_x * tiles_y);
+    }
+  return {RenderTarget::read(out_total.id(), width, height), RenderTarget::read(out_specular.id(), width, height)};
+}
+
+}  // namespace glintlab

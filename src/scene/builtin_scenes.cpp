@@ -1,0 +1,304 @@
+// Built-in scenes: classic specular-aliasing cases, written as scene-format TOML so that
+// `glintlab scenes --print NAME` doubles as a template for users' own scenes.
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace glintlab {
+
+namespace {
+
+/// Portable uniform [0,1) from mt19937 (std distributions differ between standard libraries).
+float uniform(std::mt19937& rng) { return static_cast<float>(rng() >> 8) * (1.0f / 16777216.0f); }
+
+std::string spheres() {
+  std::ostringstream s;
+  s << R"(# Rows of spheres shrinking with distance: curvature aliasing of highlights from small lights.
+[film]
+width = 640
+height = 360
+
+[camera]
+position = [0.0, 1.1, 4.2]
+target = [0.0, 0.35, -3.0]
+fov = 38
+
+[camera.path]
+type = "orbit"
+degrees = 6
+frames = 24
+
+[[material]]
+name = "floor"
+ndf = "ggx"
+alpha = 0.5
+f0 = 0.04
+diffuse = 0.18
+
+[[material]]
+name = "mirror"
+alpha = 0.002
+f0 = [0.95, 0.93, 0.88]
+
+[[material]]
+name = "glossy"
+alpha = 0.03
+f0 = [0.91, 0.78, 0.42]
+
+[[material]]
+name = "plastic"
+alpha = 0.08
+f0 = 0.04
+diffuse = [0.35, 0.05, 0.04]
+
+[[shape]]
+type = "plane"
+material = "floor"
+size = 40
+translate = [0, 0, -10]
+)";
+  const char* rows[] = {"mirror", "glossy", "plastic"};
+  for (int row = 0; row < 3; ++row)
+    for (int i = 0; i < 12; ++i) {
+      const float r = 0.3f * std::pow(0.78f, static_cast<float>(i));
+      const float z = 1.0f - 2.2f * static_cast<float>(i) * std::pow(0.9f, static_cast<float>(i));
+      const float x = (static_cast<float>(row) - 1.0f) * (0.8f + 0.05f * static_cast<float>(i));
+      s << "\n[[shape]]\ntype = \"sphere\"\nmaterial = \"" << rows[row] << "\"\nradius = " << r
+        << "\nsegments = 64\ntranslate = [" << x << ", " << r << ", " << z << "]\n";
+    }
+  s << R"(
+[[light]]
+type = "sphere"
+position = [-3.0, 4.0, 2.0]
+radius = 0.08
+radiance = [900, 850, 800]
+
+[[light]]
+type = "disk"
+position = [4.0, 3.0, -6.0]
+direction = [-0.6, -0.45, 0.65]
+radius = 0.12
+radiance = [300, 360, 450]
+
+[[light]]
+type = "directional"
+direction = [0.3, -1.0, -0.4]
+irradiance = 0.4
+)";
+  return s.str();
+}
+
+std::string tubes() {
+  std::ostringstream s;
+  s << R"(# A hairball-like bundle of thin curved metal tubes: highlights thinner than a pixel.
+[film]
+width = 640
+height = 360
+
+[camera]
+position = [0.0, 0.2, 3.2]
+target = [0.0, 0.0, 0.0]
+fov = 35
+
+[camera.path]
+type = "orbit"
+degrees = 8
+frames = 24
+
+[[material]]
+name = "metal"
+alpha = 0.02
+f0 = [0.95, 0.64, 0.54]
+
+[[material]]
+name = "backdrop"
+alpha = 0.6
+f0 = 0.04
+diffuse = 0.1
+
+[[shape]]
+type = "plane"
+material = "backdrop"
+size = 20
+rotate = [90, 0, 0]
+translate = [0, 0, -3]
+)";
+  std::mt19937 rng(7);
+  for (int t = 0; t < 90; ++t) {
+    s << "\n[[shape]]\ntype = \"tube\"\nmaterial = \"metal\"\nradius = " << 0.006 + 0.006 * uniform(rng)
+      << "\nsegments = 12\nsides = 8\npoints = [";
+    // A random walk on a ball of radius ~0.9, bent smoothly.
+    float theta = 6.2831853f * uniform(rng), phi = std::acos(2.0f * uniform(rng) - 1.0f);
+    float dtheta = 1.2f * (uniform(rng) - 0.5f), dphi = 1.2f * (uniform(rng) - 0.5f);
+    for (int k = 0; k < 6; ++k) {
+      const float r = 0.55f + 0.35f * uniform(rng);
+      s << (k ? ", " : "") << "[" << r * std::sin(phi) * std::cos(theta) << ", " << r * std::cos(phi) << ", "
+        << r * std::sin(phi) * std::sin(theta) << "]";
+      theta += dtheta;
+      phi += dphi;
+      dtheta += 0.3f * (uniform(rng) - 0.5f);
+      dphi += 0.3f * (uniform(rng) - 0.5f);
+    }
+    s << "]\n";
+  }
+  s << R"(
+[[light]]
+type = "sphere"
+position = [2.5, 3.0, 2.5]
+radius = 0.1
+radiance = 500
+
+[[light]]
+type = "point"
+position = [-3.0, 1.0, 2.0]
+intensity = [6, 7, 9]
+)";
+  return s.str();
+}
+
+std::string bumpy_plane() {
+  return R"(# A metal plane with a procedural bumpy normal map seen at grazing angles to the horizon.
+[film]
+width = 640
+height = 360
+
+[camera]
+position = [0.0, 0.6, 4.0]
+target = [0.0, 0.0, -6.0]
+fov = 45
+
+[camera.path]
+type = "dolly"
+to = [0.0, 0.6, 3.0]
+frames = 24
+
+[[material]]
+name = "bumpy-metal"
+ndf = "ggx"
+alpha = 0.04
+f0 = [0.9, 0.9, 0.92]
+diffuse = 0.02
+normal_map = { generator = "bumps", resolution = 512, alpha = 0.25, waves = 96, max_frequency = 24, seed = 3 }
+normal_map_tiling = 1
+
+[[shape]]
+type = "plane"
+material = "bumpy-metal"
+size = 60
+uv_scale = 60
+translate = [0, 0, -20]
+
+[[light]]
+type = "sphere"
+position = [0.0, 2.5, -30.0]
+radius = 1.0
+radiance = 60
+
+[[light]]
+type = "directional"
+direction = [0.2, -0.3, 1.0]
+irradiance = 0.5
+angular_radius = 0.5
+)";
+}
+
+std::string mirror_disk() {
+  return R"(# Near-mirror objects under one small disk light: highlights are a fraction of a pixel.
+[film]
+width = 640
+height = 360
+
+[camera]
+position = [0.0, 1.6, 5.5]
+target = [0.0, 0.4, 0.0]
+fov = 30
+
+[camera.path]
+type = "orbit"
+degrees = 5
+frames = 24
+
+[[material]]
+name = "chrome"
+alpha = 0.001
+f0 = [0.95, 0.95, 0.95]
+
+[[material]]
+name = "gold"
+alpha = 0.003
+f0 = [1.0, 0.78, 0.34]
+
+[[material]]
+name = "ground"
+alpha = 0.4
+f0 = 0.04
+diffuse = 0.15
+
+[[shape]]
+type = "plane"
+material = "ground"
+size = 30
+
+[[shape]]
+type = "sphere"
+material = "chrome"
+radius = 0.5
+translate = [-1.2, 0.5, 0.0]
+
+[[shape]]
+type = "torus"
+material = "gold"
+major_radius = 0.45
+minor_radius = 0.12
+rotate = [70, 0, 20]
+translate = [0.2, 0.6, 0.3]
+
+[[shape]]
+type = "cylinder"
+material = "chrome"
+radius = 0.25
+height = 1.2
+translate = [1.3, 0.6, -0.4]
+
+[[shape]]
+type = "sphere"
+material = "gold"
+radius = 0.12
+translate = [0.6, 0.12, 1.2]
+
+[[light]]
+type = "disk"
+position = [2.0, 5.0, 3.0]
+direction = [-0.35, -0.8, -0.5]
+radius = 0.15
+radiance = 2500
+)";
+}
+
+}  // namespace
+
+const std::vector<BuiltinScene>& builtin_scenes() {
+  static const std::vector<BuiltinScene> scenes = {
+      {"spheres", "rows of mirror, glossy and plastic spheres shrinking with distance under small lights (default)"},
+      {"tubes", "a hairball-like bundle of thin curved metal tubes"},
+      {"bumpy-plane", "a normal-mapped metal plane with procedural bumps, seen at grazing angles"},
+      {"mirror-disk", "near-mirror objects under one small disk light"},
+  };
+  return scenes;
+}
+
+std::string builtin_scene_toml(const std::string& name) {
+  if (name == "spheres") return spheres();
+  if (name == "tubes") return tubes();
+  if (name == "bumpy-plane") return bumpy_plane();
+  if (name == "mirror-disk") return mirror_disk();
+  std::string known;
+  for (const auto& s : builtin_scenes()) known += (known.empty() ? "" : ", ") + s.name;
+  throw InputError("builtin:" + name + ": no such built-in scene; allowed: " + known);
+}
+
+}  // namespace glintlab

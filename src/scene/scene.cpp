@@ -1,0 +1,58 @@
+#include "scene/scene.hpp"
+
+#include <span>
+
+#include "core/hash.hpp"
+
+namespace glintlab {
+
+std::uint64_t Scene::content_hash() const {
+  Hasher h;
+  h.value(film.width);
+  h.value(film.height);
+  const Camera& c = camera;
+  h.value(c.projection);
+  h.value(c.position);
+  h.value(c.target);
+  h.value(c.up);
+  h.value(c.fov_y_degrees);
+  h.value(c.view_height);
+  h.value(c.near_plane);
+  h.value(c.far_plane);
+  for (const auto& m : materials) {
+    h.value(m.ndf);
+    h.value(m.alpha);
+    h.value(m.f0);
+    h.value(m.diffuse);
+    h.value(m.normal_map_tiling);
+    h.value(m.normal_map != nullptr);
+    if (m.normal_map) {
+      h.value(m.normal_map->width);
+      h.value(m.normal_map->height);
+      h.span(std::span<const glm::vec3>(m.normal_map->normals));
+    }
+  }
+  for (const auto& s : shapes) {
+    h.value(s.transform);
+    h.value(s.material);
+    h.span(std::span<const glm::vec3>(s.mesh->positions));
+    h.span(std::span<const glm::vec3>(s.mesh->normals));
+    h.span(std::span<const glm::vec4>(s.mesh->tangents));
+    h.span(std::span<const glm::vec2>(s.mesh->uvs));
+    h.span(std::span<const std::uint32_t>(s.mesh->indices));
+  }
+  for (const auto& l : lights) {
+    h.value(l.type);
+    h.value(l.colour);
+    h.value(l.position);
+    h.value(l.direction);
+    h.value(l.up);
+    h.value(l.radius);
+    h.value(l.size);
+    h.value(l.angular_radius_degrees);
+    h.value(l.visible);
+  }
+  return h.digest();
+}
+
+}  // namespace glintlab

@@ -1,0 +1,44 @@
+#pragma once
+// The CPU-side scene: film, camera and camera path, materials, shapes and lights.
+#include <cstdint>
+#include <glm/mat4x4.hpp>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "scene/camera.hpp"
+#include "scene/light.hpp"
+#include "scene/material.hpp"
+#include "scene/mesh.hpp"
+
+namespace glintlab {
+
+struct Film {
+  int width = 640;
+  int height = 360;
+  float exposure = 0.0f;  ///< stops, applied to displayed images only (never to metrics)
+};
+
+struct Shape {
+  std::string type;                  ///< the generator or file kind it came from
+  std::shared_ptr<const Mesh> mesh;  ///< object space
+  glm::mat4 transform{1.0f};         ///< object to world
+  int material = 0;                  ///< index into Scene::materials
+};
+
+struct Scene {
+  std::string name;    ///< builtin name or file stem
+  std::string source;  ///< "builtin:NAME" or the file path given by the user
+  Film film;
+  Camera camera;
+  CameraPath path;
+  std::vector<Material> materials;
+  std::vector<Shape> shapes;
+  std::vector<Light> lights;
+
+  /// Hash of everything that affects an image (geometry, maps, lights, camera, film), not of
+  /// names: the reference cache's key.
+  [[nodiscard]] std::uint64_t content_hash() const;
+};
+
+}  // namespace glintlab

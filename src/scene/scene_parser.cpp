@@ -1,0 +1,282 @@
+// The TOML scene format. Every key is documented in docs/scene-format.md; keep the two in step.
+#include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+#include <map>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "scene/mesh_io.hpp"
+#include "scene/scene_loader.hpp"
+#include "scene/toml_reader.hpp"
+
+namespace glintlab {
+
+namespace {
+
+constexpr int kMaxFilmSide = 16384;
+constexpr double kMaxFilmPixels = 64.0 * 1024 * 1024;
+constexpr int kMaxFrames = 100000;
+constexpr double kBig = 1e6;  // bound on positions and lengths, in scene units
+
+void parse_film(TomlReader r, Film& film) {
+  film.width = r.get_int("width", film.width, 1, kMaxFilmSide);
+  film.height = r.get_int("height", film.height, 1, kMaxFilmSide);
+  if (static_cast<double>(film.width) * film.height > kMaxFilmPixels)
+    r.fail("height", "film " + std::to_string(film.width) + "x" + std::to_string(film.height) +
+                         " has more than 64 Mpixels; allowed: width * height <= 67108864");
+  film.exposure = static_cast<float>(r.get_number("exposure", film.exposure, -30, 30));
+  r.finish();
+}
+
+void parse_path(TomlReader r, CameraPath& path) {
+  const auto type = r.require_string("type", {"static", "orbit", "dolly", "keyframes"});
+  path.frames = r.get_int("frames", 60, 1, kMaxFrames);
+  if (type == "static") {
+    path.type = CameraPathType::Static;
+  } else if (type == "orbit") {
+    path.type = CameraPathType::Orbit;
+    path.orbit_degrees = static_cast<float>(r.get_number("degrees", 10, -3600, 3600));
+    path.orbit_axis = r.get_vec3("axis", {0, 1, 0});
+    if (glm::length(path.orbit_axis) < 1e-6f) r.fail("axis", "value is a zero vector; allowed: any non-zero vector");
+  } else if (type == "dolly") {
+    path.type = CameraPathType::Dolly;
+    path.dolly_to = r.require_vec3("to");
+  } else {
+    path.type = CameraPathType::Keyframes;
+    for (const toml::table* key : r.get_table_array("keys")) {
+      TomlReader k(*key, r.file(), "[camera.path] keys[" + std::to_string(path.keys.size()) + "]");
+      path.keys.push_back({k.require_vec3("position"), k.require_vec3("target")});
+      k.finish();
+    }
+    if (path.keys.size() < 2) r.fail("keys", "has " + std::to_string(path.keys.size()) + " keys; allowed: at least 2");
+  }
+  r.finish();
+}
+
+void parse_camera(TomlReader r, Camera& cam, CameraPath& path) {
+  const auto type = r.get_string("type", "perspective", {"perspective", "orthographic"});
+  cam.projection = type == "perspective" ? Projection::Perspective : Projection::Orthographic;
+  cam.position = r.get_vec3("position", cam.position);
+  cam.target = r.get_vec3("target", cam.target);
+  cam.up = r.get_vec3("up", cam.up);
+  cam.fov_y_degrees = static_cast<float>(r.get_number("fov", cam.fov_y_degrees, 0.01, 179));
+  cam.view_height = static_cast<float>(r.get_number("view_height", cam.view_height, 1e-6, kBig));
+  cam.near_plane = static_cast<float>(r.get_number("near", cam.near_plane, 1e-6, kBig));
+  cam.far_plane = static_cast<float>(r.get_number("far", cam.far_plane, 1e-6, kBig));
+  if (cam.far_plane <= cam.near_plane)
+    r.fail("far", "value " + std::to_string(cam.far_plane) + " is not greater than near (" +
+                      std::to_string(cam.near_plane) + ")");
+  const glm::vec3 forward = cam.target - cam.position;
+  if (glm::length(forward) < 1e-9f) r.fail("target", "equals the position; the camera needs a direction");
+  if (glm::length(glm::cross(forward, cam.up)) < 1e-9f * glm::length(forward))
+    r.fail("up", "is parallel to the viewing direction");
+  if (const toml::table* p = r.get_table("path")) parse_path(TomlReader(*p, r.file(), "[camera.path]"), path);
+  r.finish();
+}
+
+std::shared_ptr<const NormalMap> parse_normal_map(TomlReader r, const std::filesystem::path& base_dir) {
+  if (r.has("file")) {
+    const auto file = r.require_string("file");
+    r.finish();
+    try {
+      return std::make_shared<NormalMap>(load_normal_map(base_dir / file));
+    } catch (const InputError& e) {
+      r.fail("file", e.what());
+    }
+  }
+  const auto generator = r.require_string("generator", {"bumps", "flakes"});
+  const int resolution = r.get_int("resolution", 512, 4, 8192);
+  const auto seed = static_cast<std::uint32_t>(r.get_int("seed", 1, 0, 1 << 30));
+  if (generator == "bumps") {
+    const auto alpha = static_cast<float>(r.get_number("alpha", 0.3, 0.0, 2.0));
+    const int waves = r.get_int("waves", 128, 1, 4096);
+    const int max_frequency = r.get_int("max_frequency", 24, 1, resolution / 2);
+    r.finish();
+    return std::make_shared<NormalMap>(generate_bumps(resolution, alpha, waves, max_frequency, seed));
+  }
+  const int cells = r.get_int("cells", 32, 1, resolution);
+  const auto alpha = static_cast<float>(r.get_number("alpha", 0.2, 0.0, 2.0));
+  r.finish();
+  return std::make_shared<NormalMap>(generate_flakes(resolution, cells, alpha, seed));
+}
+
+Material parse_material(TomlReader r, const std::filesystem::path& base_dir) {
+  Material m;
+  m.name = r.require_string("name");
+  m.ndf = r.get_string("ndf", "ggx", {"ggx", "beckmann"}) == "ggx" ? Ndf::GGX : Ndf::Beckmann;
+  m.alpha = r.get_vec2("alpha", m.alpha, 0.0, 1.0);
+  const bool has_f0 = r.has("f0");
+  const bool has_metal = r.has("base_color") || r.has("metallic");
+  if (has_f0 && has_metal) r.fail("f0", "cannot be combined with base_color/metallic; give one or the other");
+  if (has_metal) {
+    const glm::vec3 base = r.get_colour("base_color", glm::vec3(0.8f), 0.0, 1.0);
+    const auto metallic = static_cast<float>(r.get_number("metallic", 0.0, 0.0, 1.0));
+    m.f0 = glm::mix(glm::vec3(0.04f), base, metallic);
+    m.diffuse = base * (1.0f - metallic);
+    if (r.has("diffuse")) r.fail("diffuse", "cannot be combined with base_color/metallic (they set it)");
+  } else {
+    m.f0 = r.get_colour("f0", m.f0, 0.0, 1.0);
+    m.diffuse = r.get_colour("diffuse", m.diffuse, 0.0, 1.0);
+  }
+  r.allow({"base_color", "metallic", "diffuse", "f0"});  // read in one branch or the other
+  if (const toml::table* nm = r.get_table("normal_map"))
+    m.normal_map = parse_normal_map(TomlReader(*nm, r.file(), "[[material]] '" + m.name + "' normal_map"), base_dir);
+  m.normal_map_tiling = static_cast<float>(r.get_number("normal_map_tiling", 1.0, 1e-3, 1e5));
+  r.finish();
+  return m;
+}
+
+glm::mat4 parse_transform(TomlReader& r) {
+  const glm::vec3 t = r.get_vec3("translate", glm::vec3(0.0f));
+  const glm::vec3 rot = r.get_vec3("rotate", glm::vec3(0.0f));
+  const glm::vec3 s = r.get_colour("scale", glm::vec3(1.0f), 1e-6, kBig);
+  glm::mat4 m = glm::translate(glm::mat4(1.0f), t);
+  m = glm::rotate(m, glm::radians(rot.z), {0, 0, 1});
+  m = glm::rotate(m, glm::radians(rot.y), {0, 1, 0});
+  m = glm::rotate(m, glm::radians(rot.x), {1, 0, 0});
+  return glm::scale(m, s);
+}
+
+Shape parse_shape(TomlReader r, const std::map<std::string, int>& materials, const std::filesystem::path& base_dir) {
+  Shape shape;
+  shape.type = r.require_string("type", {"sphere", "plane", "disk", "torus", "tube", "cylinder", "mesh"});
+  const auto material = r.require_string("material");
+  auto it = materials.find(material);
+  if (it == materials.end()) {
+    std::string known;
+    for (const auto& [k, v] : materials) known += (known.empty() ? "" : ", ") + k;
+    r.fail("material", "value \"" + material + "\" names no [[material]]; defined: " + (known.empty() ? "none" : known));
+  }
+  shape.material = it->second;
+  shape.transform = parse_transform(r);
+  Mesh mesh;
+  const std::string& type = shape.type;
+  if (type == "sphere") {
+    const auto radius = static_cast<float>(r.get_number("radius", 1.0, 1e-6, kBig));
+    const int segments = r.get_int("segments", 128, 3, 4096);
+    mesh = make_sphere(radius, segments, r.get_int("rings", segments / 2, 2, 4096));
+  } else if (type == "plane") {
+    const glm::vec2 size = r.get_vec2("size", glm::vec2(2.0f), 1e-6, kBig);
+    const auto uv_scale = static_cast<float>(r.get_number("uv_scale", 1.0, 1e-6, kBig));
+    mesh = make_plane(size, uv_scale, r.get_int("subdivisions", 1, 1, 4096));
+  } else if (type == "disk") {
+    const auto radius = static_cast<float>(r.get_number("radius", 1.0, 1e-6, kBig));
+    mesh = make_disk(radius, r.get_int("segments", 128, 3, 65536));
+  } else if (type == "torus") {
+    const auto major = static_cast<float>(r.get_number("major_radius", 1.0, 1e-6, kBig));
+    const auto minor = static_cast<float>(r.get_number("minor_radius", 0.25, 1e-6, kBig));
+    const int segments = r.get_int("segments", 128, 3, 4096);
+    mesh = make_torus(major, minor, segments, r.get_int("sides", 48, 3, 4096));
+  } else if (type == "tube") {
+    const auto points = r.require_vec3_list("points", 2);
+    const auto radius = static_cast<float>(r.get_number("radius", 0.05, 1e-6, kBig));
+    const int segments = r.get_int("segments", 16, 1, 1024);
+    mesh = make_tube(points, radius, segments, r.get_int("sides", 16, 3, 1024));
+  } else if (type == "cylinder") {
+    const auto radius = static_cast<float>(r.get_number("radius", 0.5, 1e-6, kBig));
+    const auto height = static_cast<float>(r.get_number("height", 1.0, 1e-6, kBig));
+    mesh = make_tube({{0, -0.5f * height, 0}, {0, 0.5f * height, 0}}, radius, 1, r.get_int("sides", 64, 3, 4096));
+  } else {
+    const auto file = r.require_string("file");
+    try {
+      mesh = load_mesh_file(base_dir / file);
+    } catch (const InputError& e) {
+      r.fail("file", e.what());
+    }
+  }
+  r.finish();
+  shape.mesh = std::make_shared<Mesh>(std::move(mesh));
+  if (const auto problem = shape.mesh->validate(); !problem.empty()) r.fail("type", "broken geometry: " + problem);
+  return shape;
+}
+
+Light parse_light(TomlReader r) {
+  Light l;
+  const auto type = r.require_string("type", {"point", "directional", "disk", "sphere", "quad"});
+  constexpr double kMaxPower = 1e9;
+  if (type == "point") {
+    l.type = LightType::Point;
+    l.position = r.require_vec3("position");
+    l.colour = r.get_colour("intensity", glm::vec3(1.0f), 0.0, kMaxPower);
+  } else if (type == "directional") {
+    l.type = LightType::Directional;
+    l.direction = r.require_vec3("direction");
+    l.colour = r.get_colour("irradiance", glm::vec3(1.0f), 0.0, kMaxPower);
+    l.angular_radius_degrees = static_cast<float>(r.get_number("angular_radius", 0.0, 0.0, 45.0));
+  } else {
+    l.type = type == "disk" ? LightType::Disk : type == "sphere" ? LightType::Sphere : LightType::Quad;
+    l.position = r.require_vec3("position");
+    l.colour = r.get_colour("radiance", glm::vec3(1.0f), 0.0, kMaxPower);
+    l.visible = r.get_bool("visible", true);
+    if (l.type == LightType::Quad) {
+      l.size = r.get_vec2("size", glm::vec2(1.0f), 1e-6, kBig);
+      l.up = r.get_vec3("up", glm::vec3(0, 0, 1));
+    } else {
+      l.radius = static_cast<float>(r.require_number("radius", 1e-6, kBig));
+    }
+    if (l.type != LightType::Sphere) l.direction = r.require_vec3("direction");
+  }
+  if (glm::length(l.direction) < 1e-9f) r.fail("direction", "value is a zero vector; allowed: any non-zero vector");
+  l.direction = glm::normalize(l.direction);
+  if (l.type == LightType::Quad && glm::length(glm::cross(l.direction, l.up)) < 1e-6f * glm::length(l.up))
+    r.fail("up", "is parallel to direction or zero; it must orient the quad");
+  r.finish();
+  return l;
+}
+
+}  // namespace
+
+Scene parse_scene(std::string_view text, const std::string& file, const std::filesystem::path& base_dir) {
+  toml::table root;
+  try {
+    root = toml::parse(text, file);
+  } catch (const toml::parse_error& e) {
+    std::ostringstream s;
+    s << file << ':' << e.source().begin.line << ':' << e.source().begin.column << ": malformed TOML: " << e.description();
+    throw InputError(s.str());
+  }
+  Scene scene;
+  scene.source = file;
+  scene.name = std::filesystem::path(file).stem().string();
+  TomlReader r(root, file, "");
+  if (const toml::table* film = r.get_table("film")) parse_film(TomlReader(*film, file, "[film]"), scene.film);
+  if (const toml::table* cam = r.get_table("camera"))
+    parse_camera(TomlReader(*cam, file, "[camera]"), scene.camera, scene.path);
+  std::map<std::string, int> material_index;
+  for (const toml::table* t : r.get_table_array("material")) {
+    TomlReader mr(*t, file, "[[material]] #" + std::to_string(scene.materials.size() + 1));
+    Material m = parse_material(mr, base_dir);
+    if (material_index.contains(m.name)) mr.fail("name", "value \"" + m.name + "\" is defined twice; names must be unique");
+    material_index[m.name] = static_cast<int>(scene.materials.size());
+    scene.materials.push_back(std::move(m));
+  }
+  for (const toml::table* t : r.get_table_array("shape"))
+    scene.shapes.push_back(
+        parse_shape(TomlReader(*t, file, "[[shape]] #" + std::to_string(scene.shapes.size() + 1)), material_index, base_dir));
+  for (const toml::table* t : r.get_table_array("light"))
+    scene.lights.push_back(parse_light(TomlReader(*t, file, "[[light]] #" + std::to_string(scene.lights.size() + 1))));
+  r.finish();
+  if (scene.shapes.empty()) throw InputError(file + ": the scene has no [[shape]]; at least one is required");
+  if (scene.lights.empty()) throw InputError(file + ": the scene has no [[light]]; at least one is required");
+  return scene;
+}
+
+Scene load_scene(const std::string& spec) {
+  if (spec.rfind("builtin:", 0) == 0) {
+    const std::string name = spec.substr(8);
+    Scene scene = parse_scene(builtin_scene_toml(name), spec, ".");
+    scene.name = name;
+    return scene;
+  }
+  const std::filesystem::path path(spec);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw InputError(spec + ": scene file does not exist or is not a file (or use builtin:NAME; see 'glintlab scenes')");
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  if (!in) throw InputError(spec + ": cannot read scene file");
+  return parse_scene(text.str(), spec, path.parent_path());
+}
+
+}  // namespace glintlab

@@ -1,0 +1,38 @@
+#pragma once
+// A shading method: one GLSL module (shaders/methods/<id>.glsl) plus this descriptor. The
+// renderer only ever sees descriptors; it never names a method.
+#include <map>
+#include <string>
+#include <vector>
+
+namespace glintlab {
+
+/// A float parameter of a method; set in GLSL as the uniform `param_<name>`.
+struct ParamDecl {
+  std::string name;
+  float default_value;
+  float min;
+  float max;
+  std::string description;
+};
+
+struct MethodDescriptor {
+  std::string id;        ///< also the module's file name: shaders/methods/<id>.glsl
+  std::string title;
+  std::string citation;  ///< the paper (or "baseline")
+  std::string summary;   ///< one paragraph, shown by `glintlab methods`
+  std::vector<ParamDecl> params;
+  std::vector<std::string> tables;  ///< precomputed tables the module reads (none yet)
+
+  [[nodiscard]] std::string module_path() const { return "methods/" + id + ".glsl"; }
+  [[nodiscard]] const ParamDecl* find_param(const std::string& name) const;
+};
+
+/// Parameter values by name, every declared parameter present.
+using ParamValues = std::map<std::string, float>;
+
+/// Defaults overridden by `overrides` ("name=value" strings already split). Throws InputError for
+/// an unknown parameter (listing the method's parameters) or a value out of range.
+ParamValues resolve_params(const MethodDescriptor& method, const std::map<std::string, std::string>& overrides);
+
+}  // namespace glintlab

@@ -96,7 +96,6 @@ GpuScene::GpuScene(const Scene& scene) {
       glTextureParameteri(tex.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
       glTextureParameteri(tex.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
       glTextureParameteri(tex.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
-      glTextureParameterf(tex.id(), GL_TEXTURE_MAX_ANISOTROPY, 16.0f);
     }
     normal_maps_.push_back(std::move(tex));
   }

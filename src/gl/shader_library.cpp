@@ -18,11 +18,13 @@ ShaderLibrary::ShaderLibrary() {
 }
 
 bool ShaderLibrary::exists(const std::string& path) const {
+  if (virtual_.contains(path)) return true;
   if (!directory_.empty()) return std::filesystem::is_regular_file(std::filesystem::path(directory_) / path);
   return embedded_shaders().contains(path);
 }
 
 std::string ShaderLibrary::source(const std::string& path) const {
+  if (auto it = virtual_.find(path); it != virtual_.end()) return it->second;
   if (!directory_.empty()) {
     std::ifstream in(std::filesystem::path(directory_) / path, std::ios::binary);
     if (!in) throw RuntimeFailure("shader '" + path + "' not found in GLINTLAB_SHADER_DIR=" + directory_);

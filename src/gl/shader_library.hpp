@@ -18,6 +18,9 @@ class ShaderLibrary {
  public:
   ShaderLibrary();
 
+  /// Adds (or replaces) an in-memory source file, e.g. a test harness; it takes precedence.
+  void add_source(const std::string& path, std::string text) { virtual_[path] = std::move(text); }
+
   /// Raw text of one file; throws RuntimeFailure if there is none.
   [[nodiscard]] std::string source(const std::string& path) const;
   [[nodiscard]] bool exists(const std::string& path) const;
@@ -44,6 +47,7 @@ class ShaderLibrary {
 
   std::string directory_;  // empty: embedded sources
   std::map<std::string, gl::Program> programs_;
+  std::map<std::string, std::string> virtual_;
 };
 
 }  // namespace glintlab

@@ -33,18 +33,24 @@ NormalMap generate_bumps(int resolution, float slope_sigma, int waves, int max_f
   ws.reserve(static_cast<std::size_t>(waves));
   double k2_sum = 0.0;
   for (int i = 0; i < waves; ++i) {
+    // Distinct integer frequencies (k and -k are the same wave), so the waves stay orthogonal
+    // over the tile and the slope variance is exactly the sum of theirs.
     glm::vec2 k(0.0f);
-    while (k == glm::vec2(0.0f)) {
+    auto taken = [&](glm::vec2 q) {
+      return std::any_of(ws.begin(), ws.end(), [&](const Wave& w) { return w.k == q || w.k == -q; });
+    };
+    for (int attempt = 0; attempt < 1000 && (k == glm::vec2(0.0f) || taken(k)); ++attempt) {
       const float r = 1.0f + (static_cast<float>(max_frequency) - 1.0f) * std::sqrt(uni(rng));
       const float theta = glm::two_pi<float>() * uni(rng);
       k = glm::round(glm::vec2(r * std::cos(theta), r * std::sin(theta)));
     }
+    if (k == glm::vec2(0.0f) || taken(k)) break;  // fewer distinct frequencies than waves asked for
     ws.push_back({k, glm::two_pi<float>() * uni(rng)});
     k2_sum += glm::dot(k, k);
   }
-  // height = a * sum cos(2 pi k.x + phase); the slope variance per axis is a^2 (2pi)^2 sum(k_i^2)/2,
-  // so pick a so that it equals slope_sigma^2 / 2 (both axes together: slope_sigma^2).
-  const double a = slope_sigma / (glm::two_pi<double>() * std::sqrt(k2_sum));
+  // height = a * sum cos(2 pi k.x + phase); over a tile the slope variance of both axes together
+  // is a^2 (2 pi)^2 sum(|k|^2) / 2. Make it slope_sigma^2 (Beckmann: alpha^2 = <slope^2>).
+  const double a = slope_sigma * std::sqrt(2.0) / (glm::two_pi<double>() * std::sqrt(k2_sum));
   NormalMap map{resolution, resolution, {}, {}};
   map.normals.resize(static_cast<std::size_t>(resolution) * static_cast<std::size_t>(resolution));
   for (int y = 0; y < resolution; ++y)

@@ -1,0 +1,28 @@
+# glintlab: the two set-up commands (README) and a few conveniences.
+#   make demo   install missing Debian packages, build (Release), compare every method on the default scene
+#   make test   install missing Debian packages, build (Release), run the whole suite through ctest
+.PHONY: all deps build demo test bench clean
+
+BUILD := build/release
+JOBS ?= $(shell nproc)
+
+all: build
+
+deps:
+	@tools/install-deps.sh
+
+build: deps
+	cmake --preset release >/dev/null
+	cmake --build $(BUILD) -j $(JOBS)
+
+demo: build
+	$(BUILD)/glintlab compare --scene builtin:spheres --methods all -o out/demo
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+bench: build
+	$(BUILD)/glintlab_bench
+
+clean:
+	rm -rf build out

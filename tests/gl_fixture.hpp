@@ -1,0 +1,85 @@
+#pragma once
+// Shared GL state for tests: one headless context per test binary, and helpers to render a scene
+// given as TOML text, and to evaluate GLSL functions on the device through a compute shader.
+#include <epoxy/gl.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gl/context.hpp"
+#include "gl/shader_library.hpp"
+#include "render/gpu_scene.hpp"
+#include "render/renderer.hpp"
+#include "scene/scene_loader.hpp"
+#include "shading/registry.hpp"
+
+namespace glintlab::test {
+
+inline GlContext& context() {
+  static std::unique_ptr<GlContext> ctx = GlContext::create_headless();
+  return *ctx;
+}
+
+inline ShaderLibrary& shaders() {
+  context();
+  static ShaderLibrary lib;
+  return lib;
+}
+
+/// A scene on the GPU with its renderer.
+struct SceneFixture {
+  explicit SceneFixture(const std::string& toml) : scene(parse_scene(toml, "test.toml", ".")) {
+    context();
+    gpu = std::make_unique<GpuScene>(scene);
+    renderer = std::make_unique<Renderer>(shaders(), *gpu);
+  }
+  Frame method(const std::string& id) {
+    const auto& m = find_method(id);
+    return renderer->render(m, resolve_params(m, {}), scene.camera, scene.film.width, scene.film.height);
+  }
+  Frame reference(int spp, int light_samples = 0) {
+    ReferenceSettings s;
+    s.spp = spp;
+    s.light_samples = light_samples;
+    return renderer->render_reference(scene.camera, scene.film.width, scene.film.height, s);
+  }
+  Scene scene;
+  std::unique_ptr<GpuScene> gpu;
+  std::unique_ptr<Renderer> renderer;
+};
+
+/// Runs `body` (GLSL defining `vec4 evaluate(vec4 a, vec4 b)`, after `includes`) on every pair
+/// of inputs on the GL device and returns the results.
+inline std::vector<glm::vec4> evaluate_glsl(const std::string& includes, const std::string& body,
+                                            const std::vector<glm::vec4>& a, const std::vector<glm::vec4>& b) {
+  static int counter = 0;
+  const std::string path = "test/harness" + std::to_string(counter++) + ".comp";
+  shaders().add_source(path, "layout(local_size_x = 64) in;\n" + includes + "\n" + body + R"(
+layout(std430, binding = 5) readonly buffer InA { vec4 inA[]; };
+layout(std430, binding = 6) readonly buffer InB { vec4 inB[]; };
+layout(std430, binding = 7) writeonly buffer Out { vec4 outV[]; };
+uniform uint uCount;
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i < uCount) outV[i] = evaluate(inA[i], inB[i]);
+}
+)");
+  const GLuint program = shaders().compute(path);
+  const auto bytes = static_cast<GLsizeiptr>(a.size() * sizeof(glm::vec4));
+  gl::Buffer ba = gl::make_buffer(bytes, a.data()), bb = gl::make_buffer(bytes, b.data());
+  gl::Buffer out = gl::make_buffer(bytes, nullptr, GL_MAP_READ_BIT);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, ba.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, bb.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, out.id());
+  glUseProgram(program);
+  glProgramUniform1ui(program, glGetUniformLocation(program, "uCount"), static_cast<GLuint>(a.size()));
+  glDispatchCompute(static_cast<GLuint>((a.size() + 63) / 64), 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<glm::vec4> result(a.size());
+  glGetNamedBufferSubData(out.id(), 0, bytes, result.data());
+  check_gl("evaluating GLSL");
+  return result;
+}
+
+}  // namespace glintlab::test

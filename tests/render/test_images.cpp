@@ -1,0 +1,188 @@
+// Image tests that fail on a wrong implementation: closed forms, analytic coverage, convergence.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/metrics.hpp"
+#include "gl_fixture.hpp"
+
+using namespace glintlab;
+using namespace glintlab::test;
+
+namespace {
+
+/// Orthographic camera looking straight down at the xz square [-1,1]^2; column -> +x, row -> +z.
+const char* kTopDownCamera = R"(
+[camera]
+type = "orthographic"
+position = [0, 10, 0]
+target = [0, 0, 0]
+up = [0, 0, -1]
+view_height = 2
+near = 1
+far = 20
+)";
+
+glm::dvec2 pixel_centre(int px, int py, int n) { return {-1.0 + (px + 0.5) * 2.0 / n, -1.0 + (py + 0.5) * 2.0 / n}; }
+
+}  // namespace
+
+TEST(Images, LambertPlaneUnderPointLightMatchesTheClosedForm) {
+  SceneFixture f(std::string(kTopDownCamera) + R"(
+[film]
+width = 32
+height = 32
+[[material]]
+name = "white"
+f0 = 0
+diffuse = 0.5
+alpha = 0.5
+[[shape]]
+type = "plane"
+material = "white"
+size = 2
+[[light]]
+type = "point"
+position = [0.3, 1.0, 0.2]
+intensity = 2.0
+)");
+  const Frame img = f.method("conventional");
+  double worst = 0;
+  for (int py = 0; py < 32; ++py)
+    for (int px = 0; px < 32; ++px) {
+      const glm::dvec2 p = pixel_centre(px, py, 32);
+      const glm::dvec3 d = glm::dvec3(0.3, 1.0, 0.2) - glm::dvec3(p.x, 0.0, p.y);
+      const double expected = 0.5 / M_PI * 2.0 * (d.y / glm::length(d)) / glm::dot(d, d);
+      const double diffuse = img.total.at(px, py).g - img.specular.at(px, py).g;
+      worst = std::max(worst, std::abs(diffuse / expected - 1.0));
+    }
+  EXPECT_LT(worst, 0.01);
+}
+
+TEST(Images, GgxPlaneUnderDirectionalLightMatchesTheBrdfAtTheCentrePixel) {
+  SceneFixture f(R"(
+[film]
+width = 33
+height = 33
+[camera]
+position = [0, 2, 2]
+target = [0, 0, 0]
+fov = 30
+[[material]]
+name = "metal"
+alpha = 0.3
+f0 = 0.9
+[[shape]]
+type = "plane"
+material = "metal"
+size = 4
+[[light]]
+type = "directional"
+direction = [0.4, -1.0, 0.9]
+irradiance = 3.0
+)");
+  const Frame img = f.method("conventional");
+  const glm::dvec3 v = glm::normalize(glm::dvec3(0, 2, 2)), l = -glm::normalize(glm::dvec3(0.4, -1.0, 0.9));
+  const glm::dvec3 h = glm::normalize(v + l);
+  const double a = 0.3;
+  const double e = (h.x * h.x + h.z * h.z) / (a * a) + h.y * h.y;
+  const double d = 1.0 / (M_PI * a * a * e * e);
+  auto lambda = [&](glm::dvec3 w) { return 0.5 * (-1.0 + std::sqrt(1.0 + a * a * (1.0 - w.y * w.y) / (w.y * w.y))); };
+  const double g = 1.0 / (1.0 + lambda(v) + lambda(l));
+  const double fr = 0.9 + 0.1 * std::pow(1.0 - glm::dot(v, h), 5.0);
+  const double expected = 3.0 * fr * d * g / (4.0 * v.y);  // f * cos(theta_l) * E
+  EXPECT_NEAR(img.total.at(16, 16).r / expected, 1.0, 0.01) << "expected " << expected;
+}
+
+namespace {
+
+/// Exact area of the disk (centre c, radius r) inside the axis-aligned square [x0,x1] x [z0,z1],
+/// by integrating the clipped chord length along x (smooth integrand, fine midpoint rule).
+double disk_square_area(glm::dvec2 c, double r, double x0, double x1, double z0, double z1) {
+  const int steps = 4000;
+  double area = 0;
+  for (int i = 0; i < steps; ++i) {
+    const double x = x0 + (i + 0.5) * (x1 - x0) / steps, dx = x - c.x;
+    if (std::abs(dx) >= r) continue;
+    const double half = std::sqrt(r * r - dx * dx);
+    area += std::max(0.0, std::min(z1, c.y + half) - std::max(z0, c.y - half));
+  }
+  return area * (x1 - x0) / steps;
+}
+
+}  // namespace
+
+TEST(Images, ReferenceCoverageOfAFlatMirrorUnderADiskLightIsAnalytic) {
+  const int n = 24;
+  SceneFixture f(std::string(kTopDownCamera) + R"(
+[film]
+width = 24
+height = 24
+[[material]]
+name = "mirror"
+alpha = 0
+f0 = 1
+[[shape]]
+type = "plane"
+material = "mirror"
+size = 2
+[[light]]
+type = "disk"
+position = [0.1, 5, -0.05]
+direction = [0, -1, 0]
+radius = 0.53
+radiance = 1
+visible = false
+)");
+  const glm::dvec2 centre(0.1, -0.05);
+  const double r = 0.53, px_size = 2.0 / n;
+  const Frame ref = f.reference(256);
+  const Frame conv = f.method("conventional");
+  double worst = 0, sum_ref = 0, sum_exact = 0;
+  int edge_pixels = 0;
+  for (int py = 0; py < n; ++py)
+    for (int px = 0; px < n; ++px) {
+      const glm::dvec2 p = pixel_centre(px, py, n);
+      const double exact = disk_square_area(centre, r, p.x - px_size / 2, p.x + px_size / 2, p.y - px_size / 2,
+                                            p.y + px_size / 2) / (px_size * px_size);
+      const double got = ref.specular.at(px, py).r;
+      worst = std::max(worst, std::abs(got - exact));
+      sum_ref += got;
+      sum_exact += exact;
+      edge_pixels += exact > 0.0 && exact < 1.0;
+      // The baseline is all or nothing: the pixel centre is inside the disk or not.
+      EXPECT_EQ(conv.specular.at(px, py).r, glm::distance(p, centre) <= r ? 1.0f : 0.0f) << px << "," << py;
+    }
+  EXPECT_GT(edge_pixels, 20);
+  EXPECT_LE(worst, 1.0 / 16.0 + 1e-3);              // at most one row of 16x16 sub-pixels off
+  EXPECT_NEAR(sum_ref / sum_exact, 1.0, 0.005);      // covered area
+}
+
+TEST(Images, ReferenceConvergesWithMoreSamples) {
+  std::string toml = builtin_scene_toml("mirror-disk");
+  toml.replace(toml.find("width = 640"), 11, "width = 80");
+  toml.replace(toml.find("height = 360"), 12, "height = 45");
+  SceneFixture f(toml);
+  const Frame truth = f.reference(1024);
+  const double e1 = rmse(f.reference(1).total, truth.total);
+  const double e16 = rmse(f.reference(16).total, truth.total);
+  const double e256 = rmse(f.reference(256).total, truth.total);
+  EXPECT_LT(e16, e1);
+  EXPECT_LT(e256, e16);
+  EXPECT_EQ(truth.total.count_non_finite(), 0u);
+}
+
+TEST(Images, EveryMethodOnEveryBuiltinSceneIsFinite) {
+  for (const auto& b : builtin_scenes()) {
+    std::string toml = builtin_scene_toml(b.name);
+    toml.replace(toml.find("width = 640"), 11, "width = 96");
+    toml.replace(toml.find("height = 360"), 12, "height = 54");
+    SceneFixture f(toml);
+    for (const auto& m : all_methods()) {
+      const Frame img = f.method(m.id);
+      EXPECT_EQ(img.total.count_non_finite(), 0u) << m.id << " on " << b.name;
+      EXPECT_GT(luminance(glm::vec3(img.total.mean())), 0.0f) << m.id << " on " << b.name;
+    }
+    EXPECT_EQ(f.reference(4).total.count_non_finite(), 0u) << b.name;
+  }
+}

@@ -22,7 +22,7 @@ test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 bench: build
-	$(BUILD)/glintlab_bench
+	$(BUILD)/glintlab bench --scene builtin:spheres --methods all --width 1920 --height 1080
 
 clean:
 	rm -rf build out

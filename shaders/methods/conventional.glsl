@@ -1,6 +1,7 @@
 // Method `conventional`: the BRDF evaluated once at the pixel centre (the baseline to beat).
 // Descriptor: src/shading/methods/conventional.cpp; docs/methods.md#conventional.
 #include "common/brdf.glsl"
+#include "common/delta_lights.glsl"
 #include "common/lights.glsl"
 #include "common/surface.glsl"
 
@@ -43,24 +44,8 @@ Radiance shadeLight(Surface s, LightData L) {
   Radiance result = Radiance(vec3(0.0), vec3(0.0));
   vec3 wo = toLocal(s, s.view);
   if (wo.z <= 0.0) return result;
+  if (!lightHasExtent(L)) return shadeDeltaLight(s, L, wo);
   int type = lightType(L);
-
-  if (!lightHasExtent(L)) {  // point and delta directional: exact
-    vec3 l, irradiance;
-    if (type == LIGHT_POINT) {
-      vec3 d = L.position_radius.xyz - s.position;
-      float d2 = max(dot(d, d), 1e-12);
-      l = d * inversesqrt(d2);
-      irradiance = L.colour_type.rgb / d2;
-    } else {
-      l = -L.direction_cos.xyz;
-      irradiance = L.colour_type.rgb;
-    }
-    vec3 wi = toLocal(s, l);
-    result.specular = specularCos(s.ndf, wo, wi, s.alpha, s.f0) * irradiance;
-    result.diffuse = diffuseCos(s.diffuse, wi) * irradiance;
-    return result;
-  }
 
   // Lights with extent: centre direction, solid angle and the sine of the equivalent cone.
   vec3 centreDir;

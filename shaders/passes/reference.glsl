@@ -3,6 +3,7 @@
 // Veach 1997) with low-discrepancy samples stratified over the pixel's k x k sub-pixels.
 // Never uses the approximations of any method. Included in place of a method module.
 #include "common/brdf.glsl"
+#include "common/delta_lights.glsl"
 #include "common/frame.glsl"
 #include "common/lights.glsl"
 #include "common/sampling.glsl"
@@ -30,22 +31,7 @@ Radiance shadeLight(Surface s, LightData L) {
   vec3 wo = toLocal(s, s.view);
   if (wo.z <= 0.0) return result;
 
-  if (!lightHasExtent(L)) {  // delta lights: the exact BRDF, as any method would
-    vec3 l, irradiance;
-    if (lightType(L) == LIGHT_POINT) {
-      vec3 d = L.position_radius.xyz - s.position;
-      float d2 = max(dot(d, d), 1e-12);
-      l = d * inversesqrt(d2);
-      irradiance = L.colour_type.rgb / d2;
-    } else {
-      l = -L.direction_cos.xyz;
-      irradiance = L.colour_type.rgb;
-    }
-    vec3 wi = toLocal(s, l);
-    result.specular = specularCos(s.ndf, wo, wi, s.alpha, s.f0) * irradiance;
-    result.diffuse = diffuseCos(s.diffuse, wi) * irradiance;
-    return result;
-  }
+  if (!lightHasExtent(L)) return shadeDeltaLight(s, L, wo);
 
   int k = uTarget.z;
   ivec2 global = uTile.xy + ivec2(gl_FragCoord.xy);

@@ -64,6 +64,8 @@ Session::Session(const CommonOptions& options)
   reference_.spp = options.spp;
   reference_.light_samples = options.light_samples;
   context_ = GlContext::create_headless();
+  shaders_hash_ = shaders_.sources_hash();
+  device_ = context_->info().renderer;
   gpu_scene_ = std::make_unique<GpuScene>(scene_);
   renderer_ = std::make_unique<Renderer>(shaders_, *gpu_scene_);
 }
@@ -78,8 +80,7 @@ Frame Session::reference(int frame) {
   ReferenceSettings settings = reference_;
   settings.seed = frame;
   const Camera cam = camera(frame);
-  const auto key = ReferenceCache::key(scene_, cam, width_, height_, settings, shaders_.sources_hash(),
-                                       context_->info().renderer);
+  const auto key = ReferenceCache::key(scene_, cam, width_, height_, settings, shaders_hash_, device_);
   if (auto cached = cache_.load(key)) return *cached;
   ProgressBar bar("reference " + std::to_string(settings.spp) + " spp, frame " + std::to_string(frame), !options_.quiet);
   Frame f = renderer_->render_reference(cam, width_, height_, settings, [&](int d, int t) { bar.update(d, t); });

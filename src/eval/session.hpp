@@ -69,6 +69,8 @@ class Session {
   ReferenceCache cache_;
   ReferenceSettings reference_;
   int width_ = 0, height_ = 0, frames_ = 1;
+  std::uint64_t shaders_hash_ = 0;  ///< part of every reference cache key
+  std::string device_;
 };
 
 /// Throws RuntimeFailure naming `what` and the number of pixels with NaN or Inf.

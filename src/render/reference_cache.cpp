@@ -24,14 +24,7 @@ std::uint64_t ReferenceCache::key(const Scene& scene, const Camera& camera, int 
   Hasher h;
   h.text("glintlab-reference-v1");
   h.value(scene.content_hash());
-  h.value(camera.projection);
-  h.value(camera.position);
-  h.value(camera.target);
-  h.value(camera.up);
-  h.value(camera.fov_y_degrees);
-  h.value(camera.view_height);
-  h.value(camera.near_plane);
-  h.value(camera.far_plane);
+  hash_camera(h, camera);
   h.value(width);
   h.value(height);
   h.value(settings.spp);

@@ -83,11 +83,16 @@ void Renderer::draw_scene(GLuint program, const FrameUniforms& frame) {
   check_gl("drawing the scene");
 }
 
-namespace {
-glm::vec4 camera_position(const Camera& c) {
-  return {c.position, c.projection == Projection::Perspective ? 1.0f : 0.0f};
+Renderer::FrameUniforms Renderer::frame_uniforms(const Camera& camera, const glm::mat4& projection, glm::ivec4 target,
+                                                 glm::ivec4 tile) const {
+  FrameUniforms f{};
+  f.view_proj = projection * camera.view_matrix();
+  f.camera_pos = {camera.position, camera.projection == Projection::Perspective ? 1.0f : 0.0f};
+  f.camera_forward = glm::vec4(glm::normalize(camera.target - camera.position), 0.0f);
+  f.target = target;
+  f.tile = tile;
+  return f;
 }
-}  // namespace
 
 void Renderer::draw(const MethodDescriptor& method, const ParamValues& params, const Camera& camera, int width, int height) {
   const GLuint program = method_program(method);
@@ -97,13 +102,8 @@ void Renderer::draw(const MethodDescriptor& method, const ParamValues& params, c
   }
   RenderTarget& rt = target(width, height);
   rt.bind_and_clear();
-  FrameUniforms frame{};
-  frame.view_proj = camera.projection_matrix(static_cast<float>(width) / static_cast<float>(height)) * camera.view_matrix();
-  frame.camera_pos = camera_position(camera);
-  frame.camera_forward = glm::vec4(glm::normalize(camera.target - camera.position), 0.0f);
-  frame.target = {width, height, 1, scene_.light_count()};
-  frame.tile = {0, 0, 1, 0};
-  draw_scene(program, frame);
+  draw_scene(program, frame_uniforms(camera, camera.projection_matrix(static_cast<float>(width) / static_cast<float>(height)),
+                                      {width, height, 1, scene_.light_count()}, {0, 0, 1, 0}));
 }
 
 Frame Renderer::render(const MethodDescriptor& method, const ParamValues& params, const Camera& camera, int width, int height) {
@@ -135,13 +135,9 @@ Frame Renderer::render_reference(const Camera& camera, int width, int height, co
       const glm::ivec2 size(std::min(tile, width - origin.x), std::min(tile, height - origin.y));
       const int gl_y = height - origin.y - size.y;  // the same tile in GL's y-up pixel rows
       high.bind_and_clear(size.x * k, size.y * k);
-      FrameUniforms frame{};
-      frame.view_proj = camera.tile_projection_matrix(film, origin, size) * camera.view_matrix();
-      frame.camera_pos = camera_position(camera);
-      frame.camera_forward = glm::vec4(glm::normalize(camera.target - camera.position), 0.0f);
-      frame.target = {size.x * k, size.y * k, k, scene_.light_count()};
-      frame.tile = {origin.x * k, gl_y * k, settings.effective_light_samples(), settings.seed};
-      draw_scene(program, frame);
+      draw_scene(program, frame_uniforms(camera, camera.tile_projection_matrix(film, origin, size),
+                                         {size.x * k, size.y * k, k, scene_.light_count()},
+                                         {origin.x * k, gl_y * k, settings.effective_light_samples(), settings.seed}));
 
       glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
       glUseProgram(downsample);

@@ -47,6 +47,8 @@ class Renderer {
 
  private:
   struct FrameUniforms;
+  FrameUniforms frame_uniforms(const Camera& camera, const glm::mat4& projection, glm::ivec4 target,
+                               glm::ivec4 tile) const;
   void draw_scene(GLuint program, const FrameUniforms& frame);
   GLuint method_program(const MethodDescriptor& method);
   RenderTarget& target(int width, int height);

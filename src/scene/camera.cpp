@@ -5,6 +5,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtx/rotate_vector.hpp>
 
+#include "core/hash.hpp"
+
 namespace glintlab {
 
 glm::mat4 Camera::view_matrix() const { return glm::lookAt(position, target, up); }
@@ -31,6 +33,17 @@ glm::mat4 Camera::tile_projection_matrix(glm::ivec2 film, glm::ivec2 origin, glm
   remap[3][0] = -(x1 + x0) / (x1 - x0);
   remap[3][1] = -(y1 + y0) / (y1 - y0);
   return remap * full;
+}
+
+void hash_camera(Hasher& h, const Camera& c) {
+  h.value(c.projection);
+  h.value(c.position);
+  h.value(c.target);
+  h.value(c.up);
+  h.value(c.fov_y_degrees);
+  h.value(c.view_height);
+  h.value(c.near_plane);
+  h.value(c.far_plane);
 }
 
 Camera CameraPath::at(const Camera& base, int frame) const {

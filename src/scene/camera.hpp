@@ -27,6 +27,10 @@ struct Camera {
   [[nodiscard]] glm::mat4 tile_projection_matrix(glm::ivec2 film, glm::ivec2 origin, glm::ivec2 size) const;
 };
 
+class Hasher;
+/// Feeds every field that affects an image into a hash.
+void hash_camera(Hasher& h, const Camera& c);
+
 struct CameraKey {
   glm::vec3 position;
   glm::vec3 target;

@@ -10,15 +10,7 @@ std::uint64_t Scene::content_hash() const {
   Hasher h;
   h.value(film.width);
   h.value(film.height);
-  const Camera& c = camera;
-  h.value(c.projection);
-  h.value(c.position);
-  h.value(c.target);
-  h.value(c.up);
-  h.value(c.fov_y_degrees);
-  h.value(c.view_height);
-  h.value(c.near_plane);
-  h.value(c.far_plane);
+  hash_camera(h, camera);
   for (const auto& m : materials) {
     h.value(m.ndf);
     h.value(m.alpha);

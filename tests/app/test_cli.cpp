@@ -8,6 +8,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "test_scenes.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -23,7 +25,7 @@ fs::path scratch() {
   return dir;
 }
 
-CliResult glintlab(const std::string& args) {
+CliResult run_glintlab(const std::string& args) {
   const fs::path err = scratch() / "stderr.txt";
   const std::string cmd = std::string("GLINTLAB_CACHE_DIR='") + (scratch() / "cache").string() + "' '" GLINTLAB_BINARY "' " +
                           args + " >/dev/null 2>'" + err.string() + "'";
@@ -40,23 +42,12 @@ fs::path write(const std::string& name, const std::string& text) {
   return p;
 }
 
-const std::string kScene = R"([film]
-width = 16
-height = 16
-[[material]]
-name = "m"
-[[shape]]
-type = "sphere"
-material = "m"
-[[light]]
-type = "point"
-position = [0, 2, 3]
-)";
+const std::string kScene = "[film]\nwidth = 16\nheight = 16\n" + glintlab::test::kMinimalScene;
 
 void expect_bad_input(const std::string& args, std::initializer_list<const char*> fragments) {
   const fs::path out = scratch() / "out-should-not-exist";
   fs::remove_all(out);
-  const CliResult r = glintlab(args + " -o '" + out.string() + "'");
+  const CliResult r = run_glintlab(args + " -o '" + out.string() + "'");
   EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
   for (const char* f : fragments) EXPECT_NE(r.err.find(f), std::string::npos) << "'" << f << "' not in: " << r.err;
   EXPECT_FALSE(fs::exists(out)) << args;
@@ -76,7 +67,7 @@ TEST(Cli, BadInputClassesExitWith2AndWriteNothing) {
   expect_bad_input("render --scene '" + missing + "'", {"missing.toml", "does not exist"});
   expect_bad_input("render --scene '" + write("malformed.toml", "[film\n").string() + "'", {"malformed.toml:1", "malformed"});
   expect_bad_input("render --scene '" + write("unknown.toml", kScene + "[camera]\nfoo = 1\n").string() + "'", {"'foo'", "not a known key"});
-  expect_bad_input("render --scene '" + write("type.toml", "[film]\nwidth = 1.5\n" + kScene.substr(30)).string() + "'", {"width", "not an integer"});
+  expect_bad_input("render --scene '" + write("type.toml", "[film]\nwidth = 1.5\n" + glintlab::test::kMinimalScene).string() + "'", {"width", "not an integer"});
   expect_bad_input("render --scene '" + write("range.toml", kScene + "[[light]]\ntype = \"sphere\"\nposition = [0,0,0]\nradius = -1\n").string() + "'",
                    {"radius", "out of range"});
   expect_bad_input("render --scene '" + write("mesh.toml", kScene + "[[shape]]\ntype = \"mesh\"\nmaterial = \"m\"\nfile = \"nope.obj\"\n").string() + "'",
@@ -93,17 +84,17 @@ TEST(Cli, BadInputClassesExitWith2AndWriteNothing) {
 }
 
 TEST(Cli, ListingsWork) {
-  EXPECT_EQ(glintlab("methods").code, 0);
-  EXPECT_EQ(glintlab("scenes").code, 0);
-  EXPECT_EQ(glintlab("scenes --print spheres").code, 0);
-  EXPECT_EQ(glintlab("info").code, 0);
+  EXPECT_EQ(run_glintlab("methods").code, 0);
+  EXPECT_EQ(run_glintlab("scenes").code, 0);
+  EXPECT_EQ(run_glintlab("scenes --print spheres").code, 0);
+  EXPECT_EQ(run_glintlab("info").code, 0);
 }
 
 TEST(Cli, SameCommandWritesIdenticalFiles) {
   const fs::path scene = write("det.toml", kScene);
   const fs::path a = scratch() / "det-a", b = scratch() / "det-b";
   for (const auto& out : {a, b}) {
-    const CliResult r = glintlab("compare --no-cache -q --spp 4 --scene '" + scene.string() + "' -o '" + out.string() + "'");
+    const CliResult r = run_glintlab("compare --no-cache -q --spp 4 --scene '" + scene.string() + "' -o '" + out.string() + "'");
     ASSERT_EQ(r.code, 0) << r.err;
   }
   for (const char* f : {"conventional.exr", "conventional.png", "reference.exr", "metrics.csv", "metrics.json"}) {
@@ -115,10 +106,10 @@ TEST(Cli, SameCommandWritesIdenticalFiles) {
 TEST(Cli, ReferenceCacheIsReused) {
   const fs::path scene = write("cache.toml", kScene);
   fs::remove_all(scratch() / "cache");
-  ASSERT_EQ(glintlab("render -q --reference=16 --scene '" + scene.string() + "' -o '" + (scratch() / "c1").string() + "'").code, 0);
+  ASSERT_EQ(run_glintlab("render -q --reference=16 --scene '" + scene.string() + "' -o '" + (scratch() / "c1").string() + "'").code, 0);
   int entries = 0;
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(scratch() / "cache")) ++entries;
   EXPECT_EQ(entries, 1);
-  ASSERT_EQ(glintlab("render -q --reference=16 --scene '" + scene.string() + "' -o '" + (scratch() / "c2").string() + "'").code, 0);
+  ASSERT_EQ(run_glintlab("render -q --reference=16 --scene '" + scene.string() + "' -o '" + (scratch() / "c2").string() + "'").code, 0);
   EXPECT_EQ(read_bytes(scratch() / "c1" / "reference.exr"), read_bytes(scratch() / "c2" / "reference.exr"));
 }

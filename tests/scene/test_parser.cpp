@@ -7,21 +7,13 @@
 
 #include "core/error.hpp"
 #include "scene/scene_loader.hpp"
+#include "test_scenes.hpp"
 
 using namespace glintlab;
 
 namespace {
 
-const char* kMinimal = R"(
-[[material]]
-name = "m"
-[[shape]]
-type = "sphere"
-material = "m"
-[[light]]
-type = "point"
-position = [0, 2, 0]
-)";
+const std::string& kMinimal = test::kMinimalScene;
 
 std::string error_of(const std::string& text) {
   try {
@@ -64,22 +56,22 @@ TEST(SceneParser, EveryBuiltinSceneParsesAndHasACameraPath) {
 TEST(SceneParser, MalformedTomlNamesTheLine) { expect_error("[film\nwidth = 3", {"bad.toml:1", "malformed TOML"}); }
 
 TEST(SceneParser, UnknownKeyIsRejected) {
-  expect_error(std::string(kMinimal) + "[film]\nwidht = 100\n", {"widht", "not a known key", "width"});
+  expect_error(kMinimal + "[film]\nwidht = 100\n", {"widht", "not a known key", "width"});
 }
 
 TEST(SceneParser, WrongTypeIsRejected) {
-  expect_error(std::string(kMinimal) + "[film]\nwidth = \"big\"\n", {"width", "\"big\"", "not an integer"});
+  expect_error(kMinimal + "[film]\nwidth = \"big\"\n", {"width", "\"big\"", "not an integer"});
 }
 
 TEST(SceneParser, OutOfRangeValueIsRejected) {
-  expect_error(std::string(kMinimal) + "[film]\nwidth = 0\n", {"width", "out of range", "1 .. 16384"});
+  expect_error(kMinimal + "[film]\nwidth = 0\n", {"width", "out of range", "1 .. 16384"});
   std::string alpha = kMinimal;
   alpha.replace(alpha.find("name = \"m\""), 10, "name = \"m\"\nalpha = 1.5");
   expect_error(alpha, {"alpha", "1.5", "0 .. 1"});
 }
 
 TEST(SceneParser, AbsurdFilmSizeIsRejected) {
-  expect_error(std::string(kMinimal) + "[film]\nwidth = 16000\nheight = 16000\n", {"64 Mpixels"});
+  expect_error(kMinimal + "[film]\nwidth = 16000\nheight = 16000\n", {"64 Mpixels"});
 }
 
 TEST(SceneParser, UnknownEnumValueListsTheAllowedOnes) {

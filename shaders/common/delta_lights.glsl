@@ -1,0 +1,20 @@
+// Point and delta directional lights: exact for every method and for the reference, since a
+// delta light has nothing to filter at the light's end.
+#include "common/brdf.glsl"
+#include "common/lights.glsl"
+#include "common/surface.glsl"
+
+Radiance shadeDeltaLight(Surface s, LightData L, vec3 wo) {
+  vec3 l, irradiance;
+  if (lightType(L) == LIGHT_POINT) {
+    vec3 d = L.position_radius.xyz - s.position;
+    float d2 = max(dot(d, d), 1e-12);
+    l = d * inversesqrt(d2);
+    irradiance = L.colour_type.rgb / d2;
+  } else {
+    l = -L.direction_cos.xyz;
+    irradiance = L.colour_type.rgb;
+  }
+  vec3 wi = toLocal(s, l);
+  return Radiance(diffuseCos(s.diffuse, wi) * irradiance, specularCos(s.ndf, wo, wi, s.alpha, s.f0) * irradiance);
+}

@@ -1,4 +1,5 @@
-// Per-frame data, the same for every draw (std140, binding 0; see src/render/frame_data.hpp).
+// Per-frame data, the same for every draw (std140, binding 0; Renderer::FrameUniforms in
+// src/render/renderer.cpp).
 layout(std140, binding = 0) uniform FrameBlock {
   mat4 uViewProj;
   vec4 uCameraPos;     // xyz: camera position (world); w: 1 perspective, 0 orthographic

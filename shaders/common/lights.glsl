@@ -2,36 +2,37 @@
 // sampling and densities. Approximations of a light belong to the methods, not here.
 #include "common/constants.glsl"
 
+// Light kinds as macros so that passes can specialise on them with #if (see
+// shaders/common/light_loop.glsl). Order and values mirror GpuLightKind in src/render/gpu_scene.hpp.
+#define LIGHT_POINT 0
+#define LIGHT_DIRECTIONAL 1  // delta directional
+#define LIGHT_DISK 2
+#define LIGHT_SPHERE 3
+#define LIGHT_QUAD 4
+#define LIGHT_SUN 5          // directional with an angular radius: a distant disk
+#define LIGHT_KIND_COUNT 6
+
 struct LightData {
-  vec4 colour_type;      // rgb: intensity (point), irradiance (directional) or radiance; a: type
+  vec4 colour_type;      // rgb: intensity (point), irradiance (directional, sun) or radiance; a: kind
   vec4 position_radius;  // xyz: centre; w: radius (disk, sphere)
-  vec4 direction_cos;    // xyz: travel direction (directional) or emitting normal (disk, quad);
-                         // w: cos(angular radius) of a directional light (1 = delta)
+  vec4 direction_cos;    // xyz: travel direction (directional, sun) or emitting normal (disk, quad);
+                         // w: cos(angular radius) of a sun
   vec4 axisU;            // quad: half edge vectors
   vec4 axisV;
 };
 layout(std430, binding = 1) readonly buffer LightBlock { LightData lights[]; };
 
-const int LIGHT_POINT = 0;
-const int LIGHT_DIRECTIONAL = 1;
-const int LIGHT_DISK = 2;
-const int LIGHT_SPHERE = 3;
-const int LIGHT_QUAD = 4;
 const float FAR_AWAY = 1e30;
 
 int lightType(LightData L) { return int(L.colour_type.a); }
 
-// Lights with extent: a delta-free integral over solid angle (area lights, directional with
-// an angular radius).
-bool lightHasExtent(LightData L) {
-  int t = lightType(L);
-  return t >= LIGHT_DISK || (t == LIGHT_DIRECTIONAL && L.direction_cos.w < 1.0);
-}
+// Lights with extent: a delta-free integral over solid angle (area lights and suns).
+bool lightHasExtent(LightData L) { return lightType(L) >= LIGHT_DISK; }
 
-// Radiance of lights with extent. A directional light of angular radius theta with irradiance E
-// at normal incidence has radiance E / (pi sin^2 theta).
+// Radiance of lights with extent. A sun of angular radius theta with irradiance E at normal
+// incidence has radiance E / (pi sin^2 theta).
 vec3 lightRadiance(LightData L) {
-  if (lightType(L) == LIGHT_DIRECTIONAL) {
+  if (lightType(L) == LIGHT_SUN) {
     float sin2 = max(1.0 - L.direction_cos.w * L.direction_cos.w, 1e-12);
     return L.colour_type.rgb / (PI * sin2);
   }
@@ -50,7 +51,8 @@ float lightArea(LightData L) {
 bool lightHit(LightData L, vec3 origin, vec3 dir, out float dist) {
   int t = lightType(L);
   dist = FAR_AWAY;
-  if (t == LIGHT_DIRECTIONAL) return L.direction_cos.w < 1.0 && dot(dir, -L.direction_cos.xyz) >= L.direction_cos.w;
+  if (t == LIGHT_SUN) return dot(dir, -L.direction_cos.xyz) >= L.direction_cos.w;
+  if (t == LIGHT_POINT || t == LIGHT_DIRECTIONAL) return false;
   vec3 c = L.position_radius.xyz;
   if (t == LIGHT_SPHERE) {
     float r = L.position_radius.w;
@@ -107,7 +109,7 @@ float sphereConeCos(LightData L, vec3 p) {
 // Solid-angle density with which sampleLightDirection picks `dir` (which hits at `dist`).
 float lightPdf(LightData L, vec3 p, vec3 dir, float dist) {
   int t = lightType(L);
-  if (t == LIGHT_DIRECTIONAL) return 1.0 / (TWO_PI * (1.0 - L.direction_cos.w));
+  if (t == LIGHT_SUN) return 1.0 / (TWO_PI * (1.0 - L.direction_cos.w));
   if (t == LIGHT_SPHERE) return 1.0 / (TWO_PI * max(1.0 - sphereConeCos(L, p), 1e-9));
   float cosL = abs(dot(dir, L.direction_cos.xyz));
   return dist * dist / max(lightArea(L) * cosL, 1e-20);
@@ -117,7 +119,7 @@ float lightPdf(LightData L, vec3 p, vec3 dir, float dist) {
 bool sampleLightDirection(LightData L, vec3 p, vec2 u, out vec3 dir, out float dist, out float pdf) {
   int t = lightType(L);
   dist = FAR_AWAY;
-  if (t == LIGHT_DIRECTIONAL) {
+  if (t == LIGHT_SUN) {
     dir = sampleCone(-L.direction_cos.xyz, L.direction_cos.w, u);
     pdf = lightPdf(L, p, dir, dist);
     return true;

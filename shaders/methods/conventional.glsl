@@ -50,7 +50,7 @@ Radiance shadeLight(Surface s, LightData L) {
   // Lights with extent: centre direction, solid angle and the sine of the equivalent cone.
   vec3 centreDir;
   float solidAngle;
-  if (type == LIGHT_DIRECTIONAL) {
+  if (type == LIGHT_SUN) {
     centreDir = -L.direction_cos.xyz;
     solidAngle = PI * (1.0 - L.direction_cos.w * L.direction_cos.w);  // projected-disk solid angle
   } else {
@@ -84,7 +84,7 @@ Radiance shadeLight(Surface s, LightData L) {
   // Rough: representative point (Karis 2013) with the lobe widened by the light's half-angle
   // and renormalised by (alpha / alpha')^2 so the peak does not gain energy.
   vec3 l;
-  if (type == LIGHT_DIRECTIONAL || type == LIGHT_SPHERE) {
+  if (type == LIGHT_SUN || type == LIGHT_SPHERE) {
     l = closestInCone(r, centreDir, cosHalf, sinHalf);
   } else {
     l = normalize(closestOnPlanarLight(L, s.position, r) - s.position);

@@ -1,11 +1,14 @@
 // Forward shading: builds the surface record once per fragment (derivatives in uniform control
 // flow), then sums the method's (or the reference's) radiance over every light. The module is
 // chosen by the renderer through the $METHOD include; this pass never names a method.
+// Variant defines (src/render/renderer.cpp): LIGHT_KINDS (common/light_loop.glsl) and
+// MATERIAL_NORMAL_MAP (1 when the material has a normal map).
 #include "common/frame.glsl"
 #include "common/material.glsl"
 #include "common/lights.glsl"
 #include "common/surface.glsl"
 #include "$METHOD"
+#include "common/light_loop.glsl"
 
 layout(binding = 0) uniform sampler2D uNormalMap;
 uniform int uMaterial;
@@ -25,7 +28,11 @@ void main() {
   vec3 dPdx = dFdxFine(vPosition), dPdy = dFdyFine(vPosition);
   vec3 dNdx = dFdxFine(vNormal), dNdy = dFdyFine(vNormal);
   vec2 dUVdx = dFdxFine(uv), dUVdy = dFdyFine(uv);
-  vec3 mapped = m.alpha_flags.z > 0.5 ? textureGrad(uNormalMap, uv, dUVdx, dUVdy).xyz : vec3(0.0, 0.0, 1.0);
+#if MATERIAL_NORMAL_MAP
+  vec3 mapped = textureGrad(uNormalMap, uv, dUVdx, dUVdy).xyz;
+#else
+  vec3 mapped = vec3(0.0, 0.0, 1.0);
+#endif
 
   Surface s;
   s.position = vPosition;
@@ -55,14 +62,9 @@ void main() {
   s.alpha = m.alpha_flags.xy;
   s.f0 = m.f0_ndf.rgb;
   s.diffuse = m.diffuse_tiling.rgb;
-  s.hasNormalMap = m.alpha_flags.z > 0.5;
+  s.hasNormalMap = MATERIAL_NORMAL_MAP != 0;
 
-  Radiance sum = Radiance(vec3(0.0), vec3(0.0));
-  for (int i = 0; i < uTarget.w; ++i) {
-    Radiance r = shadeLight(s, lights[i]);
-    sum.diffuse += r.diffuse;
-    sum.specular += r.specular;
-  }
+  Radiance sum = shadeAllLights(s);
   outTotal = vec4(sum.diffuse + sum.specular, 1.0);
   outSpecular = vec4(sum.specular, 1.0);
 }

@@ -7,6 +7,18 @@
 
 namespace glintlab {
 
+GpuLightKind gpu_light_kind(const Light& light) {
+  switch (light.type) {
+    case LightType::Point: return GpuLightKind::Point;
+    case LightType::Directional:
+      return light.angular_radius_degrees > 0.0f ? GpuLightKind::Sun : GpuLightKind::Directional;
+    case LightType::Disk: return GpuLightKind::Disk;
+    case LightType::Sphere: return GpuLightKind::Sphere;
+    case LightType::Quad: return GpuLightKind::Quad;
+  }
+  return GpuLightKind::Point;
+}
+
 namespace {
 
 struct Vertex {
@@ -58,6 +70,20 @@ GpuMesh upload(const Mesh& mesh, const glm::mat4& transform, int material) {
   return g;
 }
 
+LightGpu to_gpu(const Light& l) {
+  LightGpu g{};
+  g.colour_type = glm::vec4(l.colour, static_cast<float>(gpu_light_kind(l)));
+  g.position_radius = glm::vec4(l.position, l.radius);
+  g.direction_cos = glm::vec4(l.direction, std::cos(glm::radians(l.angular_radius_degrees)));
+  if (l.type == LightType::Quad) {
+    const glm::vec3 u = glm::normalize(glm::cross(l.up, l.direction));
+    const glm::vec3 v = glm::cross(l.direction, u);
+    g.axis_u = glm::vec4(0.5f * l.size.x * u, 0.0f);
+    g.axis_v = glm::vec4(0.5f * l.size.y * v, 0.0f);
+  }
+  return g;
+}
+
 /// Rotation taking +y to `n` (the generators build disks and planes facing +y).
 glm::mat4 orient_y_to(glm::vec3 n, glm::vec3 up_hint) {
   glm::vec3 x = glm::cross(up_hint, n);
@@ -101,19 +127,15 @@ GpuScene::GpuScene(const Scene& scene) {
   }
   materials_ = gl::make_buffer(static_cast<GLsizeiptr>(materials.size() * sizeof(MaterialGpu)), materials.data());
 
+  // Sorted by kind, in the scene's order within a kind (shaders/common/light_loop.glsl).
   std::vector<LightGpu> lights;
+  for (int kind = 0; kind < kLightKindCount; ++kind) {
+    const int begin = static_cast<int>(lights.size());
+    for (const auto& l : scene.lights)
+      if (static_cast<int>(gpu_light_kind(l)) == kind) lights.push_back(to_gpu(l));
+    light_ranges_[static_cast<std::size_t>(kind)] = glm::ivec2(begin, static_cast<int>(lights.size()));
+  }
   for (const auto& l : scene.lights) {
-    LightGpu g{};
-    g.colour_type = glm::vec4(l.colour, static_cast<float>(l.type));
-    g.position_radius = glm::vec4(l.position, l.radius);
-    g.direction_cos = glm::vec4(l.direction, std::cos(glm::radians(l.angular_radius_degrees)));
-    if (l.type == LightType::Quad) {
-      const glm::vec3 u = glm::normalize(glm::cross(l.up, l.direction));
-      const glm::vec3 v = glm::cross(l.direction, u);
-      g.axis_u = glm::vec4(0.5f * l.size.x * u, 0.0f);
-      g.axis_v = glm::vec4(0.5f * l.size.y * v, 0.0f);
-    }
-    lights.push_back(g);
     if (!l.is_area() || !l.visible) continue;
     GpuEmitter e;
     e.radiance = l.colour;

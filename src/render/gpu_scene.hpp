@@ -2,13 +2,24 @@
 // The scene on the GPU: one vertex array per shape, material and light buffers, normal-map
 // textures (mipmapped, unnormalised averages kept for methods that need the normals' spread),
 // and the meshes of visible area lights.
+#include <array>
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <vector>
 
 #include "gl/objects.hpp"
 #include "scene/scene.hpp"
 
 namespace glintlab {
+
+/// Light kinds on the GPU (shaders/common/lights.glsl): the scene's light types, with directional
+/// lights split into delta lights and suns (angular radius > 0), which shade by different code.
+enum class GpuLightKind : int { Point = 0, Directional = 1, Disk = 2, Sphere = 3, Quad = 4, Sun = 5 };
+inline constexpr int kLightKindCount = 6;
+/// Index range [x, y) of each kind in the kind-sorted light buffer.
+using LightRanges = std::array<glm::ivec2, kLightKindCount>;
+
+GpuLightKind gpu_light_kind(const Light& light);
 
 struct GpuMesh {
   gl::VertexArray vao;
@@ -34,6 +45,8 @@ class GpuScene {
   /// Normal-map texture of a material, 0 if it has none.
   [[nodiscard]] GLuint normal_map(int material) const { return normal_maps_[static_cast<std::size_t>(material)].id(); }
   [[nodiscard]] int light_count() const { return light_count_; }
+  /// The light buffer is sorted by kind; [x, y) is the index range of each kind.
+  [[nodiscard]] const LightRanges& light_ranges() const { return light_ranges_; }
   /// Binds the material (binding 2) and light (binding 1) buffers.
   void bind_buffers() const;
 
@@ -44,6 +57,7 @@ class GpuScene {
   gl::Buffer materials_;
   gl::Buffer lights_;
   int light_count_ = 0;
+  LightRanges light_ranges_{};
 };
 
 }  // namespace glintlab

@@ -41,11 +41,19 @@ RenderTarget& Renderer::target(int width, int height) {
   return *target_;
 }
 
-GLuint Renderer::method_program(const MethodDescriptor& method) {
-  return shaders_.graphics("passes/forward.vert", "passes/forward.frag", {{"$METHOD", method.module_path()}});
+ShaderDefines forward_variant(const std::string& module, const LightRanges& light_ranges, bool normal_map) {
+  std::string ranges = "ivec2[](";
+  for (std::size_t k = 0; k < light_ranges.size(); ++k)
+    ranges += (k ? ", ivec2(" : "ivec2(") + std::to_string(light_ranges[k].x) + ", " + std::to_string(light_ranges[k].y) + ")";
+  return {{"$METHOD", module}, {"LIGHT_RANGES", ranges + ")"}, {"MATERIAL_NORMAL_MAP", normal_map ? "1" : "0"}};
 }
 
-void Renderer::draw_scene(GLuint program, const FrameUniforms& frame) {
+GLuint Renderer::forward_program(const std::string& module, int material) {
+  return shaders_.graphics("passes/forward.vert", "passes/forward.frag",
+                           forward_variant(module, scene_.light_ranges(), scene_.normal_map(material) != 0));
+}
+
+void Renderer::draw_scene(const std::string& module, const ParamValues& params, const FrameUniforms& frame) {
   glNamedBufferSubData(frame_ubo_.id(), 0, sizeof(FrameUniforms), &frame);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, frame_ubo_.id());
   scene_.bind_buffers();
@@ -54,15 +62,21 @@ void Renderer::draw_scene(GLuint program, const FrameUniforms& frame) {
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
 
-  glUseProgram(program);
-  const GLint model_loc = glGetUniformLocation(program, "uModel");
-  const GLint normal_loc = glGetUniformLocation(program, "uNormalMatrix");
-  const GLint material_loc = glGetUniformLocation(program, "uMaterial");
+  GLuint program = 0;
   for (const auto& mesh : scene_.meshes()) {
+    const GLuint variant = forward_program(module, mesh.material);
+    if (variant != program) {
+      program = variant;
+      glUseProgram(program);
+      for (const auto& [name, value] : params) {
+        const GLint loc = glGetUniformLocation(program, ("param_" + name).c_str());
+        if (loc >= 0) glProgramUniform1f(program, loc, value);
+      }
+    }
     const glm::mat3 normal_matrix = glm::inverseTranspose(glm::mat3(mesh.transform));
-    glProgramUniformMatrix4fv(program, model_loc, 1, GL_FALSE, &mesh.transform[0][0]);
-    glProgramUniformMatrix3fv(program, normal_loc, 1, GL_FALSE, &normal_matrix[0][0]);
-    glProgramUniform1i(program, material_loc, mesh.material);
+    glProgramUniformMatrix4fv(program, glGetUniformLocation(program, "uModel"), 1, GL_FALSE, &mesh.transform[0][0]);
+    glProgramUniformMatrix3fv(program, glGetUniformLocation(program, "uNormalMatrix"), 1, GL_FALSE, &normal_matrix[0][0]);
+    glProgramUniform1i(program, glGetUniformLocation(program, "uMaterial"), mesh.material);
     glBindTextureUnit(0, scene_.normal_map(mesh.material));
     glBindVertexArray(mesh.vao.id());
     glDrawElements(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr);
@@ -95,15 +109,11 @@ Renderer::FrameUniforms Renderer::frame_uniforms(const Camera& camera, const glm
 }
 
 void Renderer::draw(const MethodDescriptor& method, const ParamValues& params, const Camera& camera, int width, int height) {
-  const GLuint program = method_program(method);
-  for (const auto& [name, value] : params) {
-    const GLint loc = glGetUniformLocation(program, ("param_" + name).c_str());
-    if (loc >= 0) glProgramUniform1f(program, loc, value);
-  }
   RenderTarget& rt = target(width, height);
   rt.bind_and_clear();
-  draw_scene(program, frame_uniforms(camera, camera.projection_matrix(static_cast<float>(width) / static_cast<float>(height)),
-                                      {width, height, 1, scene_.light_count()}, {0, 0, 1, 0}));
+  draw_scene(method.module_path(), params,
+             frame_uniforms(camera, camera.projection_matrix(static_cast<float>(width) / static_cast<float>(height)),
+                            {width, height, 1, scene_.light_count()}, {0, 0, 1, 0}));
 }
 
 Frame Renderer::render(const MethodDescriptor& method, const ParamValues& params, const Camera& camera, int width, int height) {
@@ -124,7 +134,6 @@ Frame Renderer::render_reference(const Camera& camera, int width, int height, co
   glTextureStorage2D(out_total.id(), 1, GL_RGBA32F, width, height);
   glTextureStorage2D(out_specular.id(), 1, GL_RGBA32F, width, height);
 
-  const GLuint program = shaders_.graphics("passes/forward.vert", "passes/forward.frag", {{"$METHOD", "passes/reference.glsl"}});
   const GLuint downsample = shaders_.compute("passes/downsample.comp");
   const glm::ivec2 film(width, height);
   int done = 0;
@@ -135,7 +144,7 @@ Frame Renderer::render_reference(const Camera& camera, int width, int height, co
       const glm::ivec2 size(std::min(tile, width - origin.x), std::min(tile, height - origin.y));
       const int gl_y = height - origin.y - size.y;  // the same tile in GL's y-up pixel rows
       high.bind_and_clear(size.x * k, size.y * k);
-      draw_scene(program, frame_uniforms(camera, camera.tile_projection_matrix(film, origin, size),
+      draw_scene("passes/reference.glsl", {}, frame_uniforms(camera, camera.tile_projection_matrix(film, origin, size),
                                          {size.x * k, size.y * k, k, scene_.light_count()},
                                          {origin.x * k, gl_y * k, settings.effective_light_samples(), settings.seed}));
 

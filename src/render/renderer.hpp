@@ -30,6 +30,11 @@ struct ReferenceSettings {
 /// Throws InputError unless spp is k*k with k in 1..32.
 void validate_spp(int spp);
 
+/// Defines of one variant of the forward pass (shaders/passes/forward.frag): the shading module
+/// (a method's or the reference's), the index range of each light kind in the light buffer and
+/// whether the material has a normal map.
+ShaderDefines forward_variant(const std::string& module, const LightRanges& light_ranges, bool normal_map);
+
 /// Called after each reference tile: (tiles done, tiles total).
 using ProgressFn = std::function<void(int, int)>;
 
@@ -49,8 +54,11 @@ class Renderer {
   struct FrameUniforms;
   FrameUniforms frame_uniforms(const Camera& camera, const glm::mat4& projection, glm::ivec4 target,
                                glm::ivec4 tile) const;
-  void draw_scene(GLuint program, const FrameUniforms& frame);
-  GLuint method_program(const MethodDescriptor& method);
+  /// Draws every shape with `module` (a method's or the reference's) in the forward pass, each
+  /// with the program variant for its material, then the visible emitters.
+  void draw_scene(const std::string& module, const ParamValues& params, const FrameUniforms& frame);
+  /// The forward program for `module`, specialised on the scene's light kinds and the material.
+  GLuint forward_program(const std::string& module, int material);
   RenderTarget& target(int width, int height);
 
   ShaderLibrary& shaders_;

@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "gl_fixture.hpp"
+#include "render/renderer.hpp"
 
 using namespace glintlab;
 using namespace glintlab::test;
@@ -18,11 +19,18 @@ TEST(GlContext, IsOpenGL45Core) {
 }
 
 TEST(Shaders, EveryMethodAndPassCompiles) {
+  LightRanges every_kind;  // two lights of each kind
+  for (int k = 0; k < kLightKindCount; ++k) every_kind[static_cast<std::size_t>(k)] = glm::ivec2(2 * k, 2 * k + 2);
+  std::vector<std::string> modules{"passes/reference.glsl"};
   for (const auto& m : all_methods()) {
     EXPECT_TRUE(shaders().exists(m.module_path())) << m.id;
-    EXPECT_NO_THROW(shaders().graphics("passes/forward.vert", "passes/forward.frag", {{"$METHOD", m.module_path()}})) << m.id;
+    modules.push_back(m.module_path());
   }
-  EXPECT_NO_THROW(shaders().graphics("passes/forward.vert", "passes/forward.frag", {{"$METHOD", "passes/reference.glsl"}}));
+  for (const auto& module : modules)
+    for (bool normal_map : {false, true})
+      EXPECT_NO_THROW(shaders().graphics("passes/forward.vert", "passes/forward.frag",
+                                         forward_variant(module, every_kind, normal_map)))
+          << module << (normal_map ? " with a normal map" : "");
   EXPECT_NO_THROW(shaders().graphics("passes/forward.vert", "passes/emitter.frag"));
   EXPECT_NO_THROW(shaders().compute("passes/downsample.comp"));
 }

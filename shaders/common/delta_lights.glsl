@@ -1,10 +1,12 @@
 // Point and delta directional lights: exact for every method and for the reference, since a
-// delta light has nothing to filter at the light's end.
+// delta light has nothing to filter at the light's end. The lobe carries any filtering of the
+// NDF at the surface's end (common/lobe.glsl).
 #include "common/brdf.glsl"
 #include "common/lights.glsl"
+#include "common/lobe.glsl"
 #include "common/surface.glsl"
 
-Radiance shadeDeltaLight(Surface s, LightData L, vec3 wo) {
+Radiance shadeDeltaLight(Surface s, Lobe lobe, LightData L, vec3 wo) {
   vec3 l, irradiance;
   if (lightType(L) == LIGHT_POINT) {
     vec3 d = L.position_radius.xyz - s.position;
@@ -16,5 +18,5 @@ Radiance shadeDeltaLight(Surface s, LightData L, vec3 wo) {
     irradiance = L.colour_type.rgb;
   }
   vec3 wi = toLocal(s, l);
-  return Radiance(diffuseCos(s.diffuse, wi) * irradiance, specularCos(s.ndf, wo, wi, s.alpha, s.f0) * irradiance);
+  return Radiance(diffuseCos(s.diffuse, wi) * irradiance, lobeSpecularCos(lobe, wo, wi, s.f0) * irradiance);
 }

@@ -47,6 +47,15 @@ float lightArea(LightData L) {
   return 4.0 * PI * r * r;
 }
 
+// Unit direction from p towards the light's centre (for directional lights and suns, against
+// their travel direction).
+vec3 lightCentreDirection(LightData L, vec3 p) {
+  int t = lightType(L);
+  if (t == LIGHT_DIRECTIONAL || t == LIGHT_SUN) return -L.direction_cos.xyz;
+  vec3 d = L.position_radius.xyz - p;
+  return d * inversesqrt(max(dot(d, d), 1e-24));
+}
+
 // Does the ray (origin, unit dir) reach the emitting side of the light? dist: hit distance.
 bool lightHit(LightData L, vec3 origin, vec3 dir, out float dist) {
   int t = lightType(L);

@@ -6,7 +6,11 @@ struct Surface {
   vec3 normal;     // shading normal (normal-mapped, facing the viewer)
   vec3 tangent;    // shading frame x (alpha_x direction), orthogonal to normal
   vec3 bitangent;  // shading frame y
-  vec3 vertexNormal;  // interpolated geometric normal (before the normal map)
+  vec3 vertexNormal;     // interpolated geometric frame, before the normal map (facing the viewer)
+  vec3 vertexTangent;
+  vec3 vertexBitangent;
+  vec3 mappedNormal;     // tangent-space normal-map value, filtered and NOT renormalised
+                         // (its length measures the normals' spread; (0, 0, 1) without a map)
   vec2 uv;         // normal-map coordinates (tiling applied)
   vec3 dPdx, dPdy; // screen-space derivatives of position (per pixel of the render target)
   vec3 dNdx, dNdy; // of vertexNormal

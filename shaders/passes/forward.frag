@@ -48,6 +48,9 @@ void main() {
   vec3 t = normalize(vTangent.xyz - n * dot(n, vTangent.xyz));
   vec3 b = cross(n, t) * (vTangent.w * side);  // along +v whichever side is seen
   s.vertexNormal = n;
+  s.vertexTangent = t;
+  s.vertexBitangent = b;
+  s.mappedNormal = mapped;
   s.normal = normalize(mapped.x * t + mapped.y * b + mapped.z * n);
   s.tangent = normalize(t - s.normal * dot(s.normal, t));
   s.bitangent = cross(s.normal, s.tangent);  // right-handed local frame: z = normal
@@ -64,6 +67,7 @@ void main() {
   s.diffuse = m.diffuse_tiling.rgb;
   s.hasNormalMap = MATERIAL_NORMAL_MAP != 0;
 
+  prepareSurface(s);  // the method's per-pixel step (e.g. a filtered roughness), in uniform control flow
   Radiance sum = shadeAllLights(s);
   outTotal = vec4(sum.diffuse + sum.specular, 1.0);
   outSpecular = vec4(sum.specular, 1.0);

@@ -14,6 +14,9 @@ const float REFERENCE_MIRROR_ALPHA = 1e-4;
 
 uint gReferenceLightIndex = 0u;
 
+// Ground truth takes the surface as it is.
+void prepareSurface(inout Surface s) {}
+
 // Solid-angle density of the BRDF sampling strategy below.
 float brdfSamplePdf(Surface s, vec3 wo, vec3 wi) {
   vec3 h = normalize(wo + wi);
@@ -31,7 +34,7 @@ Radiance shadeLight(Surface s, LightData L) {
   vec3 wo = toLocal(s, s.view);
   if (wo.z <= 0.0) return result;
 
-  if (!lightHasExtent(L)) return shadeDeltaLight(s, L, wo);
+  if (!lightHasExtent(L)) return shadeDeltaLight(s, materialLobe(s), L, wo);
 
   int k = uTarget.z;
   ivec2 global = uTile.xy + ivec2(gl_FragCoord.xy);

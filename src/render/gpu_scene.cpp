@@ -84,6 +84,21 @@ LightGpu to_gpu(const Light& l) {
   return g;
 }
 
+/// A repeating, trilinearly filtered float texture with a full mip chain averaged from level 0.
+gl::Texture make_mipmapped_texture(GLenum format, GLenum channels, int width, int height, const float* texels) {
+  gl::Texture tex = gl::make_texture(GL_TEXTURE_2D);
+  int levels = 1;
+  for (int s = std::max(width, height); s > 1; s /= 2) ++levels;
+  glTextureStorage2D(tex.id(), levels, format, width, height);
+  glTextureSubImage2D(tex.id(), 0, 0, 0, width, height, channels, GL_FLOAT, texels);
+  glGenerateTextureMipmap(tex.id());
+  glTextureParameteri(tex.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(tex.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(tex.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTextureParameteri(tex.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+  return tex;
+}
+
 /// Rotation taking +y to `n` (the generators build disks and planes facing +y).
 glm::mat4 orient_y_to(glm::vec3 n, glm::vec3 up_hint) {
   glm::vec3 x = glm::cross(up_hint, n);
@@ -100,6 +115,24 @@ glm::mat4 orient_y_to(glm::vec3 n, glm::vec3 up_hint) {
 
 }  // namespace
 
+GpuScene::NormalMapTextures GpuScene::upload_normal_map(const NormalMap& map) {
+  const std::size_t n = map.normals.size();
+  std::vector<glm::vec4> normals(n), moments(n);
+  std::vector<float> cross(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const glm::vec3 v = map.normals[i];
+    const glm::vec2 b = glm::vec2(v) / std::max(v.z, 1e-3f);  // slopes; maps keep n.z > 0
+    normals[i] = glm::vec4(v, 1.0f);
+    moments[i] = glm::vec4(b, b * b);
+    cross[i] = b.x * b.y;
+  }
+  NormalMapTextures t;
+  t.normals = make_mipmapped_texture(GL_RGBA32F, GL_RGBA, map.width, map.height, &normals[0].x);
+  t.slope_moments = make_mipmapped_texture(GL_RGBA32F, GL_RGBA, map.width, map.height, &moments[0].x);
+  t.slope_cross_moment = make_mipmapped_texture(GL_R32F, GL_RED, map.width, map.height, cross.data());
+  return t;
+}
+
 GpuScene::GpuScene(const Scene& scene) {
   for (const auto& shape : scene.shapes) meshes_.push_back(upload(*shape.mesh, shape.transform, shape.material));
 
@@ -107,23 +140,7 @@ GpuScene::GpuScene(const Scene& scene) {
   for (const auto& m : scene.materials) {
     materials.push_back({glm::vec4(m.f0, m.ndf == Ndf::Beckmann ? 1.0f : 0.0f), glm::vec4(m.diffuse, m.normal_map_tiling),
                          glm::vec4(m.alpha, m.normal_map ? 1.0f : 0.0f, 0.0f)});
-    gl::Texture tex;
-    if (m.normal_map) {
-      const NormalMap& map = *m.normal_map;
-      tex = gl::make_texture(GL_TEXTURE_2D);
-      int levels = 1;
-      for (int s = std::max(map.width, map.height); s > 1; s /= 2) ++levels;
-      glTextureStorage2D(tex.id(), levels, GL_RGBA32F, map.width, map.height);
-      std::vector<glm::vec4> texels(map.normals.size());
-      for (std::size_t i = 0; i < texels.size(); ++i) texels[i] = glm::vec4(map.normals[i], 1.0f);
-      glTextureSubImage2D(tex.id(), 0, 0, 0, map.width, map.height, GL_RGBA, GL_FLOAT, texels.data());
-      glGenerateTextureMipmap(tex.id());
-      glTextureParameteri(tex.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-      glTextureParameteri(tex.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-      glTextureParameteri(tex.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-      glTextureParameteri(tex.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
-    }
-    normal_maps_.push_back(std::move(tex));
+    normal_maps_.push_back(m.normal_map ? upload_normal_map(*m.normal_map) : NormalMapTextures{});
   }
   materials_ = gl::make_buffer(static_cast<GLsizeiptr>(materials.size() * sizeof(MaterialGpu)), materials.data());
 

@@ -42,8 +42,14 @@ class GpuScene {
 
   [[nodiscard]] const std::vector<GpuMesh>& meshes() const { return meshes_; }
   [[nodiscard]] const std::vector<GpuEmitter>& emitters() const { return emitters_; }
-  /// Normal-map texture of a material, 0 if it has none.
-  [[nodiscard]] GLuint normal_map(int material) const { return normal_maps_[static_cast<std::size_t>(material)].id(); }
+  /// Textures of a material's normal map (0 if it has none), all with full mip chains made by
+  /// plain averaging: the normals (not renormalised, so their length measures their spread), the
+  /// slope moments (Bx, By, Bx^2, By^2) with B = n.xy / n.z, and the cross moment Bx By.
+  [[nodiscard]] GLuint normal_map(int material) const { return normal_maps_[index(material)].normals.id(); }
+  [[nodiscard]] GLuint slope_moments(int material) const { return normal_maps_[index(material)].slope_moments.id(); }
+  [[nodiscard]] GLuint slope_cross_moment(int material) const {
+    return normal_maps_[index(material)].slope_cross_moment.id();
+  }
   [[nodiscard]] int light_count() const { return light_count_; }
   /// The light buffer is sorted by kind; [x, y) is the index range of each kind.
   [[nodiscard]] const LightRanges& light_ranges() const { return light_ranges_; }
@@ -51,9 +57,15 @@ class GpuScene {
   void bind_buffers() const;
 
  private:
+  struct NormalMapTextures {
+    gl::Texture normals, slope_moments, slope_cross_moment;
+  };
+  static std::size_t index(int material) { return static_cast<std::size_t>(material); }
+  static NormalMapTextures upload_normal_map(const NormalMap& map);
+
   std::vector<GpuMesh> meshes_;
   std::vector<GpuEmitter> emitters_;
-  std::vector<gl::Texture> normal_maps_;
+  std::vector<NormalMapTextures> normal_maps_;
   gl::Buffer materials_;
   gl::Buffer lights_;
   int light_count_ = 0;

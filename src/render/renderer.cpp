@@ -78,6 +78,8 @@ void Renderer::draw_scene(const std::string& module, const ParamValues& params, 
     glProgramUniformMatrix3fv(program, glGetUniformLocation(program, "uNormalMatrix"), 1, GL_FALSE, &normal_matrix[0][0]);
     glProgramUniform1i(program, glGetUniformLocation(program, "uMaterial"), mesh.material);
     glBindTextureUnit(0, scene_.normal_map(mesh.material));
+    glBindTextureUnit(1, scene_.slope_moments(mesh.material));
+    glBindTextureUnit(2, scene_.slope_cross_moment(mesh.material));
     glBindVertexArray(mesh.vao.id());
     glDrawElements(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr);
   }

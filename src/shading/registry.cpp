@@ -9,10 +9,18 @@
 namespace glintlab {
 
 MethodDescriptor conventional_method();
+MethodDescriptor toksvig_method();
+MethodDescriptor vlachos_method();
+MethodDescriptor kaplanyan_beckmann_method();
+MethodDescriptor kaplanyan_rect_method();
+MethodDescriptor kaplanyan_ggx_method();
+MethodDescriptor tokuyoshi_method();
+MethodDescriptor lean_method();
 
 const std::vector<MethodDescriptor>& all_methods() {
   static const std::vector<MethodDescriptor> methods = {
-      conventional_method(),
+      conventional_method(),       toksvig_method(),     vlachos_method(),   kaplanyan_beckmann_method(),
+      kaplanyan_rect_method(),     kaplanyan_ggx_method(), tokuyoshi_method(), lean_method(),
   };
   return methods;
 }

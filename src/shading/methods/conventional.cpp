@@ -1,5 +1,5 @@
 // Descriptor of `conventional`: shading evaluated once at the pixel centre (the baseline).
-#include "shading/method.hpp"
+#include "shading/methods/shared_params.hpp"
 
 namespace glintlab {
 
@@ -13,8 +13,7 @@ MethodDescriptor conventional_method() {
                  "Mirror-like surfaces (max alpha below mirror_alpha) take the light's radiance where the "
                  "reflected ray hits an area light; rougher ones use the representative point with a "
                  "widened, energy-normalised lobe.",
-      .params = {{"mirror_alpha", 0.01f, 0.0f, 1.0f,
-                  "surfaces with max(alpha_x, alpha_y) below this treat area lights as a mirror would"}},
+      .params = {mirror_alpha_param()},
       .tables = {},
   };
 }

@@ -1,0 +1,138 @@
+// The specular lobe a method shades with: the material's NDF, possibly filtered over the pixel
+// footprint. Two forms cover every filtering method of docs/methods.md:
+// - a roughness matrix A, the slope-space second-moment matrix of a non-axis-aligned anisotropic
+//   GGX or Beckmann NDF (A = diag(alpha_x^2, alpha_y^2) for the material itself; Kaplanyan et al.
+//   2016's R; Tokuyoshi & Kaplanyan 2021, eq. 1);
+// - optionally a slope-space box of half sides `footprint` that the NDF is averaged over
+//   (Kaplanyan et al. 2016's rectangle filter; closed forms below).
+// Directions are in the local shading frame (z = normal).
+#include "common/brdf.glsl"
+#include "common/material.glsl"
+#include "common/surface.glsl"
+
+struct Lobe {
+  int ndf;         // NDF_GGX or NDF_BECKMANN
+  mat2 A;          // roughness matrix (symmetric positive definite)
+  vec2 footprint;  // half sides of the slope-space averaging box; (0, 0): point evaluation
+};
+
+Lobe materialLobe(Surface s) {
+  vec2 a = max(s.alpha, vec2(MIN_ALPHA));
+  return Lobe(s.ndf, mat2(a.x * a.x, 0.0, 0.0, a.y * a.y), vec2(0.0));
+}
+
+// Largest eigenvalue of a symmetric 2x2 matrix.
+float maxEigenvalue(mat2 m) {
+  float half_tr = 0.5 * (m[0][0] + m[1][1]);
+  float d = 0.5 * (m[0][0] - m[1][1]);
+  return half_tr + sqrt(d * d + m[0][1] * m[0][1]);
+}
+
+// Square root of a symmetric positive definite 2x2 matrix: (A + sqrt(det A) I) / sqrt(tr A + 2 sqrt(det A)).
+mat2 sqrtSpd(mat2 m) {
+  float s = sqrt(max(determinant(m), 0.0));
+  float t = sqrt(max(m[0][0] + m[1][1] + 2.0 * s, 1e-30));
+  return (m + mat2(s)) / t;
+}
+
+// Width of the lobe in alpha units: sqrt of A's largest eigenvalue plus the box.
+float lobeWidth(Lobe lobe) { return sqrt(maxEigenvalue(lobe.A)) + max(lobe.footprint.x, lobe.footprint.y); }
+
+// Quadratic form s^T A^-1 s and sqrt(det A), with A's determinant kept positive.
+float inverseQuadratic(mat2 A, vec2 s, out float sqrtDet) {
+  float det = max(determinant(A), 1e-36);
+  sqrtDet = sqrt(det);
+  vec2 t = vec2(A[1][1] * s.x - A[0][1] * s.y, A[0][0] * s.y - A[0][1] * s.x);  // adj(A) s
+  return dot(s, t) / det;
+}
+
+// Slope distributions P22 (density of microfacet slopes) of the two NDFs with matrix A.
+float slopeDensityGGX(vec2 slope, mat2 A) {
+  float sqrtDet;
+  float e = 1.0 + inverseQuadratic(A, slope, sqrtDet);
+  return 1.0 / (PI * sqrtDet * e * e);
+}
+float slopeDensityBeckmann(vec2 slope, mat2 A) {
+  float sqrtDet;
+  float e = inverseQuadratic(A, slope, sqrtDet);
+  return exp(-e) / (PI * sqrtDet);
+}
+
+// erf, Abramowitz & Stegun 7.1.26 (absolute error < 1.5e-7).
+float erfApprox(float x) {
+  float t = 1.0 / (1.0 + 0.3275911 * abs(x));
+  float y = 1.0 - t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429)))) *
+                      exp(-x * x);
+  return sign(x) * y;
+}
+
+// Mass of the GGX slope density (diagonal A = diag(ax^2, ay^2)) in the quadrant [0,u]x[0,v] of
+// normalised slopes u = x/ax, v = y/ay: odd in each argument, G(inf, inf) = 1/4. From
+// integrating 1 / (pi (1 + u^2 + v^2)^2) first over v, then over u.
+float ggxQuadrantMass(float u, float v) {
+  float su = sqrt(1.0 + u * u), sv = sqrt(1.0 + v * v);
+  return (u / su * atan(v / su) + v / sv * atan(u / sv)) / TWO_PI;
+}
+
+// Below this box half side (in alpha units) the box average is replaced by the point value:
+// the two differ by O(r^2) < 1e-4 relative, while the closed forms lose precision to
+// cancellation as the box shrinks (Kaplanyan et al. 2016 clamp the box from below for the same reason).
+const float MIN_BOX_RATIO = 0.01;
+
+// Average of the slope density over the box centre +- halfSize (axis-aligned A only).
+float boxAveragedSlopeDensity(int ndf, vec2 centre, vec2 halfSize, vec2 alpha) {
+  vec2 lo = (centre - halfSize) / alpha, hi = (centre + halfSize) / alpha;
+  float mass;
+  if (ndf == NDF_BECKMANN) {
+    mass = 0.25 * (erfApprox(hi.x) - erfApprox(lo.x)) * (erfApprox(hi.y) - erfApprox(lo.y));
+  } else {
+    mass = ggxQuadrantMass(hi.x, hi.y) - ggxQuadrantMass(lo.x, hi.y) - ggxQuadrantMass(hi.x, lo.y) +
+           ggxQuadrantMass(lo.x, lo.y);
+  }
+  return max(mass, 0.0) / (4.0 * halfSize.x * halfSize.y);
+}
+
+// D(h) of the lobe: the slope density at the slope of h, divided by cos^4 (the Jacobian from
+// slopes to normals, Walter et al. 2007).
+float lobeNdf(Lobe lobe, vec3 h) {
+  if (h.z <= 0.0) return 0.0;
+  vec2 slope = -h.xy / h.z;
+  float cos2 = h.z * h.z;
+  vec2 alpha = sqrt(vec2(lobe.A[0][0], lobe.A[1][1]));
+  float p22;
+  if (any(greaterThan(lobe.footprint, MIN_BOX_RATIO * alpha))) {
+    p22 = boxAveragedSlopeDensity(lobe.ndf, slope, max(lobe.footprint, MIN_BOX_RATIO * alpha), alpha);
+  } else {
+    p22 = lobe.ndf == NDF_BECKMANN ? slopeDensityBeckmann(slope, lobe.A) : slopeDensityGGX(slope, lobe.A);
+  }
+  return p22 / (cos2 * cos2);
+}
+
+// Smith Lambda of the lobe for direction w: the 1D roughness along w's azimuth is
+// alpha_w^2 = w_xy^T A w_xy / |w_xy|^2 (Heitz 2014, sec. 5.4, for a linearly transformed lobe).
+float lobeLambda(Lobe lobe, vec3 w) {
+  float t2 = dot(w.xy, lobe.A * w.xy) / max(w.z * w.z, 1e-12);  // alpha_w^2 tan^2(theta)
+  if (lobe.ndf == NDF_BECKMANN) {
+    float b = inversesqrt(max(t2, 1e-12));
+    if (b >= 1.6) return 0.0;
+    return (1.0 - 1.259 * b + 0.396 * b * b) / (3.535 * b + 2.181 * b * b);
+  }
+  return 0.5 * (-1.0 + sqrt(1.0 + t2));
+}
+
+// f_s(wo, wi) cos(theta_i) with the lobe's NDF: D G2 F / (4 cos(theta_o)).
+vec3 lobeSpecularCos(Lobe lobe, vec3 wo, vec3 wi, vec3 f0) {
+  if (wo.z <= 0.0 || wi.z <= 0.0) return vec3(0.0);
+  vec3 h = normalize(wo + wi);
+  float g = 1.0 / (1.0 + lobeLambda(lobe, wo) + lobeLambda(lobe, wi));
+  return fresnelSchlick(f0, dot(wo, h)) * (lobeNdf(lobe, h) * g / (4.0 * wo.z));
+}
+
+// The lobe widened by w alpha units in every direction, sqrt(A') = sqrt(A) + w I (the matrix
+// form of alpha' = alpha + w), and the factor sqrt(det A / det A') that keeps its peak energy.
+Lobe widenLobe(Lobe lobe, float w, out float normalisation) {
+  mat2 root = sqrtSpd(lobe.A);
+  mat2 widened = root + mat2(w);
+  normalisation = determinant(root) / max(determinant(widened), 1e-36);
+  return Lobe(lobe.ndf, widened * widened, lobe.footprint);
+}

@@ -1,0 +1,18 @@
+// Method `kaplanyan-ggx`: NDF filtering over the pixel footprint in slope space (Kaplanyan et al. 2016):
+// the NDF averaged over the footprint's bounding rectangle in slope space (closed form).
+// Descriptor: src/shading/methods/kaplanyan-ggx.cpp; docs/methods.md#kaplanyan-ggx.
+#include "common/footprint_filtering.glsl"
+#include "common/lobe_shading.glsl"
+
+uniform float param_mirror_alpha;
+uniform float param_fp_max;
+
+void prepareSurface(inout Surface s) {}
+
+Radiance shadeLight(Surface s, LightData L) {
+  // Derivatives first, in uniform control flow: the slope-space half vector towards the light's
+  // centre, differenced across the pixel quad.
+  vec2 h = slopeHalfVector(s, lightCentreDirection(L, s.position));
+  Lobe lobe = kaplanyanBoxLobe(materialLobe(s), dFdxFine(h), dFdyFine(h), param_fp_max);
+  return shadeLobe(s, L, lobe, param_mirror_alpha);
+}

@@ -1,0 +1,13 @@
+// Method `toksvig`: Toksvig's (2005) roughness from the length of the mip-filtered normal-map
+// normal. Descriptor: src/shading/methods/toksvig.cpp; docs/methods.md#toksvig.
+#include "common/lobe_shading.glsl"
+#include "common/roughness_filtering.glsl"
+
+uniform float param_mirror_alpha;
+
+void prepareSurface(inout Surface s) {
+  // Without a normal map the filtered normal has length 1 and alpha is unchanged.
+  s.alpha = toksvigAlpha(s.alpha, length(s.mappedNormal));
+}
+
+Radiance shadeLight(Surface s, LightData L) { return shadeLobe(s, L, materialLobe(s), param_mirror_alpha); }

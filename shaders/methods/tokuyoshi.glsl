@@ -1,0 +1,17 @@
+// Method `tokuyoshi`: projected-space NDF filtering (Tokuyoshi & Kaplanyan 2019, 2021).
+// Descriptor: src/shading/methods/tokuyoshi.cpp; docs/methods.md#tokuyoshi.
+#include "common/footprint_filtering.glsl"
+#include "common/lobe_shading.glsl"
+
+uniform float param_mirror_alpha;
+uniform float param_sigma2;
+uniform float param_kappa;
+
+void prepareSurface(inout Surface s) {}
+
+Radiance shadeLight(Surface s, LightData L) {
+  // Derivatives first, in uniform control flow: the projected half vector towards the light's centre.
+  vec2 h = projectedHalfVector(s, lightCentreDirection(L, s.position));
+  Lobe lobe = tokuyoshiLobe(materialLobe(s), dFdxFine(h), dFdyFine(h), param_sigma2, param_kappa);
+  return shadeLobe(s, L, lobe, param_mirror_alpha);
+}

@@ -1,0 +1,12 @@
+// Method `vlachos`: roughness clamped from below by the screen-space change of the vertex normal
+// (Vlachos 2015). Descriptor: src/shading/methods/vlachos.cpp; docs/methods.md#vlachos.
+#include "common/lobe_shading.glsl"
+#include "common/roughness_filtering.glsl"
+
+uniform float param_mirror_alpha;
+uniform float param_scale;
+uniform float param_exponent;
+
+void prepareSurface(inout Surface s) { s.alpha = vlachosAlpha(s.alpha, s.dNdx, s.dNdy, param_scale, param_exponent); }
+
+Radiance shadeLight(Surface s, LightData L) { return shadeLobe(s, L, materialLobe(s), param_mirror_alpha); }

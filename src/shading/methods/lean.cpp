@@ -1,0 +1,20 @@
+// Descriptor of `lean`: LEAN mapping (Olano & Baker 2010).
+#include "shading/methods/shared_params.hpp"
+
+namespace glintlab {
+
+MethodDescriptor lean_method() {
+  return {
+      .id = "lean",
+      .title = "LEAN mapping",
+      .citation = "M. Olano, D. Baker, LEAN Mapping, I3D 2010",
+      .summary = "The normal map's slope moments B = E[n.xy / n.z] and M = E[B B^T], mipmapped by plain "
+                 "averaging, give per pixel the mean normal and the slope covariance Sigma = M - B B^T "
+                 "(correlation included); the lobe's roughness matrix is diag(alpha^2) + 2 Sigma, an "
+                 "anisotropic, rotated lobe about the mean normal. Without a normal map it equals conventional.",
+      .params = {mirror_alpha_param()},
+      .tables = {"slope moments of the material's normal map (RGBA32F + R32F, full mip chain)"},
+  };
+}
+
+}  // namespace glintlab

@@ -20,7 +20,11 @@ struct LightData {
   vec4 axisU;            // quad: half edge vectors
   vec4 axisV;
 };
-layout(std430, binding = 1) readonly buffer LightBlock { LightData lights[]; };
+// A uniform buffer, not a storage buffer: its loads are scalar, and drivers that mask storage
+// loads in helper invocations (llvmpipe) would otherwise break screen-space derivatives of
+// anything computed from a light. MAX_LIGHTS mirrors kMaxLights in src/scene/scene.hpp.
+#define MAX_LIGHTS 128
+layout(std140, binding = 1) uniform LightBlock { LightData lights[MAX_LIGHTS]; };
 
 const float FAR_AWAY = 1e30;
 

@@ -129,10 +129,16 @@ vec3 lobeSpecularCos(Lobe lobe, vec3 wo, vec3 wi, vec3 f0) {
 }
 
 // The lobe widened by w alpha units in every direction, sqrt(A') = sqrt(A) + w I (the matrix
-// form of alpha' = alpha + w), and the factor sqrt(det A / det A') that keeps its peak energy.
+// form of alpha' = alpha + w), and the factor that keeps its peak energy: sqrt(det A / det A'),
+// or for a box-averaged (axis-aligned) lobe the same with each axis' effective width
+// sqrt(alpha^2 + footprint^2).
 Lobe widenLobe(Lobe lobe, float w, out float normalisation) {
   mat2 root = sqrtSpd(lobe.A);
   mat2 widened = root + mat2(w);
-  normalisation = determinant(root) / max(determinant(widened), 1e-36);
+  vec2 box2 = lobe.footprint * lobe.footprint;
+  vec2 before = vec2(lobe.A[0][0], lobe.A[1][1]) + box2;
+  vec2 after = vec2(widened[0][0] * widened[0][0], widened[1][1] * widened[1][1]) + box2;
+  normalisation = lobe.footprint == vec2(0.0) ? determinant(root) / max(determinant(widened), 1e-36)
+                                              : sqrt((before.x * before.y) / (after.x * after.y));
   return Lobe(lobe.ndf, widened * widened, lobe.footprint);
 }

@@ -142,6 +142,7 @@ GpuScene::GpuScene(const Scene& scene) {
                          glm::vec4(m.alpha, m.normal_map ? 1.0f : 0.0f, 0.0f)});
     normal_maps_.push_back(m.normal_map ? upload_normal_map(*m.normal_map) : NormalMapTextures{});
   }
+  materials.resize(kMaxMaterials);  // the uniform block's declared size
   materials_ = gl::make_buffer(static_cast<GLsizeiptr>(materials.size() * sizeof(MaterialGpu)), materials.data());
 
   // Sorted by kind, in the scene's order within a kind (shaders/common/light_loop.glsl).
@@ -165,14 +166,15 @@ GpuScene::GpuScene(const Scene& scene) {
     }
     emitters_.push_back(std::move(e));
   }
-  light_count_ = static_cast<int>(lights.size());
+  light_count_ = static_cast<int>(scene.lights.size());
+  lights.resize(kMaxLights);  // the uniform block's declared size
   lights_ = gl::make_buffer(static_cast<GLsizeiptr>(lights.size() * sizeof(LightGpu)), lights.data());
   check_gl("uploading the scene");
 }
 
 void GpuScene::bind_buffers() const {
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, lights_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, materials_.id());
+  glBindBufferBase(GL_UNIFORM_BUFFER, 1, lights_.id());
+  glBindBufferBase(GL_UNIFORM_BUFFER, 2, materials_.id());
 }
 
 }  // namespace glintlab

@@ -53,7 +53,7 @@ class GpuScene {
   [[nodiscard]] int light_count() const { return light_count_; }
   /// The light buffer is sorted by kind; [x, y) is the index range of each kind.
   [[nodiscard]] const LightRanges& light_ranges() const { return light_ranges_; }
-  /// Binds the material (binding 2) and light (binding 1) buffers.
+  /// Binds the material (binding 2) and light (binding 1) uniform buffers.
   void bind_buffers() const;
 
  private:

@@ -26,6 +26,11 @@ struct Shape {
   int material = 0;                  ///< index into Scene::materials
 };
 
+/// Limits of one scene: lights and materials live in uniform buffers on the GPU (16 KiB, the
+/// minimum every GL 4.5 driver offers; mirrored by MAX_LIGHTS and MAX_MATERIALS in shaders/common).
+inline constexpr int kMaxLights = 128;
+inline constexpr int kMaxMaterials = 256;
+
 struct Scene {
   std::string name;    ///< builtin name or file stem
   std::string source;  ///< "builtin:NAME" or the file path given by the user

@@ -258,6 +258,12 @@ Scene parse_scene(std::string_view text, const std::string& file, const std::fil
   r.finish();
   if (scene.shapes.empty()) throw InputError(file + ": the scene has no [[shape]]; at least one is required");
   if (scene.lights.empty()) throw InputError(file + ": the scene has no [[light]]; at least one is required");
+  if (scene.lights.size() > static_cast<std::size_t>(kMaxLights))
+    throw InputError(file + ": " + std::to_string(scene.lights.size()) + " [[light]] tables; allowed: at most " +
+                     std::to_string(kMaxLights));
+  if (scene.materials.size() > static_cast<std::size_t>(kMaxMaterials))
+    throw InputError(file + ": " + std::to_string(scene.materials.size()) + " [[material]] tables; allowed: at most " +
+                     std::to_string(kMaxMaterials));
   return scene;
 }
 

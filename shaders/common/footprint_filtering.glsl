@@ -52,9 +52,9 @@ Lobe kaplanyanBoxLobe(Lobe base, vec2 dx, vec2 dy, float fpMax) {
 }
 
 // GGX alpha^2 <-> projected-space roughness beta^2 = alpha^2 / (1 - alpha^2) (Tokuyoshi &
-// Kaplanyan 2021, eq. 4); alpha^2 is kept below 1 - 1e-4 so that beta^2 stays finite.
+// Kaplanyan 2021, eq. 4); alpha^2 is kept below 1 - 1e-6 so that beta^2 stays finite.
 vec2 projectedRoughness(vec2 alpha2) {
-  vec2 a2 = min(alpha2, vec2(1.0 - 1e-4));
+  vec2 a2 = min(alpha2, vec2(1.0 - 1e-6));
   return a2 / (1.0 - a2);
 }
 // Inverse for a full matrix: A = (P + det(P) I) / (1 + tr(P) + det(P)) (supplement sec. 5.2).

@@ -66,30 +66,77 @@ float erfApprox(float x) {
   return sign(x) * y;
 }
 
-// Mass of the GGX slope density (diagonal A = diag(ax^2, ay^2)) in the quadrant [0,u]x[0,v] of
-// normalised slopes u = x/ax, v = y/ay: odd in each argument, G(inf, inf) = 1/4. From
-// integrating 1 / (pi (1 + u^2 + v^2)^2) first over v, then over u.
+// Average of a slope density over a slope-space box (Kaplanyan et al. 2016's rectangle filter),
+// for axis-aligned A = diag(alpha^2). In units of alpha (u = x / alpha_x, v = y / alpha_y) the
+// densities are p(u, v) = 1 / (pi (1 + u^2 + v^2)^2) (GGX) and exp(-u^2 - v^2) / pi (Beckmann).
+// Along an axis where the box is at least NARROW_BOX wide the integral is taken in closed form.
+// Closed forms are differences of nearly equal numbers when the box is narrow or far out in the
+// tails, so there 4-point Gauss-Legendre quadrature (exact for degree 7, stable, exact in the
+// zero-width limit) is used instead: for a narrow axis always, and for the whole box when the
+// closed form's average falls below TAIL_DENSITY (float rounding would dominate it; it matters
+// because D = P22 / cos^4 magnifies it at grazing half vectors).
+const float NARROW_BOX = 0.5;
+const float TAIL_DENSITY = 1e-4;
+const vec4 GL4_NODES = vec4(-0.8611363116, -0.3399810436, 0.3399810436, 0.8611363116);
+const vec4 GL4_WEIGHTS = vec4(0.3478548451, 0.6521451549, 0.6521451549, 0.3478548451) * 0.5;  // sum to 1
+
+// GGX in alpha units: mass of p in the quadrant [0,u]x[0,v], odd in each argument, 1/4 at infinity.
 float ggxQuadrantMass(float u, float v) {
   float su = sqrt(1.0 + u * u), sv = sqrt(1.0 + v * v);
   return (u / su * atan(v / su) + v / sv * atan(u / sv)) / TWO_PI;
 }
+// GGX in alpha units: integral of p(u, v) over v in [v0, v1] (d/dv of the bracket is 1/(c^2+v^2)^2).
+float ggxStripMass(float u, float v0, float v1) {
+  float c2 = 1.0 + u * u, c = sqrt(c2);
+  float f1 = v1 / (2.0 * c2 * (c2 + v1 * v1)) + atan(v1 / c) / (2.0 * c2 * c);
+  float f0 = v0 / (2.0 * c2 * (c2 + v0 * v0)) + atan(v0 / c) / (2.0 * c2 * c);
+  return (f1 - f0) / PI;
+}
+float ggxDensity(float u, float v) {
+  float e = 1.0 + u * u + v * v;
+  return 1.0 / (PI * e * e);
+}
+float ggxQuadratureAverage(vec2 c, vec2 h) {
+  float sum = 0.0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      sum += GL4_WEIGHTS[i] * GL4_WEIGHTS[j] * ggxDensity(c.x + h.x * GL4_NODES[i], c.y + h.y * GL4_NODES[j]);
+  return sum;
+}
 
-// Below this box half side (in alpha units) the box average is replaced by the point value:
-// the two differ by O(r^2) < 1e-4 relative, while the closed forms lose precision to
-// cancellation as the box shrinks (Kaplanyan et al. 2016 clamp the box from below for the same reason).
-const float MIN_BOX_RATIO = 0.01;
-
-// Average of the slope density over the box centre +- halfSize (axis-aligned A only).
-float boxAveragedSlopeDensity(int ndf, vec2 centre, vec2 halfSize, vec2 alpha) {
-  vec2 lo = (centre - halfSize) / alpha, hi = (centre + halfSize) / alpha;
-  float mass;
-  if (ndf == NDF_BECKMANN) {
-    mass = 0.25 * (erfApprox(hi.x) - erfApprox(lo.x)) * (erfApprox(hi.y) - erfApprox(lo.y));
+// Average of p over the box centre c +- half h (alpha units).
+float ggxBoxAverage(vec2 c, vec2 h) {
+  bool narrowU = h.x < NARROW_BOX, narrowV = h.y < NARROW_BOX;
+  if (narrowU && narrowV) return ggxQuadratureAverage(c, h);
+  float average;
+  if (!narrowU && !narrowV) {
+    vec2 lo = c - h, hi = c + h;
+    average = (ggxQuadrantMass(hi.x, hi.y) - ggxQuadrantMass(lo.x, hi.y) - ggxQuadrantMass(hi.x, lo.y) +
+               ggxQuadrantMass(lo.x, lo.y)) / (4.0 * h.x * h.y);
   } else {
-    mass = ggxQuadrantMass(hi.x, hi.y) - ggxQuadrantMass(lo.x, hi.y) - ggxQuadrantMass(hi.x, lo.y) +
-           ggxQuadrantMass(lo.x, lo.y);
+    // Quadrature along the narrow axis, closed form along the wide one (p is symmetric in u, v).
+    vec2 cn = narrowU ? c : c.yx, hn = narrowU ? h : h.yx;
+    average = 0.0;
+    for (int i = 0; i < 4; ++i)
+      average += GL4_WEIGHTS[i] * ggxStripMass(cn.x + hn.x * GL4_NODES[i], cn.y - hn.y, cn.y + hn.y);
+    average /= 2.0 * hn.y;
   }
-  return max(mass, 0.0) / (4.0 * halfSize.x * halfSize.y);
+  return average < TAIL_DENSITY ? ggxQuadratureAverage(c, h) : average;
+}
+
+// Beckmann is separable: the average of exp(-u^2) along one axis.
+float gaussianAxisAverage(float c, float h) {
+  float closed = 0.886226925 * (erfApprox(c + h) - erfApprox(c - h)) / (2.0 * max(h, 1e-30));  // sqrt(pi)/2
+  if (h >= NARROW_BOX && closed >= TAIL_DENSITY) return closed;
+  vec4 u = c + h * GL4_NODES;
+  return dot(GL4_WEIGHTS, exp(-u * u));
+}
+
+float boxAveragedSlopeDensity(int ndf, vec2 centre, vec2 halfSize, vec2 alpha) {
+  vec2 c = centre / alpha, h = halfSize / alpha;
+  float average = ndf == NDF_BECKMANN ? gaussianAxisAverage(c.x, h.x) * gaussianAxisAverage(c.y, h.y) / PI
+                                      : ggxBoxAverage(c, h);
+  return max(average, 0.0) / (alpha.x * alpha.y);
 }
 
 // D(h) of the lobe: the slope density at the slope of h, divided by cos^4 (the Jacobian from
@@ -98,10 +145,9 @@ float lobeNdf(Lobe lobe, vec3 h) {
   if (h.z <= 0.0) return 0.0;
   vec2 slope = -h.xy / h.z;
   float cos2 = h.z * h.z;
-  vec2 alpha = sqrt(vec2(lobe.A[0][0], lobe.A[1][1]));
   float p22;
-  if (any(greaterThan(lobe.footprint, MIN_BOX_RATIO * alpha))) {
-    p22 = boxAveragedSlopeDensity(lobe.ndf, slope, max(lobe.footprint, MIN_BOX_RATIO * alpha), alpha);
+  if (lobe.footprint != vec2(0.0)) {
+    p22 = boxAveragedSlopeDensity(lobe.ndf, slope, lobe.footprint, sqrt(vec2(lobe.A[0][0], lobe.A[1][1])));
   } else {
     p22 = lobe.ndf == NDF_BECKMANN ? slopeDensityBeckmann(slope, lobe.A) : slopeDensityGGX(slope, lobe.A);
   }

@@ -16,7 +16,7 @@ vec2 vlachosAlpha(vec2 alpha, vec3 dNdx, vec3 dNdy, float scale, float exponent)
 // beta'^2 = beta^2 + 2 (1 - N) / N for beta^2 = alpha^2 / (1 - alpha^2), per axis.
 vec2 toksvigAlpha(vec2 alpha, float normalLength) {
   float n = clamp(normalLength, 1e-4, 1.0);
-  vec2 a2 = min(alpha * alpha, vec2(1.0 - 1e-4));
+  vec2 a2 = min(alpha * alpha, vec2(1.0 - 1e-6));
   vec2 beta2 = a2 / (1.0 - a2) + 2.0 * (1.0 - n) / n;
   return sqrt(beta2 / (1.0 + beta2));
 }

@@ -21,27 +21,31 @@ double median(std::vector<double> v) {
 
 std::vector<BenchResult> run_bench(Session& session, const std::vector<MethodChoice>& methods, int frames, int warmup,
                                    const std::filesystem::path& out) {
-  std::vector<BenchResult> results;
   const Camera camera = session.camera(0);
   gl::Query query = gl::make_query(GL_TIME_ELAPSED);
-  for (const auto& m : methods) {
-    for (int i = 0; i < warmup; ++i) session.renderer().draw(*m.method, m.params, camera, session.width(), session.height());
-    glFinish();
-    std::vector<double> gpu, wall;
-    for (int i = 0; i < frames; ++i) {
+  auto draw = [&](const MethodChoice& m) { session.renderer().draw(*m.method, m.params, camera, session.width(), session.height()); };
+  for (const auto& m : methods)
+    for (int i = 0; i < warmup; ++i) draw(m);
+  glFinish();
+  // Methods take turns frame by frame, so that drift of the machine's speed affects them alike
+  // and the ratios between them are fair.
+  std::vector<std::vector<double>> gpu(methods.size()), wall(methods.size());
+  for (int i = 0; i < frames; ++i)
+    for (std::size_t k = 0; k < methods.size(); ++k) {
       const auto t0 = std::chrono::steady_clock::now();
       glBeginQuery(GL_TIME_ELAPSED, query.id());
-      session.renderer().draw(*m.method, m.params, camera, session.width(), session.height());
+      draw(methods[k]);
       glEndQuery(GL_TIME_ELAPSED);
       glFinish();
       const auto t1 = std::chrono::steady_clock::now();
       GLuint64 ns = 0;
       glGetQueryObjectui64v(query.id(), GL_QUERY_RESULT, &ns);
-      gpu.push_back(static_cast<double>(ns) * 1e-6);
-      wall.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+      gpu[k].push_back(static_cast<double>(ns) * 1e-6);
+      wall[k].push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
     }
-    results.push_back({m.method->id, median(gpu), median(wall), frames});
-  }
+  std::vector<BenchResult> results;
+  for (std::size_t k = 0; k < methods.size(); ++k)
+    results.push_back({methods[k].method->id, median(gpu[k]), median(wall[k]), frames});
   nlohmann::json json;
   json["scene"] = session.scene().source;
   json["width"] = session.width();
@@ -49,8 +53,13 @@ std::vector<BenchResult> run_bench(Session& session, const std::vector<MethodCho
   json["device"] = session.context().info().renderer;
   json["frames"] = frames;
   json["warmup"] = warmup;
+  json["ratio_definition"] = "median time of the method / median time of the first method listed";
   for (const auto& r : results)
-    json["methods"].push_back({{"method", r.method}, {"gpu_ms_median", r.gpu_ms_median}, {"wall_ms_median", r.wall_ms_median}});
+    json["methods"].push_back({{"method", r.method},
+                               {"gpu_ms_median", r.gpu_ms_median},
+                               {"wall_ms_median", r.wall_ms_median},
+                               {"gpu_ratio", r.gpu_ms_median / std::max(results.front().gpu_ms_median, 1e-9)},
+                               {"wall_ratio", r.wall_ms_median / std::max(results.front().wall_ms_median, 1e-9)}});
   std::cout << json.dump(2) << "\n";
   if (!out.empty()) write_text_file(out / "bench.json", json.dump(2) + "\n");
   return results;

@@ -11,6 +11,8 @@
 namespace glintlab {
 
 namespace {
+constexpr const char* kUnshaded = "(unshaded)";
+
 double median(std::vector<double> v) {
   if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());
@@ -23,18 +25,25 @@ std::vector<BenchResult> run_bench(Session& session, const std::vector<MethodCho
                                    const std::filesystem::path& out) {
   const Camera camera = session.camera(0);
   gl::Query query = gl::make_query(GL_TIME_ELAPSED);
-  auto draw = [&](const MethodChoice& m) { session.renderer().draw(*m.method, m.params, camera, session.width(), session.height()); };
-  for (const auto& m : methods)
-    for (int i = 0; i < warmup; ++i) draw(m);
+  // The methods, then the fixed cost of a frame: the same draws with a module that shades nothing.
+  const std::size_t count = methods.size() + 1;
+  auto draw = [&](std::size_t k) {
+    if (k < methods.size())
+      session.renderer().draw(*methods[k].method, methods[k].params, camera, session.width(), session.height());
+    else
+      session.renderer().draw_module("passes/unshaded.glsl", {}, camera, session.width(), session.height());
+  };
+  for (std::size_t k = 0; k < count; ++k)
+    for (int i = 0; i < warmup; ++i) draw(k);
   glFinish();
   // Methods take turns frame by frame, so that drift of the machine's speed affects them alike
   // and the ratios between them are fair.
-  std::vector<std::vector<double>> gpu(methods.size()), wall(methods.size());
+  std::vector<std::vector<double>> gpu(count), wall(count);
   for (int i = 0; i < frames; ++i)
-    for (std::size_t k = 0; k < methods.size(); ++k) {
+    for (std::size_t k = 0; k < count; ++k) {
       const auto t0 = std::chrono::steady_clock::now();
       glBeginQuery(GL_TIME_ELAPSED, query.id());
-      draw(methods[k]);
+      draw(k);
       glEndQuery(GL_TIME_ELAPSED);
       glFinish();
       const auto t1 = std::chrono::steady_clock::now();
@@ -44,8 +53,8 @@ std::vector<BenchResult> run_bench(Session& session, const std::vector<MethodCho
       wall[k].push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
     }
   std::vector<BenchResult> results;
-  for (std::size_t k = 0; k < methods.size(); ++k)
-    results.push_back({methods[k].method->id, median(gpu[k]), median(wall[k]), frames});
+  for (std::size_t k = 0; k < count; ++k)
+    results.push_back({k < methods.size() ? methods[k].method->id : kUnshaded, median(gpu[k]), median(wall[k]), frames});
   nlohmann::json json;
   json["scene"] = session.scene().source;
   json["width"] = session.width();
@@ -53,6 +62,9 @@ std::vector<BenchResult> run_bench(Session& session, const std::vector<MethodCho
   json["device"] = session.context().info().renderer;
   json["frames"] = frames;
   json["warmup"] = warmup;
+  json["unshaded_definition"] = std::string(kUnshaded) +
+                                ": the same frame with a shading module that returns nothing (clears, vertices, "
+                                "rasterisation, surface record): the floor under every method";
   json["ratio_definition"] = "median time of the method / median time of the first method listed";
   for (const auto& r : results)
     json["methods"].push_back({{"method", r.method},

@@ -111,9 +111,14 @@ Renderer::FrameUniforms Renderer::frame_uniforms(const Camera& camera, const glm
 }
 
 void Renderer::draw(const MethodDescriptor& method, const ParamValues& params, const Camera& camera, int width, int height) {
+  draw_module(method.module_path(), params, camera, width, height);
+}
+
+void Renderer::draw_module(const std::string& module, const ParamValues& params, const Camera& camera, int width,
+                           int height) {
   RenderTarget& rt = target(width, height);
   rt.bind_and_clear();
-  draw_scene(method.module_path(), params,
+  draw_scene(module, params,
              frame_uniforms(camera, camera.projection_matrix(static_cast<float>(width) / static_cast<float>(height)),
                             {width, height, 1, scene_.light_count()}, {0, 0, 1, 0}));
 }

@@ -46,6 +46,8 @@ class Renderer {
   Frame render(const MethodDescriptor& method, const ParamValues& params, const Camera& camera, int width, int height);
   /// Issues the draws of render() into the internal target without reading back (for timing).
   void draw(const MethodDescriptor& method, const ParamValues& params, const Camera& camera, int width, int height);
+  /// The same with any shading module in the method slot (e.g. passes/unshaded.glsl).
+  void draw_module(const std::string& module, const ParamValues& params, const Camera& camera, int width, int height);
   /// Ground truth: k x k supersampling in tiles, box-filtered (DESIGN.md, "Ground truth").
   Frame render_reference(const Camera& camera, int width, int height, const ReferenceSettings& settings,
                          const ProgressFn& progress = {});

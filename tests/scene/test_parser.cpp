@@ -92,6 +92,12 @@ TEST(SceneParser, MissingRequiredKeyAndEmptySceneAreRejected) {
   expect_error("", {"no [[shape]]"});
 }
 
+TEST(SceneParser, TooManyLightsAreRejected) {
+  std::string text = kMinimal;
+  for (int i = 0; i < kMaxLights; ++i) text += "[[light]]\ntype = \"point\"\nposition = [0, 1, 0]\n";
+  expect_error(text, {std::to_string(kMaxLights + 1).c_str(), "at most 128"});
+}
+
 TEST(SceneParser, MissingAndBrokenFilesAreNamed) {
   const auto dir = std::filesystem::temp_directory_path() / "glintlab-test-parser";
   std::filesystem::create_directories(dir);

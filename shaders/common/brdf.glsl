@@ -21,11 +21,9 @@ float ndfBeckmann(vec3 h, vec2 alpha) {
 
 float ndf(int kind, vec3 h, vec2 alpha) { return kind == 1 ? ndfBeckmann(h, alpha) : ndfGGX(h, alpha); }
 
-// Smith Lambda (Heitz 2014, eqs. 72 and 80) for direction w; a^-2 = alpha(w)^2 tan^2(theta).
-float smithLambda(int kind, vec3 w, vec2 alpha) {
-  vec2 a = max(alpha, vec2(MIN_ALPHA));
-  float z2 = max(w.z * w.z, 1e-12);
-  float t2 = (a.x * a.x * w.x * w.x + a.y * a.y * w.y * w.y) / z2;  // alpha^2 tan^2
+// Smith Lambda (Heitz 2014, eqs. 72 and 80) as a function of t2 = alpha(w)^2 tan^2(theta) = a^-2,
+// alpha(w) the roughness along w's azimuth.
+float smithLambdaOfT2(int kind, float t2) {
   if (kind == 1) {
     // Beckmann: Lambda(a) with a = 1 / (alpha tan); Walter et al. 2007's rational fit (eq. 27).
     float b = inversesqrt(max(t2, 1e-12));
@@ -33,6 +31,12 @@ float smithLambda(int kind, vec3 w, vec2 alpha) {
     return (1.0 - 1.259 * b + 0.396 * b * b) / (3.535 * b + 2.181 * b * b);
   }
   return 0.5 * (-1.0 + sqrt(1.0 + t2));
+}
+
+// Smith Lambda for direction w of the axis-aligned NDF.
+float smithLambda(int kind, vec3 w, vec2 alpha) {
+  vec2 a = max(alpha, vec2(MIN_ALPHA));
+  return smithLambdaOfT2(kind, (a.x * a.x * w.x * w.x + a.y * a.y * w.y * w.y) / max(w.z * w.z, 1e-12));
 }
 
 float smithG1(int kind, vec3 w, vec2 alpha) { return 1.0 / (1.0 + smithLambda(kind, w, alpha)); }

@@ -16,10 +16,13 @@ struct Lobe {
   vec2 footprint;  // half sides of the slope-space averaging box; (0, 0): point evaluation
 };
 
-Lobe materialLobe(Surface s) {
-  vec2 a = max(s.alpha, vec2(MIN_ALPHA));
-  return Lobe(s.ndf, mat2(a.x * a.x, 0.0, 0.0, a.y * a.y), vec2(0.0));
+// The unfiltered, axis-aligned lobe of roughness alpha (clamped to MIN_ALPHA like the NDFs).
+Lobe axisAlignedLobe(int ndf, vec2 alpha) {
+  vec2 a = max(alpha, vec2(MIN_ALPHA));
+  return Lobe(ndf, mat2(a.x * a.x, 0.0, 0.0, a.y * a.y), vec2(0.0));
 }
+
+Lobe materialLobe(Surface s) { return axisAlignedLobe(s.ndf, s.alpha); }
 
 // Largest eigenvalue of a symmetric 2x2 matrix.
 float maxEigenvalue(mat2 m) {
@@ -157,13 +160,7 @@ float lobeNdf(Lobe lobe, vec3 h) {
 // Smith Lambda of the lobe for direction w: the 1D roughness along w's azimuth is
 // alpha_w^2 = w_xy^T A w_xy / |w_xy|^2 (Heitz 2014, sec. 5.4, for a linearly transformed lobe).
 float lobeLambda(Lobe lobe, vec3 w) {
-  float t2 = dot(w.xy, lobe.A * w.xy) / max(w.z * w.z, 1e-12);  // alpha_w^2 tan^2(theta)
-  if (lobe.ndf == NDF_BECKMANN) {
-    float b = inversesqrt(max(t2, 1e-12));
-    if (b >= 1.6) return 0.0;
-    return (1.0 - 1.259 * b + 0.396 * b * b) / (3.535 * b + 2.181 * b * b);
-  }
-  return 0.5 * (-1.0 + sqrt(1.0 + t2));
+  return smithLambdaOfT2(lobe.ndf, dot(w.xy, lobe.A * w.xy) / max(w.z * w.z, 1e-12));
 }
 
 // f_s(wo, wi) cos(theta_i) with the lobe's NDF: D G2 F / (4 cos(theta_o)).

@@ -5,7 +5,7 @@ struct Surface {
   vec3 view;       // unit vector from the surface to the camera
   vec3 normal;     // shading normal (normal-mapped, facing the viewer)
   vec3 tangent;    // shading frame x (alpha_x direction), orthogonal to normal
-  vec3 bitangent;  // shading frame y
+  vec3 bitangent;  // shading frame y (alpha_y direction), on the side of the texture's +v
   vec3 vertexNormal;     // interpolated geometric frame, before the normal map (facing the viewer)
   vec3 vertexTangent;
   vec3 vertexBitangent;
@@ -28,6 +28,17 @@ struct Radiance {
   vec3 diffuse;
   vec3 specular;
 };
+
+// Sets the shading normal and rebuilds the frame around it: the vertex tangent orthogonalised,
+// and the bitangent on the side of the texture's +v, so that anisotropy and normal-map slopes keep
+// their meaning under mirroring transforms and on back faces (the frame is left-handed there;
+// everything downstream uses toLocal/toWorld, which do not care).
+void setShadingNormal(inout Surface s, vec3 n) {
+  s.normal = n;
+  s.tangent = normalize(s.vertexTangent - n * dot(n, s.vertexTangent));
+  vec3 b = cross(n, s.tangent);
+  s.bitangent = dot(b, s.vertexBitangent) < 0.0 ? -b : b;
+}
 
 vec3 toLocal(Surface s, vec3 w) { return vec3(dot(w, s.tangent), dot(w, s.bitangent), dot(w, s.normal)); }
 vec3 toWorld(Surface s, vec3 w) { return w.x * s.tangent + w.y * s.bitangent + w.z * s.normal; }

@@ -20,12 +20,8 @@ void prepareSurface(inout Surface s) {
   float mxy = textureGrad(uSlopeCrossMoment, s.uv, s.dUVdx, s.dUVdy).r;
   // Shading frame: the mean normal (B, 1) over the vertex frame; the lobe's covariance lives in
   // the base surface's slope space and is used about the mean normal (exact for small B).
-  s.normal = normalize(m.x * s.vertexTangent + m.y * s.vertexBitangent + s.vertexNormal);
-  s.tangent = normalize(s.vertexTangent - s.normal * dot(s.normal, s.vertexTangent));
-  s.bitangent = cross(s.normal, s.tangent);
-  // The local y axis is the texture's -v where the frame is mirrored: the correlation flips.
-  float handedness = dot(s.bitangent, s.vertexBitangent) < 0.0 ? -1.0 : 1.0;
-  gLeanLobe.A += 2.0 * leanSlopeCovariance(m.xy * vec2(1.0, handedness), vec3(m.zw, mxy * handedness));
+  setShadingNormal(s, normalize(m.x * s.vertexTangent + m.y * s.vertexBitangent + s.vertexNormal));
+  gLeanLobe.A += 2.0 * leanSlopeCovariance(m.xy, vec3(m.zw, mxy));
 #endif
 }
 

@@ -51,9 +51,7 @@ void main() {
   s.vertexTangent = t;
   s.vertexBitangent = b;
   s.mappedNormal = mapped;
-  s.normal = normalize(mapped.x * t + mapped.y * b + mapped.z * n);
-  s.tangent = normalize(t - s.normal * dot(s.normal, t));
-  s.bitangent = cross(s.normal, s.tangent);  // right-handed local frame: z = normal
+  setShadingNormal(s, normalize(mapped.x * t + mapped.y * b + mapped.z * n));
   s.uv = uv;
   s.dPdx = dPdx;
   s.dPdy = dPdy;

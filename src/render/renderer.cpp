@@ -49,8 +49,12 @@ ShaderDefines forward_variant(const std::string& module, const LightRanges& ligh
 }
 
 GLuint Renderer::forward_program(const std::string& module, int material) {
-  return shaders_.graphics("passes/forward.vert", "passes/forward.frag",
-                           forward_variant(module, scene_.light_ranges(), scene_.normal_map(material) != 0));
+  const bool normal_map = scene_.normal_map(material) != 0;
+  GLuint& program = forward_programs_[{module, normal_map}];
+  if (!program)
+    program = shaders_.graphics("passes/forward.vert", "passes/forward.frag",
+                                forward_variant(module, scene_.light_ranges(), normal_map));
+  return program;
 }
 
 void Renderer::draw_scene(const std::string& module, const ParamValues& params, const FrameUniforms& frame) {

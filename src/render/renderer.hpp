@@ -2,6 +2,7 @@
 // The forward renderer: draws a GpuScene with one method's module, or with the reference
 // estimator at k x k sub-pixels per pixel in tiles (ground truth). Knows no method by name.
 #include <functional>
+#include <map>
 #include <memory>
 
 #include "core/image.hpp"
@@ -59,7 +60,8 @@ class Renderer {
   /// Draws every shape with `module` (a method's or the reference's) in the forward pass, each
   /// with the program variant for its material, then the visible emitters.
   void draw_scene(const std::string& module, const ParamValues& params, const FrameUniforms& frame);
-  /// The forward program for `module`, specialised on the scene's light kinds and the material.
+  /// The forward program for `module`, specialised on the scene's lights and the material;
+  /// looked up once per (module, variant), not per draw.
   GLuint forward_program(const std::string& module, int material);
   RenderTarget& target(int width, int height);
 
@@ -67,6 +69,7 @@ class Renderer {
   const GpuScene& scene_;
   gl::Buffer frame_ubo_;
   std::unique_ptr<RenderTarget> target_;
+  std::map<std::pair<std::string, bool>, GLuint> forward_programs_;  // (module, normal map)
 };
 
 }  // namespace glintlab

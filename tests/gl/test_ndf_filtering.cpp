@@ -18,10 +18,6 @@ namespace {
 const char* kIncludes = R"(
 #include "common/footprint_filtering.glsl"
 #include "common/roughness_filtering.glsl"
-Lobe axisAligned(int ndf, vec2 alpha) {  // as materialLobe() builds it
-  vec2 a = max(alpha, vec2(MIN_ALPHA));
-  return Lobe(ndf, mat2(a.x * a.x, 0.0, 0.0, a.y * a.y), vec2(0.0));
-}
 )";
 
 /// Adaptive Simpson quadrature of f over [a, b] to absolute tolerance eps.
@@ -111,7 +107,7 @@ TEST(NdfFiltering, BeckmannConvolutionMatchesNumericalConvolution) {
   }
   const auto gpu = evaluate_glsl(kIncludes,
                                  "vec4 evaluate(vec4 d, vec4 p) {\n"
-                                 "  Lobe l = kaplanyanBeckmannLobe(axisAligned(NDF_BECKMANN, p.xy), d.xy, d.zw, 100.0);\n"
+                                 "  Lobe l = kaplanyanBeckmannLobe(axisAlignedLobe(NDF_BECKMANN, p.xy), d.xy, d.zw, 100.0);\n"
                                  "  return vec4(slopeDensityBeckmann(p.zw, l.A)); }",
                                  derivs, inputs);
   for (std::size_t i = 0; i < cases.size(); ++i) {
@@ -199,14 +195,14 @@ namespace {
 // for the filter selected by p.w (0..5): A_xx, A_yy, A_xy, box half side x.
 const char* kEveryFilter = R"(
 vec4 applyFilter(int which, int ndf, vec2 alpha, vec2 dx, vec2 dy, vec3 dn) {
-  Lobe base = axisAligned(ndf, alpha);
+  Lobe base = axisAlignedLobe(ndf, alpha);
   Lobe l = base;
   if (which == 0) l = kaplanyanBeckmannLobe(base, dx, dy, 1.0);
   if (which == 1) l = kaplanyanRectLobe(base, dx, dy, 1.0);
   if (which == 2) l = kaplanyanBoxLobe(base, dx, dy, 1.0);
   if (which == 3) l = tokuyoshiLobe(base, dx, dy, 0.25, 0.18);
-  if (which == 4) { vec2 a = vlachosAlpha(alpha, dn, dn.yzx, 1.0, 1.0 / 3.0); l = axisAligned(ndf, a); }
-  if (which == 5) { vec2 a = toksvigAlpha(alpha, 1.0 - abs(dn.x)); l = axisAligned(ndf, a); }
+  if (which == 4) { vec2 a = vlachosAlpha(alpha, dn, dn.yzx, 1.0, 1.0 / 3.0); l = axisAlignedLobe(ndf, a); }
+  if (which == 5) { vec2 a = toksvigAlpha(alpha, 1.0 - abs(dn.x)); l = axisAlignedLobe(ndf, a); }
   if (which == 6) l.A += 2.0 * leanSlopeCovariance(dx, vec3(dy, dn.x));
   return vec4(l.A[0][0], l.A[1][1], l.A[0][1], l.footprint.x);
 }

@@ -120,7 +120,9 @@ void check(const std::string& scene, const std::map<std::string, Claim>& claims)
       continue;
     }
     EXPECT_LT(m.rmse, base.rmse) << what;
-    if (claim == Claim::Better) EXPECT_LT(m.flicker, base.flicker) << what;
+    if (claim == Claim::Better) {
+      EXPECT_LT(m.flicker, base.flicker) << what;
+    }
   }
 }
 

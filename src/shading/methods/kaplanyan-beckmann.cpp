@@ -7,8 +7,7 @@ MethodDescriptor kaplanyan_beckmann_method() {
   return {
       .id = "kaplanyan-beckmann",
       .title = "Kaplanyan et al. (Beckmann, full covariance)",
-      .citation = "A. S. Kaplanyan, S. Hill, A. Patney, A. Lefohn, Filtering Distributions of Normals for "
-                  "Shading Antialiasing, HPG 2016; Stable Specular Highlights, GDC 2016",
+      .citation = kKaplanyan2016Citation,
       .summary = "Convolves the NDF with the pixel footprint in slope space: the derivatives U = [dh/dx dh/dy] of the slope-space half vector (towards the light's centre) give the covariance C = U U^T and the lobe's roughness matrix becomes R' = R + 2C, non-axis-aligned. Exact for Beckmann; GGX materials use the same matrix as a proxy.",
       .params = {mirror_alpha_param(), fp_max_param()},
       .tables = {},

@@ -7,8 +7,7 @@ MethodDescriptor kaplanyan_rect_method() {
   return {
       .id = "kaplanyan-rect",
       .title = "Kaplanyan et al. (axis-aligned rectangle)",
-      .citation = "A. S. Kaplanyan, S. Hill, A. Patney, A. Lefohn, Filtering Distributions of Normals for "
-                  "Shading Antialiasing, HPG 2016; Stable Specular Highlights, GDC 2016",
+      .citation = kKaplanyan2016Citation,
       .summary = "Like kaplanyan-beckmann, but with the footprint's axis-aligned bounding rectangle, half sides fp = min((abs(dh/dx) + abs(dh/dy)) / 2, fp_max): R' = R + 2 diag(fp^2). Over-filters, for temporal stability.",
       .params = {mirror_alpha_param(), fp_max_param()},
       .tables = {},

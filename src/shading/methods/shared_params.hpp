@@ -1,5 +1,5 @@
 #pragma once
-// Parameters that several methods declare with the same meaning.
+// Parameters and citations that several method descriptors share.
 #include "shading/method.hpp"
 
 namespace glintlab {
@@ -15,5 +15,10 @@ inline ParamDecl fp_max_param() {
   return {"fp_max", 1.0f, 0.01f, 4.0f,
           "upper clamp of the footprint's half extent in slope space (the talk uses 0.1 .. 1)"};
 }
+
+/// The three `kaplanyan-*` variants come from one paper and talk.
+inline constexpr const char* kKaplanyan2016Citation =
+    "A. S. Kaplanyan, S. Hill, A. Patney, A. Lefohn, Filtering Distributions of Normals for Shading "
+    "Antialiasing, HPG 2016; Stable Specular Highlights, GDC 2016";
 
 }  // namespace glintlab

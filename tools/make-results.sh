@@ -52,7 +52,7 @@ and the tables below show at full size:
   normal is smooth, so the highlight is as bright as on a flat mirror of the mean normal, while the
   true bumps spread it); LEAN and Toksvig bring it below 1 (over-blur); the Kaplanyan covariance and
   box variants above 1 on tubes show highlights smeared over too large an area.
-- Speed: the roughness-modifying methods cost 0-8% over `conventional` here. `kaplanyan-ggx` costs
+- Speed: the roughness-modifying methods cost 0-10% over `conventional` here. `kaplanyan-ggx` costs
   about 3.7x on llvmpipe, which executes every branch of the box average (closed form, strip and
   quadrature paths) for every light; a GPU takes one path per warp. The `(unshaded)` row is the
   floor under every method: the same frame with a module that shades nothing.

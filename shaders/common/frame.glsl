@@ -4,6 +4,6 @@ layout(std140, binding = 0) uniform FrameBlock {
   mat4 uViewProj;
   vec4 uCameraPos;     // xyz: camera position (world); w: 1 perspective, 0 orthographic
   vec4 uCameraForward; // xyz: view direction for orthographic cameras
-  ivec4 uTarget;       // xy: render-target size (pixels); z: sub-pixels per axis k; w: light count
+  ivec4 uTarget;       // xy: render-target size (pixels); z: sub-pixels per axis k; w: unused
   ivec4 uTile;         // xy: tile origin in sub-pixels of the whole film; z: light samples; w: seed
 };

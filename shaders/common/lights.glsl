@@ -2,8 +2,8 @@
 // sampling and densities. Approximations of a light belong to the methods, not here.
 #include "common/constants.glsl"
 
-// Light kinds as macros so that passes can specialise on them with #if (see
-// shaders/common/light_loop.glsl). Order and values mirror GpuLightKind in src/render/gpu_scene.hpp.
+// Light kinds. Values mirror GpuLightKind in src/render/gpu_scene.hpp; the light buffer is sorted
+// by kind (shaders/common/light_loop.glsl).
 #define LIGHT_POINT 0
 #define LIGHT_DIRECTIONAL 1  // delta directional
 #define LIGHT_DISK 2

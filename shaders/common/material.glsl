@@ -4,7 +4,7 @@
 struct MaterialData {
   vec4 f0_ndf;          // rgb: Schlick F0; a: 0 GGX, 1 Beckmann
   vec4 diffuse_tiling;  // rgb: Lambert albedo; a: normal-map repeats per uv unit
-  vec4 alpha_flags;     // xy: alpha_x, alpha_y; z: 1 if the material has a normal map
+  vec4 alpha;           // xy: alpha_x, alpha_y; zw: unused (a normal map is a program variant)
 };
 #define MAX_MATERIALS 256
 layout(std140, binding = 2) uniform MaterialBlock { MaterialData materials[MAX_MATERIALS]; };

@@ -60,7 +60,7 @@ void main() {
   s.dUVdx = dUVdx;
   s.dUVdy = dUVdy;
   s.ndf = int(m.f0_ndf.a + 0.5);
-  s.alpha = m.alpha_flags.xy;
+  s.alpha = m.alpha.xy;
   s.f0 = m.f0_ndf.rgb;
   s.diffuse = m.diffuse_tiling.rgb;
   s.hasNormalMap = MATERIAL_NORMAL_MAP != 0;

@@ -32,7 +32,7 @@ struct Vertex {
 struct MaterialGpu {
   glm::vec4 f0_ndf;
   glm::vec4 diffuse_tiling;
-  glm::vec4 alpha_flags;
+  glm::vec4 alpha;
 };
 
 // Mirrors LightData in shaders/common/lights.glsl (std430).
@@ -139,7 +139,7 @@ GpuScene::GpuScene(const Scene& scene) {
   std::vector<MaterialGpu> materials;
   for (const auto& m : scene.materials) {
     materials.push_back({glm::vec4(m.f0, m.ndf == Ndf::Beckmann ? 1.0f : 0.0f), glm::vec4(m.diffuse, m.normal_map_tiling),
-                         glm::vec4(m.alpha, m.normal_map ? 1.0f : 0.0f, 0.0f)});
+                         glm::vec4(m.alpha, 0.0f, 0.0f)});
     normal_maps_.push_back(m.normal_map ? upload_normal_map(*m.normal_map) : NormalMapTextures{});
   }
   materials.resize(kMaxMaterials);  // the uniform block's declared size
@@ -166,7 +166,6 @@ GpuScene::GpuScene(const Scene& scene) {
     }
     emitters_.push_back(std::move(e));
   }
-  light_count_ = static_cast<int>(scene.lights.size());
   lights.resize(kMaxLights);  // the uniform block's declared size
   lights_ = gl::make_buffer(static_cast<GLsizeiptr>(lights.size() * sizeof(LightGpu)), lights.data());
   check_gl("uploading the scene");

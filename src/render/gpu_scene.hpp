@@ -50,7 +50,6 @@ class GpuScene {
   [[nodiscard]] GLuint slope_cross_moment(int material) const {
     return normal_maps_[index(material)].slope_cross_moment.id();
   }
-  [[nodiscard]] int light_count() const { return light_count_; }
   /// The light buffer is sorted by kind; [x, y) is the index range of each kind.
   [[nodiscard]] const LightRanges& light_ranges() const { return light_ranges_; }
   /// Binds the material (binding 2) and light (binding 1) uniform buffers.
@@ -68,7 +67,6 @@ class GpuScene {
   std::vector<NormalMapTextures> normal_maps_;
   gl::Buffer materials_;
   gl::Buffer lights_;
-  int light_count_ = 0;
   LightRanges light_ranges_{};
 };
 

@@ -124,7 +124,7 @@ void Renderer::draw_module(const std::string& module, const ParamValues& params,
   rt.bind_and_clear();
   draw_scene(module, params,
              frame_uniforms(camera, camera.projection_matrix(static_cast<float>(width) / static_cast<float>(height)),
-                            {width, height, 1, scene_.light_count()}, {0, 0, 1, 0}));
+                            {width, height, 1, 0}, {0, 0, 1, 0}));
 }
 
 Frame Renderer::render(const MethodDescriptor& method, const ParamValues& params, const Camera& camera, int width, int height) {
@@ -156,7 +156,7 @@ Frame Renderer::render_reference(const Camera& camera, int width, int height, co
       const int gl_y = height - origin.y - size.y;  // the same tile in GL's y-up pixel rows
       high.bind_and_clear(size.x * k, size.y * k);
       draw_scene("passes/reference.glsl", {}, frame_uniforms(camera, camera.tile_projection_matrix(film, origin, size),
-                                         {size.x * k, size.y * k, k, scene_.light_count()},
+                                         {size.x * k, size.y * k, k, 0},
                                          {origin.x * k, gl_y * k, settings.effective_light_samples(), settings.seed}));
 
       glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);

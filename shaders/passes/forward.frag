@@ -1,29 +1,21 @@
 // Forward shading: builds the surface record once per fragment (derivatives in uniform control
 // flow), then sums the method's (or the reference's) radiance over every light. The module is
 // chosen by the renderer through the $METHOD include; this pass never names a method.
-// Variant defines (src/render/renderer.cpp): LIGHT_KINDS (common/light_loop.glsl) and
+// Variant defines (src/render/renderer.cpp): LIGHT_RANGES (common/light_loop.glsl) and
 // MATERIAL_NORMAL_MAP (1 when the material has a normal map).
 #include "common/frame.glsl"
-#include "common/material.glsl"
+#include "common/fragment_inputs.glsl"
 #include "common/lights.glsl"
 #include "common/surface.glsl"
 #include "$METHOD"
 #include "common/light_loop.glsl"
-
-layout(binding = 0) uniform sampler2D uNormalMap;
-uniform int uMaterial;
-
-in vec3 vPosition;
-in vec3 vNormal;
-in vec4 vTangent;
-in vec2 vUV;
 
 layout(location = 0) out vec4 outTotal;
 layout(location = 1) out vec4 outSpecular;
 
 void main() {
   MaterialData m = materials[uMaterial];
-  vec2 uv = vUV * m.diffuse_tiling.a;
+  vec2 uv = normalMapCoordinates(vUV);
   // Screen-space derivatives first, while control flow is uniform (fine: per pixel, not per quad).
   vec3 dPdx = dFdxFine(vPosition), dPdy = dFdyFine(vPosition);
   vec3 dNdx = dFdxFine(vNormal), dNdy = dFdyFine(vNormal);

@@ -47,7 +47,7 @@ void print_methods() {
   for (const auto& m : all_methods()) {
     std::cout << m.id << " — " << m.title << "\n  " << m.summary << "\n  source: " << m.citation << "\n";
     for (const auto& p : m.params)
-      std::cout << "  --param " << p.name << "=" << p.default_value << "  (" << p.min << " .. " << p.max << ") "
+      std::cout << "  --param " << p.name << "=" << p.default_text() << "  (" << p.allowed() << ") "
                 << p.description << "\n";
     std::cout << "\n";
   }

@@ -7,13 +7,21 @@
 
 namespace glintlab {
 
-/// A float parameter of a method; set in GLSL as the uniform `param_<name>`.
+/// A float parameter of a method; set in GLSL as the uniform `param_<name>`. A parameter with
+/// `choices` is an enumeration: it takes a choice's name (or its index), and the shader sees the
+/// index; min and max are then 0 and choices.size() - 1.
 struct ParamDecl {
   std::string name;
   float default_value;
   float min;
   float max;
   std::string description;
+  std::vector<std::string> choices = {};
+
+  /// "0 .. 1", or "a|b|c" for an enumeration.
+  [[nodiscard]] std::string allowed() const;
+  /// The default as a user writes it: the number, or the choice's name.
+  [[nodiscard]] std::string default_text() const;
 };
 
 struct MethodDescriptor {

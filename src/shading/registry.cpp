@@ -16,13 +16,33 @@ MethodDescriptor kaplanyan_rect_method();
 MethodDescriptor kaplanyan_ggx_method();
 MethodDescriptor tokuyoshi_method();
 MethodDescriptor lean_method();
+MethodDescriptor podee_method();
 
 const std::vector<MethodDescriptor>& all_methods() {
   static const std::vector<MethodDescriptor> methods = {
       conventional_method(),       toksvig_method(),     vlachos_method(),   kaplanyan_beckmann_method(),
       kaplanyan_rect_method(),     kaplanyan_ggx_method(), tokuyoshi_method(), lean_method(),
+      podee_method(),
   };
   return methods;
+}
+
+std::string ParamDecl::allowed() const {
+  std::ostringstream out;
+  if (choices.empty()) {
+    out << min << " .. " << max;
+  } else {
+    for (std::size_t i = 0; i < choices.size(); ++i) out << (i ? "|" : "") << choices[i];
+  }
+  return out.str();
+}
+
+std::string ParamDecl::default_text() const {
+  const auto index = static_cast<std::size_t>(default_value);
+  if (!choices.empty() && index < choices.size()) return choices[index];
+  std::ostringstream out;
+  out << default_value;
+  return out.str();
 }
 
 const ParamDecl* MethodDescriptor::find_param(const std::string& name) const {
@@ -67,6 +87,10 @@ ParamValues resolve_params(const MethodDescriptor& method, const std::map<std::s
       throw InputError("--param " + name + "=" + text + ": method '" + method.id + "' has no parameter '" + name +
                        "'; allowed: " + (known.empty() ? "none" : known));
     }
+    if (const auto it = std::find(p->choices.begin(), p->choices.end(), text); it != p->choices.end()) {
+      values[name] = static_cast<float>(it - p->choices.begin());
+      continue;
+    }
     std::size_t used = 0;
     float v = 0;
     try {
@@ -74,12 +98,11 @@ ParamValues resolve_params(const MethodDescriptor& method, const std::map<std::s
     } catch (const std::exception&) {
       used = 0;
     }
-    std::ostringstream range;
-    range << p->min << " .. " << p->max;
+    const std::string what = p->choices.empty() ? "not a number" : "not a choice";
     if (used != text.size() || text.empty() || !std::isfinite(v))
-      throw InputError("--param " + name + "=" + text + ": not a number; allowed: " + range.str());
-    if (v < p->min || v > p->max)
-      throw InputError("--param " + name + "=" + text + ": out of range for '" + method.id + "'; allowed: " + range.str());
+      throw InputError("--param " + name + "=" + text + ": " + what + "; allowed: " + p->allowed());
+    if (v < p->min || v > p->max || (!p->choices.empty() && v != std::floor(v)))
+      throw InputError("--param " + name + "=" + text + ": out of range for '" + method.id + "'; allowed: " + p->allowed());
     values[name] = v;
   }
   return values;

@@ -1,0 +1,58 @@
+// The reflected rays through the four corners of a pixel (Podee et al., sec. 3.1, Fig. 2), two
+// ways: exact, by interpolating the vertex attributes at the corners (interpolateAtOffset) and
+// reading the normal map there; or to first order, from the screen-space derivatives of the
+// centre's position and reflection vector. Call in uniform control flow (derivatives).
+#include "common/fragment_inputs.glsl"
+#include "common/frame.glsl"
+#include "common/surface.glsl"
+
+// Corner offsets from the pixel centre, counter-clockwise on screen.
+const vec2 PIXEL_CORNERS[4] = vec2[](vec2(-0.5, -0.5), vec2(0.5, -0.5), vec2(0.5, 0.5), vec2(-0.5, 0.5));
+
+struct CornerRays {
+  vec3 origin[4];     // surface points seen through the corners
+  vec3 direction[4];  // unit reflection vectors there
+};
+
+vec3 viewDirectionFrom(vec3 p) { return uCameraPos.w > 0.5 ? normalize(uCameraPos.xyz - p) : -uCameraForward.xyz; }
+
+// Exact corners: the attributes interpolated at the corner, the shading normal rebuilt there as
+// forward.frag builds it at the centre (same side of the surface, same normal-map frame). The
+// normal map is read with the centre's footprint, so a corner normal is as filtered as the
+// centre's: detail smaller than that footprint is invisible to the corners (the method's failure
+// case at a distance, docs/methods.md#podee).
+CornerRays interpolatedCornerRays(Surface s) {
+  CornerRays rays;
+  float side = dot(normalize(vNormal), s.vertexNormal) < 0.0 ? -1.0 : 1.0;
+  for (int i = 0; i < 4; ++i) {
+    vec2 offset = PIXEL_CORNERS[i];
+    vec3 p = interpolateAtOffset(vPosition, offset);
+    vec3 n = normalize(interpolateAtOffset(vNormal, offset)) * side;
+#if MATERIAL_NORMAL_MAP
+    vec4 tangent = interpolateAtOffset(vTangent, offset);
+    vec3 t = normalize(tangent.xyz - n * dot(n, tangent.xyz));
+    vec3 b = cross(n, t) * (tangent.w * side);
+    vec2 uv = normalMapCoordinates(interpolateAtOffset(vUV, offset));
+    vec3 m = textureGrad(uNormalMap, uv, s.dUVdx, s.dUVdy).xyz;
+    n = normalize(m.x * t + m.y * b + m.z * n);
+#endif
+    rays.origin[i] = p;
+    rays.direction[i] = reflect(-viewDirectionFrom(p), n);
+  }
+  return rays;
+}
+
+// First-order corners: r + dr/dx ox + dr/dy oy from the centre's shading normal (normal map
+// included). Fine derivatives are one-sided within the 2x2 quad, so two of the four corners are
+// extrapolated.
+CornerRays derivativeCornerRays(Surface s) {
+  vec3 r = reflect(-s.view, s.normal);
+  vec3 drdx = dFdxFine(r), drdy = dFdyFine(r);
+  CornerRays rays;
+  for (int i = 0; i < 4; ++i) {
+    vec2 o = PIXEL_CORNERS[i];
+    rays.origin[i] = s.position + o.x * s.dPdx + o.y * s.dPdy;
+    rays.direction[i] = normalize(r + o.x * drdx + o.y * drdy);
+  }
+  return rays;
+}

@@ -4,15 +4,11 @@
 // centre's position and reflection vector. Call in uniform control flow (derivatives).
 #include "common/fragment_inputs.glsl"
 #include "common/frame.glsl"
+#include "common/reflection_space_shading.glsl"
 #include "common/surface.glsl"
 
 // Corner offsets from the pixel centre, counter-clockwise on screen.
 const vec2 PIXEL_CORNERS[4] = vec2[](vec2(-0.5, -0.5), vec2(0.5, -0.5), vec2(0.5, 0.5), vec2(-0.5, 0.5));
-
-struct CornerRays {
-  vec3 origin[4];     // surface points seen through the corners
-  vec3 direction[4];  // unit reflection vectors there
-};
 
 vec3 viewDirectionFrom(vec3 p) { return uCameraPos.w > 0.5 ? normalize(uCameraPos.xyz - p) : -uCameraForward.xyz; }
 

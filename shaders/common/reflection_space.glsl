@@ -4,36 +4,97 @@
 // order of points are kept). Pure functions; tested in tests/gl/test_reflection_space.cpp.
 #include "common/constants.glsl"
 
+float cross2(vec2 a, vec2 b) { return a.x * b.y - a.y * b.x; }
+
 // Signed angle from u to v in (-pi, pi]; 0 when either is the zero vector.
 float signedAngle(vec2 u, vec2 v) {
-  float c = dot(u, v), s = u.x * v.y - u.y * v.x;
+  float c = dot(u, v), s = cross2(u, v);
   return c == 0.0 && s == 0.0 ? 0.0 : atan(s, c);
 }
 
-float cross2(vec2 a, vec2 b) { return a.x * b.y - a.y * b.x; }
+// acos through atan: exact to float precision where acos' polynomial lowering (some drivers,
+// Mesa's among them) is not.
+float preciseAcos(float x) { return atan(sqrt(max(1.0 - x * x, 0.0)), x); }
 
-// Signed area of (unit disk) ∩ (triangle 0, a, b). The segment a-b is split where it crosses the
-// circle, at parameters t1 <= t2 (clamped to [0, 1]): the piece inside the circle contributes its
-// triangle with the origin, the pieces outside the circular sectors they subtend. Summed over the
-// edges of a polygon this is the exact area of disk ∩ polygon (any simple polygon).
-float unitDiskTriangleArea(vec2 a, vec2 b) {
-  vec2 d = b - a;
-  float dd = dot(d, d);
-  if (dd < 1e-30) return 0.0;
-  float half_b = dot(a, d), c = dot(a, a) - 1.0;
-  float disc = half_b * half_b - dd * c;
-  float root = sqrt(max(disc, 0.0));
-  // A line that misses the circle: both parameters at the same end, so the segment is all sector.
-  float t1 = disc > 0.0 ? clamp((-half_b - root) / dd, 0.0, 1.0) : 0.0;
-  float t2 = disc > 0.0 ? clamp((-half_b + root) / dd, 0.0, 1.0) : 0.0;
-  vec2 p1 = a + t1 * d, p2 = a + t2 * d;
-  return 0.5 * (signedAngle(a, p1) + cross2(p1, p2) + signedAngle(p2, b));
+// Area of the circular segment cut from the unit disk by a chord subtending angle phi in [0, 2 pi]:
+// (phi - sin phi) / 2, by its series where the difference would cancel.
+float circularSegmentArea(float phi) {
+  float p2 = phi * phi;
+  return phi < 0.25 ? phi * p2 * (1.0 / 12.0 - p2 * (1.0 / 240.0 - p2 / 10080.0)) : 0.5 * (phi - sin(phi));
 }
 
-// Area of (unit disk) ∩ (the counter-clockwise polygon q0..q3).
+// Walks the boundary of (convex polygon) ∩ (unit disk) with the arcs replaced by chords: the
+// shoelace sum of the chord polygon (about an anchor near it, so that small polygons far from the
+// disk's centre keep their precision), and the exit point waiting for the arc to the next entry.
+struct ChordWalk {
+  vec2 anchor, first, last;
+  bool started;
+  float twiceArea;
+  bool exited, entryBeforeExit;
+  vec2 exitPoint, firstEntry;
+  float segments;  // area between the arcs and their chords
+};
+
+void walkTo(inout ChordWalk w, vec2 p) {
+  if (w.started) w.twiceArea += cross2(w.last - w.anchor, p - w.anchor);
+  else w.first = p;
+  w.started = true;
+  w.last = p;
+}
+
+// The arc from an exit to the next entry runs counter-clockwise inside the polygon.
+float arcSegment(vec2 exitPoint, vec2 entry) {
+  float phi = atan(cross2(exitPoint, entry), dot(exitPoint, entry));
+  return circularSegmentArea(phi < 0.0 ? phi + 2.0 * PI : phi);
+}
+
+void walkEdge(inout ChordWalk w, vec2 a, vec2 b) {
+  if (dot(a, a) <= 1.0) walkTo(w, a);
+  vec2 d = b - a;
+  float dd = dot(d, d);
+  float half_b = dot(a, d), c = dot(a, a) - 1.0;
+  float disc = half_b * half_b - dd * c;
+  if (dd < 1e-30 || disc <= 1e-12 * dd * dd) return;  // misses or touches the circle
+  float root = sqrt(disc);
+  // Stable roots of dd t^2 + 2 half_b t + c = 0.
+  float qq = -half_b - (half_b >= 0.0 ? root : -root);
+  float t1 = qq / dd, t2 = abs(qq) > 0.0 ? c / qq : t1;
+  vec2 ts = vec2(min(t1, t2), max(t1, t2));
+  if (ts.x > 0.0 && ts.x < 1.0) {  // entry
+    vec2 e = a + ts.x * d;
+    walkTo(w, e);
+    if (w.exited) w.segments += arcSegment(w.exitPoint, e);
+    else if (!w.entryBeforeExit) { w.entryBeforeExit = true; w.firstEntry = e; }
+    w.exited = false;
+  }
+  if (ts.y > 0.0 && ts.y < 1.0) {  // exit
+    w.exitPoint = a + ts.y * d;
+    walkTo(w, w.exitPoint);
+    w.exited = true;
+  }
+}
+
+bool insideConvexQuad(vec2 q[4], vec2 p) {
+  bool inside = true;
+  for (int i = 0; i < 4; ++i) inside = inside && cross2(q[(i + 1) % 4] - q[i], p - q[i]) >= 0.0;
+  return inside;
+}
+
+// Area of (unit disk) ∩ (the convex counter-clockwise polygon q0..q3): the chord polygon by the
+// shoelace formula plus a circular segment for every arc of the disk's rim inside the polygon.
 float unitDiskQuadArea(vec2 q[4]) {
-  return unitDiskTriangleArea(q[0], q[1]) + unitDiskTriangleArea(q[1], q[2]) + unitDiskTriangleArea(q[2], q[3]) +
-         unitDiskTriangleArea(q[3], q[0]);
+  ChordWalk w;
+  w.anchor = q[0];
+  w.started = false;
+  w.twiceArea = 0.0;
+  w.exited = false;
+  w.entryBeforeExit = false;
+  w.segments = 0.0;
+  for (int i = 0; i < 4; ++i) walkEdge(w, q[i], q[(i + 1) % 4]);
+  if (w.exited && w.entryBeforeExit) w.segments += arcSegment(w.exitPoint, w.firstEntry);
+  if (!w.started) return insideConvexQuad(q, vec2(0.0)) ? PI : 0.0;  // the rim is never crossed
+  w.twiceArea += cross2(w.last - w.anchor, w.first - w.anchor);
+  return 0.5 * w.twiceArea + w.segments;
 }
 
 // Shoelace area of the polygon q0..q3 (positive when counter-clockwise), about its first vertex
@@ -95,14 +156,14 @@ vec2 closestPointInConvexQuad(vec2 q[4], vec2 target) {
 float unitDiskLensArea(float r, float d) {
   if (d >= 1.0 + r) return 0.0;
   if (d <= abs(1.0 - r)) return PI * min(r, 1.0) * min(r, 1.0);
-  float a1 = acos(clamp((d * d + 1.0 - r * r) / (2.0 * d), -1.0, 1.0));
-  float a2 = acos(clamp((d * d + r * r - 1.0) / (2.0 * d * r), -1.0, 1.0));
+  float a1 = preciseAcos(clamp((d * d + 1.0 - r * r) / (2.0 * d), -1.0, 1.0));
+  float a2 = preciseAcos(clamp((d * d + r * r - 1.0) / (2.0 * d * r), -1.0, 1.0));
   float k = (-d + 1.0 + r) * (d + 1.0 - r) * (d - 1.0 + r) * (d + 1.0 + r);
   return a1 + r * r * a2 - 0.5 * sqrt(max(k, 0.0));
 }
 
 // How the covered fraction is computed (the method's `area` parameter).
-#define COVERAGE_EXACT 0   // exact area of disk ∩ quad (sectors plus triangles)
+#define COVERAGE_EXACT 0   // exact area of disk ∩ quad (chord polygon plus circular segments)
 #define COVERAGE_LENS 1    // the quad as the disk of equal area at the mean of its corners: a lens, closed form
 
 // Fraction of the convex counter-clockwise reflection space q covered by the unit disk.

@@ -1,0 +1,143 @@
+// Shading from a pixel's reflection space (Podee et al.): the light plane of a disk, sphere or
+// sun, the corner rays' hits with it, reflection-vector selection and result weighting, and
+// glintlab's lobe extension. Pure: the corner rays come in as data (common/pixel_corners.glsl
+// builds them in the forward pass), so tests run this on the device with any configuration.
+// Derivations: docs/methods.md#podee.
+#include "common/lobe_shading.glsl"
+#include "common/reflection_space.glsl"
+
+// The reflected rays through the four corners of a pixel.
+struct CornerRays {
+  vec3 origin[4];     // surface points seen through the corners
+  vec3 direction[4];  // unit reflection vectors there
+};
+
+// Choices of the method's parameters (src/shading/methods/podee.cpp).
+struct ReflectionSpaceOptions {
+  int area;     // 0: exact (ellipse), 1: light as a circle of equal area, 2: light and space as circles
+  bool glossy;  // the lobe extension; false: every material shaded as a mirror (the paper)
+};
+
+// The light as seen from p, on the light plane: through the light's centre c, normal l (the
+// unit direction from p to c), with orthonormal axes u, w along which the projected light is an
+// ellipse of semi-axes `axes`. valid is false when p does not see the emitting side.
+struct LightPlane {
+  vec3 centre, l, u, w;
+  vec2 axes;
+  float distance;  // from p to the plane; 1 for a sun (its plane is placed at unit distance)
+  bool valid;
+};
+
+LightPlane lightPlane(LightData L, vec3 p) {
+  LightPlane plane;
+  int type = lightType(L);
+  plane.l = lightCentreDirection(L, p);
+  float radius = L.position_radius.w;
+  if (type == LIGHT_SUN) {
+    // A disk at infinity: its cone's section at unit distance, radius tan(theta).
+    float cosT = L.direction_cos.w, sinT = sqrt(max(1.0 - cosT * cosT, 0.0));
+    plane.distance = 1.0;
+    plane.centre = p + plane.l;
+    plane.axes = vec2(sinT / max(cosT, 1e-6));
+    basisAround(plane.l, plane.u, plane.w);
+    plane.valid = true;
+    return plane;
+  }
+  plane.centre = L.position_radius.xyz;
+  plane.distance = length(plane.centre - p);
+  if (type == LIGHT_SPHERE) {
+    // The cone tangent to the sphere cuts the plane in a circle of radius R d / sqrt(d^2 - R^2).
+    // Inside the sphere every direction reaches the light: an unbounded circle.
+    float d2 = plane.distance * plane.distance;
+    plane.valid = true;
+    plane.axes = vec2(d2 > radius * radius * 1.0001 ? radius * plane.distance * inversesqrt(d2 - radius * radius) : 1e20);
+    basisAround(plane.l, plane.u, plane.w);
+    return plane;
+  }
+  // Disk: to first order in R/d the central projection of the disk is its orthographic
+  // projection along l: semi-axes R along u = n_L x l (in both planes) and R |n_L . l| along w.
+  vec3 n = L.direction_cos.xyz;
+  float cosL = -dot(n, plane.l);
+  plane.valid = cosL > 0.0;  // one-sided emitter
+  vec3 u = cross(n, plane.l);
+  float len = length(u);
+  vec3 t, b;
+  basisAround(plane.l, t, b);
+  plane.u = len > 1e-6 ? u / len : t;
+  plane.w = cross(plane.l, plane.u);
+  plane.axes = radius * vec2(1.0, max(cosL, 1e-6));
+  return plane;
+}
+
+// Probability that the lobe, aimed at the light's centre, reflects into the light: slope-space
+// mass within the light's image in half-vector slopes, a disk of radius tan(theta_L / 2) stretched
+// by 1 / cos(theta_d) across the plane of incidence (reflection halves in-plane angles and
+// compresses the others by cos theta_d), taken as the circle of equal area. Isotropic
+// GGX: t^2 / (alpha^2 + t^2); Beckmann: 1 - exp(-t^2 / alpha^2).
+float lobeMassOnLight(Surface s, float angularRadius, float cosThetaD) {
+  float alpha2 = s.alpha.x * s.alpha.y;
+  if (alpha2 <= 0.0) return 1.0;
+  float t = tan(0.5 * angularRadius);
+  float t2 = t * t / max(cosThetaD, 1e-4);
+  return s.ndf == NDF_BECKMANN ? 1.0 - exp(-t2 / alpha2) : t2 / (alpha2 + t2);
+}
+
+// Reflected radiance of a disk light, sphere light or sun through the pixel whose corner rays are
+// `corners`. Other kinds of light are not handled here.
+Radiance shadeReflectionSpace(Surface s, LightData L, CornerRays corners, ReflectionSpaceOptions options) {
+  int type = lightType(L);
+  LightPlane plane = lightPlane(L, s.position);
+  float angularRadius = atan(sqrt(plane.axes.x * plane.axes.y) / plane.distance);
+  // Nothing from a light whose emitting side p does not see, or that lies wholly below the
+  // surface's tangent plane (whatever the normal map says).
+  if (!plane.valid || dot(plane.l, s.vertexNormal) < -sin(angularRadius)) return Radiance(vec3(0.0), vec3(0.0));
+
+  // The smooth shading of `conventional` (never the mirror path): the diffuse term, and the
+  // specular term where the lobe is wider than the reflection space.
+  Radiance result = shadeLobe(s, L, materialLobe(s), 0.0);
+  if (dot(s.view, s.vertexNormal) <= 0.0) return result;
+
+  // Lobe extension: the light convolved with the lobe is approximated by the light scaled by
+  // 1/sqrt(P) with radiance P L (same energy, same peak). P = 1 for a mirror (the paper).
+  float cosThetaD = dot(s.view, normalize(s.view + plane.l));
+  float mass = options.glossy ? lobeMassOnLight(s, angularRadius, cosThetaD) : 1.0;
+  float scale = inversesqrt(max(mass, 1e-8));
+  vec2 axes = options.area >= 1 ? vec2(sqrt(plane.axes.x * plane.axes.y)) : plane.axes;  // circle of equal area
+  axes *= scale;
+
+  // Reflection space: the corner rays' hits with the light plane, in coordinates where the
+  // (scaled) light is the unit disk. Rays pointing away from the light (r . l <= 0) hit at
+  // infinity in the direction of their tangential part; they are clamped to 1e4 plane distances.
+  vec2 q[4];
+  for (int i = 0; i < 4; ++i) {
+    vec3 o = type == LIGHT_SUN ? s.position : corners.origin[i];
+    vec3 r = corners.direction[i];
+    float t = dot(plane.centre - o, plane.l) / max(dot(r, plane.l), 1e-4);
+    vec3 x = o + t * r - plane.centre;
+    q[i] = vec2(dot(x, plane.u), dot(x, plane.w)) / axes;
+  }
+  convexHullQuad(q);
+
+  // Reflection vector selection (sec. 3.1): the point closest to the light's centre.
+  vec2 closest = closestPointInConvexQuad(q, vec2(0.0));
+  vec3 selected = plane.centre + closest.x * axes.x * plane.u + closest.y * axes.y * plane.w;
+  vec3 l = normalize(selected - s.position);
+  if (dot(l, s.vertexNormal) <= 0.0) return result;  // the light is below this surface
+
+  // Result weighting (sec. 3.2): the covered fraction of the reflection space.
+  float coverage = unitDiskCoverage(q, options.area == 2 ? COVERAGE_LENS : COVERAGE_EXACT);
+  vec3 h = normalize(s.view + l);
+  float cosD = max(dot(s.view, h), 1e-4);
+  float lambda = smithLambdaOfT2(s.ndf, s.alpha.x * s.alpha.y * (1.0 - cosD * cosD) / (cosD * cosD));
+  float masking = options.glossy ? 1.0 / (1.0 + 2.0 * lambda) : 1.0;
+  vec3 podee = fresnelSchlick(s.f0, cosD) * masking * mass * coverage * lightRadiance(L);
+
+  // Where the lobe is wider than the reflection space the highlight is resolved and the smooth
+  // shading is right: weight by the areas (in the unscaled light's units) of the reflection
+  // space and of the lobe's blur, pi (1/P - 1). A mirror has no blur: podee alone.
+  float spaceArea = quadArea(q) * scale * scale;
+  float blurArea = PI * (scale * scale - 1.0);
+  float podeeWeight = blurArea > 0.0 ? spaceArea / (spaceArea + blurArea) : 1.0;
+  result.specular = mix(result.specular, podee, podeeWeight);
+  return result;
+}

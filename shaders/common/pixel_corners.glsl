@@ -1,5 +1,5 @@
 // The reflected rays through the four corners of a pixel (Podee et al., sec. 3.1, Fig. 2), two
-// ways: exact, by interpolating the vertex attributes at the corners (interpolateAtOffset) and
+// ways: exact, by interpolating the vertex attributes at the corners (attributesAtOffset) and
 // reading the normal map there; or to first order, from the screen-space derivatives of the
 // centre's position and reflection vector. Call in uniform control flow (derivatives).
 #include "common/fragment_inputs.glsl"
@@ -21,15 +21,13 @@ CornerRays interpolatedCornerRays(Surface s) {
   CornerRays rays;
   float side = dot(normalize(vNormal), s.vertexNormal) < 0.0 ? -1.0 : 1.0;
   for (int i = 0; i < 4; ++i) {
-    vec2 offset = PIXEL_CORNERS[i];
-    vec3 p = interpolateAtOffset(vPosition, offset);
-    vec3 n = normalize(interpolateAtOffset(vNormal, offset)) * side;
+    VertexAttributes corner = attributesAtOffset(PIXEL_CORNERS[i]);
+    vec3 p = corner.position;
+    vec3 n = normalize(corner.normal) * side;
 #if MATERIAL_NORMAL_MAP
-    vec4 tangent = interpolateAtOffset(vTangent, offset);
-    vec3 t = normalize(tangent.xyz - n * dot(n, tangent.xyz));
-    vec3 b = cross(n, t) * (tangent.w * side);
-    vec2 uv = normalMapCoordinates(interpolateAtOffset(vUV, offset));
-    vec3 m = textureGrad(uNormalMap, uv, s.dUVdx, s.dUVdy).xyz;
+    vec3 t = normalize(corner.tangent.xyz - n * dot(n, corner.tangent.xyz));
+    vec3 b = cross(n, t) * (corner.tangent.w * side);
+    vec3 m = textureGrad(uNormalMap, normalMapCoordinates(corner.uv), s.dUVdx, s.dUVdy).xyz;
     n = normalize(m.x * t + m.y * b + m.z * n);
 #endif
     rays.origin[i] = p;

@@ -14,24 +14,33 @@ struct CornerRays {
 
 // Choices of the method's parameters (src/shading/methods/podee.cpp).
 struct ReflectionSpaceOptions {
-  int area;     // 0: exact (ellipse), 1: light as a circle of equal area, 2: light and space as circles
+  int area;     // 0: exact (a disk in its own plane), 1: the paper's plane, light as a circle of equal
+                // area; 2: the same, light and reflection space as circles (a lens)
   bool glossy;  // the lobe extension; false: every material shaded as a mirror (the paper)
 };
 
-// The light as seen from p, on the light plane: through the light's centre c, normal l (the
-// unit direction from p to c), with orthonormal axes u, w along which the projected light is an
-// ellipse of semi-axes `axes`. valid is false when p does not see the emitting side.
+// The plane on which a pixel's reflection space is measured: through the light's centre c, with
+// orthonormal axes u, w along which the light is an ellipse of semi-axes `axes`. Rays reach it
+// travelling along +normal. valid is false when p does not see the emitting side.
 struct LightPlane {
-  vec3 centre, l, u, w;
+  vec3 centre, normal, u, w;
   vec2 axes;
-  float distance;  // from p to the plane; 1 for a sun (its plane is placed at unit distance)
+  vec3 l;               // unit direction from p to c
+  float distance;       // from p to c; 1 for a sun (its plane is placed at unit distance)
+  float angularRadius;  // of the cone of the light's solid angle seen from p
   bool valid;
 };
 
-LightPlane lightPlane(LightData L, vec3 p) {
+// ownPlane: a disk is measured in its own plane, where it is exactly a circle; otherwise in the
+// paper's plane, normal to l, where it is to first order in R/d an ellipse (its orthographic
+// projection along l). Spheres and suns are exact circles in the plane normal to l.
+LightPlane lightPlane(LightData L, vec3 p, bool ownPlane) {
   LightPlane plane;
   int type = lightType(L);
   plane.l = lightCentreDirection(L, p);
+  plane.normal = plane.l;
+  basisAround(plane.l, plane.u, plane.w);
+  plane.valid = true;
   float radius = L.position_radius.w;
   if (type == LIGHT_SUN) {
     // A disk at infinity: its cone's section at unit distance, radius tan(theta).
@@ -39,8 +48,7 @@ LightPlane lightPlane(LightData L, vec3 p) {
     plane.distance = 1.0;
     plane.centre = p + plane.l;
     plane.axes = vec2(sinT / max(cosT, 1e-6));
-    basisAround(plane.l, plane.u, plane.w);
-    plane.valid = true;
+    plane.angularRadius = acos(cosT);
     return plane;
   }
   plane.centre = L.position_radius.xyz;
@@ -49,23 +57,23 @@ LightPlane lightPlane(LightData L, vec3 p) {
     // The cone tangent to the sphere cuts the plane in a circle of radius R d / sqrt(d^2 - R^2).
     // Inside the sphere every direction reaches the light: an unbounded circle.
     float d2 = plane.distance * plane.distance;
-    plane.valid = true;
-    plane.axes = vec2(d2 > radius * radius * 1.0001 ? radius * plane.distance * inversesqrt(d2 - radius * radius) : 1e20);
-    basisAround(plane.l, plane.u, plane.w);
+    bool outside = d2 > radius * radius * 1.0001;
+    plane.axes = vec2(outside ? radius * plane.distance * inversesqrt(d2 - radius * radius) : 1e20);
+    plane.angularRadius = outside ? asin(radius / plane.distance) : 0.5 * PI;
     return plane;
   }
-  // Disk: to first order in R/d the central projection of the disk is its orthographic
-  // projection along l: semi-axes R along u = n_L x l (in both planes) and R |n_L . l| along w.
+  // Disk, normal n_L. u = n_L x l lies in both planes; the second axis is foreshortened by
+  // cos_L = -n_L . l in the paper's plane.
   vec3 n = L.direction_cos.xyz;
   float cosL = -dot(n, plane.l);
   plane.valid = cosL > 0.0;  // one-sided emitter
   vec3 u = cross(n, plane.l);
   float len = length(u);
-  vec3 t, b;
-  basisAround(plane.l, t, b);
-  plane.u = len > 1e-6 ? u / len : t;
-  plane.w = cross(plane.l, plane.u);
-  plane.axes = radius * vec2(1.0, max(cosL, 1e-6));
+  if (len > 1e-6) plane.u = u / len;
+  plane.normal = ownPlane ? -n : plane.l;
+  plane.w = cross(plane.normal, plane.u);
+  plane.axes = radius * vec2(1.0, ownPlane ? 1.0 : max(cosL, 1e-6));
+  plane.angularRadius = atan(radius * sqrt(max(cosL, 0.0)) / plane.distance);
   return plane;
 }
 
@@ -86,8 +94,8 @@ float lobeMassOnLight(Surface s, float angularRadius, float cosThetaD) {
 // `corners`. Other kinds of light are not handled here.
 Radiance shadeReflectionSpace(Surface s, LightData L, CornerRays corners, ReflectionSpaceOptions options) {
   int type = lightType(L);
-  LightPlane plane = lightPlane(L, s.position);
-  float angularRadius = atan(sqrt(plane.axes.x * plane.axes.y) / plane.distance);
+  LightPlane plane = lightPlane(L, s.position, options.area == 0);
+  float angularRadius = plane.angularRadius;
   // Nothing from a light whose emitting side p does not see, or that lies wholly below the
   // surface's tangent plane (whatever the normal map says).
   if (!plane.valid || dot(plane.l, s.vertexNormal) < -sin(angularRadius)) return Radiance(vec3(0.0), vec3(0.0));
@@ -106,13 +114,13 @@ Radiance shadeReflectionSpace(Surface s, LightData L, CornerRays corners, Reflec
   axes *= scale;
 
   // Reflection space: the corner rays' hits with the light plane, in coordinates where the
-  // (scaled) light is the unit disk. Rays pointing away from the light (r . l <= 0) hit at
+  // (scaled) light is the unit disk. Rays that never reach the plane (r . normal <= 0) hit it at
   // infinity in the direction of their tangential part; they are clamped to 1e4 plane distances.
   vec2 q[4];
   for (int i = 0; i < 4; ++i) {
     vec3 o = type == LIGHT_SUN ? s.position : corners.origin[i];
     vec3 r = corners.direction[i];
-    float t = dot(plane.centre - o, plane.l) / max(dot(r, plane.l), 1e-4);
+    float t = dot(plane.centre - o, plane.normal) / max(dot(r, plane.normal), 1e-4);
     vec3 x = o + t * r - plane.centre;
     q[i] = vec2(dot(x, plane.u), dot(x, plane.w)) / axes;
   }

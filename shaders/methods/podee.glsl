@@ -10,7 +10,7 @@
 uniform float param_mirror_alpha;
 uniform float param_corners;  // 0: interpolated (exact), 1: from derivatives
 uniform float param_origin;   // 0: rays from the corners' surface points, 1: from the centre (the paper)
-uniform float param_area;     // 0: exact (ellipse), 1: light as a circle, 2: light and quad as circles
+uniform float param_area;     // 0: exact, 1: light as a circle, 2: light and reflection space as circles
 uniform float param_glossy;   // 1: the lobe extension; 0: every material shaded as a mirror (the paper)
 
 CornerRays gCorners;  // this pixel's corner rays, set by prepareSurface

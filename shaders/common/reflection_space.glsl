@@ -24,8 +24,9 @@ float circularSegmentArea(float phi) {
 }
 
 // Walks the boundary of (convex polygon) ∩ (unit disk) with the arcs replaced by chords: the
-// shoelace sum of the chord polygon (about an anchor near it, so that small polygons far from the
-// disk's centre keep their precision), and the exit point waiting for the arc to the next entry.
+// shoelace sum of the chord polygon (about its first point, which lies in the disk, so that
+// neither huge polygons nor tiny ones far from the disk's centre lose precision), and the exit
+// point waiting for the arc to the next entry.
 struct ChordWalk {
   vec2 anchor, first, last;
   bool started;
@@ -36,8 +37,12 @@ struct ChordWalk {
 };
 
 void walkTo(inout ChordWalk w, vec2 p) {
-  if (w.started) w.twiceArea += cross2(w.last - w.anchor, p - w.anchor);
-  else w.first = p;
+  if (w.started) {
+    w.twiceArea += cross2(w.last - w.anchor, p - w.anchor);
+  } else {
+    w.first = p;
+    w.anchor = p;
+  }
   w.started = true;
   w.last = p;
 }
@@ -48,27 +53,35 @@ float arcSegment(vec2 exitPoint, vec2 entry) {
   return circularSegmentArea(phi < 0.0 ? phi + 2.0 * PI : phi);
 }
 
+// The edge a -> b crosses the rim where the line, at signed distance h from the centre, meets it:
+// half a chord sqrt(1 - h^2) either side of the foot of the perpendicular. Everything is measured
+// from the endpoint nearer the centre, so that an endpoint far away (a corner ray that nearly
+// misses the light plane) costs no precision.
 void walkEdge(inout ChordWalk w, vec2 a, vec2 b) {
   if (dot(a, a) <= 1.0) walkTo(w, a);
   vec2 d = b - a;
-  float dd = dot(d, d);
-  float half_b = dot(a, d), c = dot(a, a) - 1.0;
-  float disc = half_b * half_b - dd * c;
-  if (dd < 1e-30 || disc <= 1e-12 * dd * dd) return;  // misses or touches the circle
-  float root = sqrt(disc);
-  // Stable roots of dd t^2 + 2 half_b t + c = 0.
-  float qq = -half_b - (half_b >= 0.0 ? root : -root);
-  float t1 = qq / dd, t2 = abs(qq) > 0.0 ? c / qq : t1;
-  vec2 ts = vec2(min(t1, t2), max(t1, t2));
-  if (ts.x > 0.0 && ts.x < 1.0) {  // entry
-    vec2 e = a + ts.x * d;
+  float len = length(d);
+  if (!(len > 1e-30)) return;
+  vec2 dir = d / len;
+  bool fromA = dot(a, a) <= dot(b, b);
+  vec2 base = fromA ? a : b;
+  float h = cross2(dir, base);
+  if (abs(h) >= 1.0) return;  // misses (or touches) the circle
+  float halfChord = sqrt((1.0 - h) * (1.0 + h));
+  float foot = -dot(base, dir);
+  // Offsets of the crossings from base along dir; the segment spans [0, len] from a, [-len, 0] from b.
+  float entryOffset = foot - halfChord, exitOffset = foot + halfChord;
+  bool entryOnEdge = fromA ? entryOffset > 0.0 && entryOffset < len : entryOffset < 0.0 && entryOffset > -len;
+  bool exitOnEdge = fromA ? exitOffset > 0.0 && exitOffset < len : exitOffset < 0.0 && exitOffset > -len;
+  if (entryOnEdge) {
+    vec2 e = base + entryOffset * dir;
     walkTo(w, e);
     if (w.exited) w.segments += arcSegment(w.exitPoint, e);
     else if (!w.entryBeforeExit) { w.entryBeforeExit = true; w.firstEntry = e; }
     w.exited = false;
   }
-  if (ts.y > 0.0 && ts.y < 1.0) {  // exit
-    w.exitPoint = a + ts.y * d;
+  if (exitOnEdge) {
+    w.exitPoint = base + exitOffset * dir;
     walkTo(w, w.exitPoint);
     w.exited = true;
   }
@@ -84,7 +97,6 @@ bool insideConvexQuad(vec2 q[4], vec2 p) {
 // shoelace formula plus a circular segment for every arc of the disk's rim inside the polygon.
 float unitDiskQuadArea(vec2 q[4]) {
   ChordWalk w;
-  w.anchor = q[0];
   w.started = false;
   w.twiceArea = 0.0;
   w.exited = false;
@@ -106,29 +118,25 @@ float quadArea(vec2 q[4]) {
 // The convex hull of four points as a counter-clockwise quadrilateral (a triangle repeats one
 // vertex). A pixel's corner quad can be folded (a bow tie) or a dart when the surface curves
 // strongly inside the pixel; the bilinear map then covers its hull, so the hull is the reflection
-// space. The points are ordered by angle about their mean (a star-shaped simple polygon with
-// at most one reflex vertex), and a reflex vertex is replaced by its predecessor.
+// space. Orientation tests only (no angles), so one corner far away costs no precision: the two
+// segments that cross are the diagonals; if no two cross, one point lies inside the triangle of
+// the others, which is then the largest of the four triangles.
 void convexHullQuad(inout vec2 q[4]) {
-  vec2 m = 0.25 * (q[0] + q[1] + q[2] + q[3]);
-  float key[4];
-  for (int i = 0; i < 4; ++i) key[i] = signedAngle(vec2(1.0, 0.0), q[i] - m);
-  // Sorting network for four keys: (0,1) (2,3) (0,2) (1,3) (1,2).
-  const ivec2 pairs[5] = ivec2[](ivec2(0, 1), ivec2(2, 3), ivec2(0, 2), ivec2(1, 3), ivec2(1, 2));
-  for (int k = 0; k < 5; ++k) {
-    int i = pairs[k].x, j = pairs[k].y;
-    bool swap = key[i] > key[j];
-    float ki = key[i];
-    vec2 qi = q[i];
-    key[i] = swap ? key[j] : ki;
-    key[j] = swap ? ki : key[j];
-    q[i] = swap ? q[j] : qi;
-    q[j] = swap ? qi : q[j];
+  vec2 a = q[0], b = q[1], c = q[2], d = q[3];
+  float abc = cross2(b - a, c - a), abd = cross2(b - a, d - a), acd = cross2(c - a, d - a), bcd = cross2(c - b, d - b);
+  if (abc * acd > 0.0 && abd * bcd > 0.0) {         // diagonals ac, bd: a b c d
+  } else if (abc * abd < 0.0 && acd * bcd < 0.0) {  // diagonals ab, cd: a c b d
+    q = vec2[](a, c, b, d);
+  } else if (abd * acd < 0.0 && abc * bcd < 0.0) {  // diagonals ad, bc: a b d c
+    q = vec2[](a, b, d, c);
+  } else {
+    vec4 areas = abs(vec4(abc, abd, acd, bcd));
+    float largest = max(max(areas.x, areas.y), max(areas.z, areas.w));
+    q = largest == areas.x ? vec2[](a, b, c, c)
+      : largest == areas.y ? vec2[](a, b, d, d)
+      : largest == areas.z ? vec2[](a, c, d, d) : vec2[](b, c, d, d);
   }
-  vec2 p[4] = q;
-  for (int i = 0; i < 4; ++i) {
-    vec2 prev = p[(i + 3) % 4], next = p[(i + 1) % 4];
-    if (cross2(p[i] - prev, next - p[i]) < 0.0) q[i] = prev;
-  }
+  if (quadArea(q) < 0.0) q = vec2[](q[0], q[3], q[2], q[1]);
 }
 
 // The point of the convex counter-clockwise polygon q closest to `target`: the target itself
@@ -166,15 +174,30 @@ float unitDiskLensArea(float r, float d) {
 #define COVERAGE_EXACT 0   // exact area of disk ∩ quad (chord polygon plus circular segments)
 #define COVERAGE_LENS 1    // the quad as the disk of equal area at the mean of its corners: a lens, closed form
 
-// Fraction of the convex counter-clockwise reflection space q covered by the unit disk.
-// A reflection space of (numerically) zero area is a single reflection direction: its
-// mean is either on the light or not.
+// Area of (unit disk) ∩ (the convex counter-clockwise quad q), exact or as a lens.
+float unitDiskIntersectionArea(vec2 q[4], int mode) {
+  bool allInside = dot(q[0], q[0]) <= 1.0 && dot(q[1], q[1]) <= 1.0 && dot(q[2], q[2]) <= 1.0 && dot(q[3], q[3]) <= 1.0;
+  if (allInside) return quadArea(q);  // exact, and free of the cancellation of nearly equal terms
+  vec2 mean = 0.25 * (q[0] + q[1] + q[2] + q[3]);
+  return mode == COVERAGE_LENS ? unitDiskLensArea(sqrt(max(quadArea(q), 0.0) / PI), length(mean)) : unitDiskQuadArea(q);
+}
+
+// Fraction of the convex counter-clockwise quad q covered by the unit disk, in the plane's own
+// measure. A quad of (numerically) zero area is a single point: on the disk or not.
 float unitDiskCoverage(vec2 q[4], int mode) {
   float area = quadArea(q);
-  vec2 meanCorner = 0.25 * (q[0] + q[1] + q[2] + q[3]);
-  if (!(area > 1e-10)) return dot(meanCorner, meanCorner) <= 1.0 ? 1.0 : 0.0;
-  bool allInside = dot(q[0], q[0]) <= 1.0 && dot(q[1], q[1]) <= 1.0 && dot(q[2], q[2]) <= 1.0 && dot(q[3], q[3]) <= 1.0;
-  if (allInside) return 1.0;  // exact, and free of the cancellation of nearly equal terms
-  float covered = mode == COVERAGE_LENS ? unitDiskLensArea(sqrt(area / PI), length(meanCorner)) : unitDiskQuadArea(q);
-  return clamp(covered / area, 0.0, 1.0);
+  vec2 mean = 0.25 * (q[0] + q[1] + q[2] + q[3]);
+  if (!(area > 1e-10)) return dot(mean, mean) <= 1.0 ? 1.0 : 0.0;
+  return clamp(unitDiskIntersectionArea(q, mode) / area, 0.0, 1.0);
+}
+
+// Solid angle of the triangle a, b = a + ab, c = a + ac seen from the origin (Van Oosterom &
+// Strackee 1983): tan(Omega / 2) = |a . (b x c)| / (|a||b||c| + (a.b)|c| + (b.c)|a| + (c.a)|b|).
+// The edges come in separately, so that tiny, distant triangles keep their precision.
+float triangleSolidAngle(vec3 a, vec3 ab, vec3 ac) {
+  vec3 b = a + ab, c = a + ac;
+  float la = length(a), lb = length(b), lc = length(c);
+  float triple = abs(dot(a, cross(ab, ac)));
+  float denominator = la * lb * lc + dot(a, b) * lc + dot(b, c) * la + dot(c, a) * lb;
+  return 2.0 * atan(triple, denominator);
 }

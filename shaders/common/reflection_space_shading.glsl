@@ -12,6 +12,7 @@ struct CornerRays {
   vec3 direction[4];  // unit reflection vectors there
 };
 
+
 // Choices of the method's parameters (src/shading/methods/podee.cpp).
 struct ReflectionSpaceOptions {
   int area;     // 0: exact (a disk in its own plane), 1: the paper's plane, light as a circle of equal
@@ -132,8 +133,32 @@ Radiance shadeReflectionSpace(Surface s, LightData L, CornerRays corners, Reflec
   vec3 l = normalize(selected - s.position);
   if (dot(l, s.vertexNormal) <= 0.0) return result;  // the light is below this surface
 
-  // Result weighting (sec. 3.2): the covered fraction of the reflection space.
-  float coverage = unitDiskCoverage(q, options.area == 2 ? COVERAGE_LENS : COVERAGE_EXACT);
+  // Result weighting (sec. 3.2): the fraction of the pixel whose reflection reaches the light.
+  // Under the paper's assumption, a constant Jacobian from the pixel to the plane, it is the
+  // fraction of the reflection space the light covers. We assume a constant Jacobian to solid
+  // angle seen from p instead: the same on a flat mirror (the space is small and near the light),
+  // exact for a mirror sphere (whose image maps to reflected directions with a constant Jacobian),
+  // and bounded when corners point away from the light, where the plane's area is unbounded. The
+  // covered fraction is then (covered plane area) x (solid angle per unit plane area at the
+  // selected point) / (solid angle of the reflection space).
+  vec3 toCentre = plane.centre - s.position;
+  vec3 axisU = axes.x * plane.u, axisW = axes.y * plane.w;
+  vec3 first = toCentre + q[0].x * axisU + q[0].y * axisW;
+  vec3 e1 = (q[1].x - q[0].x) * axisU + (q[1].y - q[0].y) * axisW;
+  vec3 e2 = (q[2].x - q[0].x) * axisU + (q[2].y - q[0].y) * axisW;
+  vec3 e3 = (q[3].x - q[0].x) * axisU + (q[3].y - q[0].y) * axisW;
+  // The hits' solid angle carries the parallax of corner rays from different points (all of it
+  // on a flat mirror); the corner directions' own solid angle is the spread of a strongly curved
+  // pixel, which the plane truncates when corners point away from the light. The larger counts.
+  vec3 r0 = corners.direction[0], r1 = corners.direction[1], r2 = corners.direction[2], r3 = corners.direction[3];
+  float directionSolidAngle = triangleSolidAngle(r0, r1 - r0, r2 - r0) + triangleSolidAngle(r0, r2 - r0, r3 - r0);
+  float spaceSolidAngle = max(triangleSolidAngle(first, e1, e2) + triangleSolidAngle(first, e2, e3), directionSolidAngle);
+  vec3 toSelected = selected - s.position;
+  float perArea = abs(dot(plane.normal, toSelected)) / pow(dot(toSelected, toSelected), 1.5);
+  float covered = unitDiskIntersectionArea(q, options.area == 2 ? COVERAGE_LENS : COVERAGE_EXACT) * axes.x * axes.y;
+  vec2 mean = 0.25 * (q[0] + q[1] + q[2] + q[3]);
+  float coverage = spaceSolidAngle > 1e-20 ? clamp(covered * perArea / spaceSolidAngle, 0.0, 1.0)
+                                           : (dot(mean, mean) <= 1.0 ? 1.0 : 0.0);
   vec3 h = normalize(s.view + l);
   float cosD = max(dot(s.view, h), 1e-4);
   float lambda = smithLambdaOfT2(s.ndf, s.alpha.x * s.alpha.y * (1.0 - cosD * cosD) / (cosD * cosD));
@@ -141,11 +166,11 @@ Radiance shadeReflectionSpace(Surface s, LightData L, CornerRays corners, Reflec
   vec3 podee = fresnelSchlick(s.f0, cosD) * masking * mass * coverage * lightRadiance(L);
 
   // Where the lobe is wider than the reflection space the highlight is resolved and the smooth
-  // shading is right: weight by the areas (in the unscaled light's units) of the reflection
-  // space and of the lobe's blur, pi (1/P - 1). A mirror has no blur: podee alone.
-  float spaceArea = quadArea(q) * scale * scale;
-  float blurArea = PI * (scale * scale - 1.0);
-  float podeeWeight = blurArea > 0.0 ? spaceArea / (spaceArea + blurArea) : 1.0;
+  // shading is right: weight by the solid angles of the reflection space and of the lobe's blur,
+  // Omega_L (1/P - 1). A mirror has no blur: podee alone.
+  float lightSolidAngle = PI * plane.axes.x * plane.axes.y * abs(dot(plane.normal, toCentre)) / pow(dot(toCentre, toCentre), 1.5);
+  float blurSolidAngle = lightSolidAngle * (scale * scale - 1.0);
+  float podeeWeight = blurSolidAngle > 0.0 ? spaceSolidAngle / (spaceSolidAngle + blurSolidAngle) : 1.0;
   result.specular = mix(result.specular, podee, podeeWeight);
   return result;
 }

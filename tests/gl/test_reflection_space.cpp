@@ -149,6 +149,24 @@ TEST(ReflectionSpace, ExactCoverageMatchesPolygonClipping) {
   EXPECT_GT(partial, 60);  // the cases exercise the rim, not only all-or-nothing
 }
 
+TEST(ReflectionSpace, IntersectionAreaKeepsItsPrecisionWithACornerFarAway) {
+  // A corner ray that nearly misses the light plane lands 1e3 .. 1e5 light radii away; the area
+  // on the disk must not suffer (the rim crossings are measured from the nearer endpoint).
+  auto cases = random_quads(200, 17);
+  std::mt19937 rng(19);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (auto& c : cases) {
+    const double far = std::pow(10.0, 3 + 2 * u(rng)), phi = 2 * M_PI * u(rng);
+    c.b.z = static_cast<float>(far * std::cos(phi));
+    c.b.w = static_cast<float>(far * std::sin(phi));
+  }
+  const auto gpu = run(cases, "return vec4(unitDiskIntersectionArea(q, COVERAGE_EXACT), 0.0, 0.0, 0.0);");
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const double expected = disk_intersection(hull(cases[i].points()));
+    EXPECT_NEAR(gpu[i].x, expected, 1e-4 * M_PI) << "case " << i << ": " << cases[i].a.x << "," << cases[i].a.y << " " << cases[i].a.z << "," << cases[i].a.w << " " << cases[i].b.x << "," << cases[i].b.y << " " << cases[i].b.z << "," << cases[i].b.w;
+  }
+}
+
 TEST(ReflectionSpace, LensAreaMatchesIntegratedChords) {
   std::mt19937 rng(9);
   std::uniform_real_distribution<double> u(0.0, 1.0);

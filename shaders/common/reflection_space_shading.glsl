@@ -83,17 +83,17 @@ LightPlane lightPlane(LightData L, vec3 p, bool ownPlane) {
 // by 1 / cos(theta_d) across the plane of incidence (reflection halves in-plane angles and
 // compresses the others by cos theta_d), taken as the circle of equal area. Isotropic
 // GGX: t^2 / (alpha^2 + t^2); Beckmann: 1 - exp(-t^2 / alpha^2).
-float lobeMassOnLight(Surface s, float angularRadius, float cosThetaD) {
-  float alpha2 = s.alpha.x * s.alpha.y;
+float lobeMassOnLight(Lobe lobe, float angularRadius, float cosThetaD) {
+  float alpha2 = sqrt(max(determinant(lobe.A), 0.0));
   if (alpha2 <= 0.0) return 1.0;
   float t = tan(0.5 * angularRadius);
   float t2 = t * t / max(cosThetaD, 1e-4);
-  return s.ndf == NDF_BECKMANN ? 1.0 - exp(-t2 / alpha2) : t2 / (alpha2 + t2);
+  return lobe.ndf == NDF_BECKMANN ? 1.0 - exp(-t2 / alpha2) : t2 / (alpha2 + t2);
 }
 
 // Reflected radiance of a disk light, sphere light or sun through the pixel whose corner rays are
 // `corners`. Other kinds of light are not handled here.
-Radiance shadeReflectionSpace(Surface s, LightData L, CornerRays corners, ReflectionSpaceOptions options) {
+Radiance shadeReflectionSpace(Surface s, LightData L, CornerRays corners, Lobe lobe, ReflectionSpaceOptions options) {
   int type = lightType(L);
   LightPlane plane = lightPlane(L, s.position, options.area == 0);
   float angularRadius = plane.angularRadius;
@@ -103,13 +103,13 @@ Radiance shadeReflectionSpace(Surface s, LightData L, CornerRays corners, Reflec
 
   // The smooth shading of `conventional` (never the mirror path): the diffuse term, and the
   // specular term where the lobe is wider than the reflection space.
-  Radiance result = shadeLobe(s, L, materialLobe(s), 0.0);
+  Radiance result = shadeLobe(s, L, lobe, 0.0);
   if (dot(s.view, s.vertexNormal) <= 0.0) return result;
 
   // Lobe extension: the light convolved with the lobe is approximated by the light scaled by
   // 1/sqrt(P) with radiance P L (same energy, same peak). P = 1 for a mirror (the paper).
   float cosThetaD = dot(s.view, normalize(s.view + plane.l));
-  float mass = options.glossy ? lobeMassOnLight(s, angularRadius, cosThetaD) : 1.0;
+  float mass = options.glossy ? lobeMassOnLight(lobe, angularRadius, cosThetaD) : 1.0;
   float scale = inversesqrt(max(mass, 1e-8));
   vec2 axes = options.area >= 1 ? vec2(sqrt(plane.axes.x * plane.axes.y)) : plane.axes;  // circle of equal area
   axes *= scale;
@@ -161,7 +161,7 @@ Radiance shadeReflectionSpace(Surface s, LightData L, CornerRays corners, Reflec
                                            : (dot(mean, mean) <= 1.0 ? 1.0 : 0.0);
   vec3 h = normalize(s.view + l);
   float cosD = max(dot(s.view, h), 1e-4);
-  float lambda = smithLambdaOfT2(s.ndf, s.alpha.x * s.alpha.y * (1.0 - cosD * cosD) / (cosD * cosD));
+  float lambda = smithLambdaOfT2(lobe.ndf, sqrt(max(determinant(lobe.A), 0.0)) * (1.0 - cosD * cosD) / (cosD * cosD));
   float masking = options.glossy ? 1.0 / (1.0 + 2.0 * lambda) : 1.0;
   vec3 podee = fresnelSchlick(s.f0, cosD) * masking * mass * coverage * lightRadiance(L);
 

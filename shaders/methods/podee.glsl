@@ -6,14 +6,18 @@
 #include "common/lobe_shading.glsl"
 #include "common/pixel_corners.glsl"
 #include "common/reflection_space_shading.glsl"
+#include "common/slope_moments.glsl"
 
 uniform float param_mirror_alpha;
 uniform float param_corners;  // 0: interpolated (exact), 1: from derivatives
 uniform float param_origin;   // 0: rays from the corners' surface points, 1: from the centre (the paper)
 uniform float param_area;     // 0: exact, 1: light as a circle, 2: light and reflection space as circles
 uniform float param_glossy;   // 1: the lobe extension; 0: every material shaded as a mirror (the paper)
+uniform float param_lobe;     // 0: the material's lobe; 1: widened by the normal map's slope
+                              // covariance inside the pixel (LEAN), the variation the corners miss
 
 CornerRays gCorners;  // this pixel's corner rays, set by prepareSurface
+Lobe gLobe;           // this pixel's lobe, set by prepareSurface
 
 void prepareSurface(inout Surface s) {
   // Both variants in uniform control flow (the derivative one needs it); one is kept.
@@ -22,11 +26,19 @@ void prepareSurface(inout Surface s) {
   gCorners = param_corners < 0.5 ? interpolated : firstOrder;
   if (param_origin > 0.5)
     for (int i = 0; i < 4; ++i) gCorners.origin[i] = s.position;
+  gLobe = materialLobe(s);
+#if MATERIAL_NORMAL_MAP
+  // The corners read the normal map filtered over the pixel's footprint: normals that vary inside
+  // the footprint are invisible to them, but not to the footprint's slope moments.
+  vec2 meanSlope;
+  mat2 covariance = footprintSlopeCovariance(s, meanSlope);
+  if (param_lobe > 0.5) gLobe.A += 2.0 * covariance;
+#endif
 }
 
 Radiance shadeLight(Surface s, LightData L) {
   int type = lightType(L);
   if (type == LIGHT_DISK || type == LIGHT_SPHERE || type == LIGHT_SUN)
-    return shadeReflectionSpace(s, L, gCorners, ReflectionSpaceOptions(int(param_area + 0.5), param_glossy > 0.5));
-  return shadeLobe(s, L, materialLobe(s), param_mirror_alpha);  // delta and quad lights: the baseline
+    return shadeReflectionSpace(s, L, gCorners, gLobe, ReflectionSpaceOptions(int(param_area + 0.5), param_glossy > 0.5));
+  return shadeLobe(s, L, gLobe, param_mirror_alpha);  // delta and quad lights: the baseline
 }

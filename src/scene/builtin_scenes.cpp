@@ -287,6 +287,49 @@ radiance = 2500
 )";
 }
 
+std::string mirror_bumps() {
+  return R"(# A normal-mapped mirror under one small disk light: each bump reflects its own sub-pixel highlight.
+# Frame 0 is close: a bump spans several pixels. The camera path pulls back until a pixel holds
+# many bumps (the last frame): high normal variation inside the pixel.
+[film]
+width = 640
+height = 360
+
+[camera]
+position = [0.0, 0.9, 2.2]
+target = [0.0, 0.0, -1.5]
+fov = 40
+
+[camera.path]
+type = "dolly"
+to = [0.0, 5.0, 16.0]
+frames = 24
+
+[[material]]
+name = "hammered-chrome"
+ndf = "ggx"
+alpha = 0.002
+f0 = [0.95, 0.95, 0.95]
+normal_map = { generator = "bumps", resolution = 512, alpha = 0.12, waves = 96, max_frequency = 12, seed = 5 }
+normal_map_tiling = 1
+
+[[shape]]
+type = "plane"
+material = "hammered-chrome"
+size = 12
+uv_scale = 6
+translate = [0, 0, -2]
+
+[[light]]
+type = "disk"
+position = [0.6, 3.0, -7.0]
+direction = [-0.1, -0.55, 0.83]
+radius = 0.25
+radiance = 400
+visible = false
+)";
+}
+
 }  // namespace
 
 const std::vector<BuiltinScene>& builtin_scenes() {
@@ -295,6 +338,7 @@ const std::vector<BuiltinScene>& builtin_scenes() {
       {"tubes", "a hairball-like bundle of thin curved metal tubes"},
       {"bumpy-plane", "a normal-mapped metal plane with procedural bumps, seen at grazing angles"},
       {"mirror-disk", "near-mirror objects under one small disk light"},
+      {"mirror-bumps", "a normal-mapped mirror under one small disk light, pulled back until bumps are sub-pixel"},
   };
   return scenes;
 }
@@ -304,6 +348,7 @@ std::string builtin_scene_toml(const std::string& name) {
   if (name == "tubes") return tubes();
   if (name == "bumpy-plane") return bumpy_plane();
   if (name == "mirror-disk") return mirror_disk();
+  if (name == "mirror-bumps") return mirror_bumps();
   std::string known;
   for (const auto& s : builtin_scenes()) known += (known.empty() ? "" : ", ") + s.name;
   throw InputError("builtin:" + name + ": no such built-in scene; allowed: " + known);

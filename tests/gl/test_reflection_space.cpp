@@ -294,7 +294,7 @@ vec4 evaluate(vec4 a, vec4 b) {
   bool behind = kind == 2 ? below > sqrt(1.0 - L.direction_cos.w * L.direction_cos.w)
                           : dist * below > L.position_radius.w || (kind == 0 && dot(facing, toLight) >= 0.0);
   ReflectionSpaceOptions options = ReflectionSpaceOptions(int(i % 3u), i % 4u != 0u);
-  Radiance result = shadeReflectionSpace(s, L, corners, options);
+  Radiance result = shadeReflectionSpace(s, L, corners, materialLobe(s), options);
   float sum = result.specular.r + result.specular.g + result.specular.b + result.diffuse.r;
   return vec4(sum, behind ? 1.0 : 0.0, min(min(result.specular.r, result.diffuse.r), 0.0), 0.0);
 }

@@ -31,7 +31,11 @@ MethodDescriptor podee_method() {
                  {"glossy", 1, 0, 1,
                   "lobe extension: the light convolved with the material's lobe in the light plane (on), or "
                   "every material shaded as a mirror (off, the paper)",
-                  {"off", "on"}}},
+                  {"off", "on"}},
+                 {"lobe", 0, 0, 1,
+                  "the lobe of the extension: the material's, or widened by the normal map's slope covariance "
+                  "inside the pixel's footprint (LEAN), which the four filtered corner normals cannot see",
+                  {"material", "lean"}}},
       .tables = {},
   };
 }

@@ -1,0 +1,18 @@
+// The slope moments of the material's normal map (src/render/gpu_scene.cpp): (Bx, By, Bx^2, By^2)
+// and Bx By, mipmapped by plain averaging, so that one filtered lookup over the pixel's texture
+// footprint gives the mean and the covariance of the slopes there (LEAN mapping).
+#include "common/roughness_filtering.glsl"
+#include "common/surface.glsl"
+
+layout(binding = 1) uniform sampler2D uSlopeMoments;
+layout(binding = 2) uniform sampler2D uSlopeCrossMoment;
+
+// Covariance of the normal map's slopes inside the pixel's footprint; meanSlope: their mean B.
+// Call in uniform control flow (textureGrad with the surface's uv derivatives is safe anywhere,
+// but callers take it with their other per-pixel work).
+mat2 footprintSlopeCovariance(Surface s, out vec2 meanSlope) {
+  vec4 m = textureGrad(uSlopeMoments, s.uv, s.dUVdx, s.dUVdy);
+  float mxy = textureGrad(uSlopeCrossMoment, s.uv, s.dUVdx, s.dUVdy).r;
+  meanSlope = m.xy;
+  return leanSlopeCovariance(m.xy, vec3(m.zw, mxy));
+}

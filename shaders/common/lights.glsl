@@ -1,4 +1,4 @@
-// Lights (std430, binding 1; see src/render/gpu_scene.cpp) and their exact geometry: ray hits,
+// Lights (a std140 uniform buffer, binding 1; see src/render/gpu_scene.cpp) and their exact
 // sampling and densities. Approximations of a light belong to the methods, not here.
 #include "common/constants.glsl"
 

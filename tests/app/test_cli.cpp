@@ -77,6 +77,8 @@ TEST(Cli, BadInputClassesExitWith2AndWriteNothing) {
   expect_bad_input("render --param nonsense=1", {"nonsense", "mirror_alpha"});
   expect_bad_input("render --param mirror_alpha=7", {"mirror_alpha=7", "0 .. 1"});
   expect_bad_input("render --param mirror_alpha=abc", {"not a number"});
+  expect_bad_input("render --method podee --param area=bogus", {"area=bogus", "not a choice", "exact|circle|lens"});
+  expect_bad_input("render --method podee --param area=1.5", {"area=1.5", "exact|circle|lens"});
   expect_bad_input("compare --spp 50", {"--spp 50", "k*k"});
   expect_bad_input("render --width 100000", {"100000", "16384"});
   expect_bad_input("render --frame 999", {"--frame 999"});

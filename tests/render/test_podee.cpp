@@ -6,6 +6,7 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/error.hpp"
 #include "core/metrics.hpp"
 #include "gl_fixture.hpp"
 
@@ -183,4 +184,13 @@ TEST(Podee, LobeExtensionHoldsOnAGlossySphereUnderASphereLight) {
   EXPECT_LT(extension, 0.3 * rmse(render_with(f, "conventional").specular, reference.specular));
   EXPECT_LT(extension, 0.5 * rmse(render_with(f, "podee", {{"glossy", "off"}}).specular, reference.specular));
   EXPECT_NEAR(luminance_sum(render_with(f, "podee").specular) / luminance_sum(reference.specular), 1.0, 0.2);
+}
+
+TEST(Podee, EnumerationParametersTakeNamesOrIndices) {
+  const auto& m = find_method("podee");
+  EXPECT_EQ(resolve_params(m, {{"area", "lens"}}).at("area"), 2.0f);
+  EXPECT_EQ(resolve_params(m, {{"area", "1"}}).at("area"), 1.0f);
+  EXPECT_EQ(resolve_params(m, {}).at("glossy"), 1.0f);  // default "on"
+  EXPECT_THROW(resolve_params(m, {{"area", "ellipse"}}), InputError);
+  EXPECT_THROW(resolve_params(m, {{"corners", "0.5"}}), InputError);
 }

@@ -1,5 +1,5 @@
-// Lights (a std140 uniform buffer, binding 1; see src/render/gpu_scene.cpp) and their exact
-// sampling and densities. Approximations of a light belong to the methods, not here.
+// Lights (a std140 uniform buffer, binding 1; see src/render/gpu_scene.cpp) and their exact geometry:
+// ray hits, sampling and densities. Approximations of a light belong to the methods, not here.
 #include "common/constants.glsl"
 
 // Light kinds. Values mirror GpuLightKind in src/render/gpu_scene.hpp; the light buffer is sorted

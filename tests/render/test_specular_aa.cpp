@@ -8,6 +8,7 @@
 
 #include "core/metrics.hpp"
 #include "gl_fixture.hpp"
+#include "sequence_metrics.hpp"
 
 using namespace glintlab;
 using namespace glintlab::test;
@@ -73,42 +74,12 @@ angular_radius = 2
 
 namespace {
 
-struct Measured {
-  double rmse = 0;
-  double flicker = 0;
-};
-
-/// Mean RMSE and flicker over `frames` frames of a built-in scene's camera path, at 160x90
-/// against a 64-spp reference.
-std::map<std::string, Measured> measure(const std::string& builtin, int frames) {
-  SceneFixture f(builtin_scene_toml(builtin));
-  f.scene.path.frames = frames;
-  const int w = 160, h = 90;
-  std::vector<std::string> ids{"conventional"};
-  ids.insert(ids.end(), kFilteringMethods.begin(), kFilteringMethods.end());
-  std::map<std::string, FlickerAccumulator> flicker;
-  std::map<std::string, Measured> out;
-  for (int t = 0; t < frames; ++t) {
-    const Camera camera = f.scene.path.at(f.scene.camera, t);
-    ReferenceSettings settings;
-    settings.spp = 64;
-    settings.seed = t;
-    const Frame reference = f.renderer->render_reference(camera, w, h, settings);
-    for (const auto& id : ids) {
-      const auto& method = find_method(id);
-      const Frame m = f.renderer->render(method, resolve_params(method, {}), camera, w, h);
-      out[id].rmse += rmse(m.total, reference.total) / frames;
-      flicker[id].add_frame(m.total, reference.total);
-    }
-  }
-  for (auto& [id, acc] : flicker) out[id].flicker = acc.flicker();
-  return out;
-}
-
 enum class Claim { Better, Equal, RmseOnly };
 
 void check(const std::string& scene, const std::map<std::string, Claim>& claims) {
-  const auto measured = measure(scene, 6);
+  std::vector<std::string> ids{"conventional"};
+  ids.insert(ids.end(), kFilteringMethods.begin(), kFilteringMethods.end());
+  const auto measured = measure_sequence(scene, 6, ids);
   const Measured base = measured.at("conventional");
   for (const auto& [id, claim] : claims) {
     const Measured m = measured.at(id);

@@ -21,6 +21,16 @@ thumbnails() {
   printf '%s\n%s\n%s\n' "$header" "$rule" "$row"
 }
 
+# Flicker of every method over 12 frames of builtin:$2 at 320x180, under the heading $1.
+flicker_table() {
+  echo "$1"
+  echo
+  echo '```'
+  $B animate -q --scene "builtin:$2" --methods all --width 320 --height 180 --frames 12 -o "$out/animate-$2" | sed '$d'
+  echo '```'
+  echo
+}
+
 # RMSE of method $2 in the compare output directory $1 (metrics.csv).
 rmse_of() { awk -F, -v m="$2" '$1 == m { printf "%.4f", $2 }' "$1/metrics.csv"; }
 energy_of() { awk -F, -v m="$2" '$1 == m { printf "%.3f", $5 }' "$1/metrics.csv"; }
@@ -70,14 +80,7 @@ TEXT
   done
   echo "### Flicker over the camera path (320x180, 12 frames, 64-spp reference per frame)"
   echo
-  for s in $scenes; do
-    echo "builtin:$s"
-    echo
-    echo '```'
-    $B animate -q --scene builtin:$s --methods all --width 320 --height 180 --frames 12 -o "$out/animate-$s" | sed '$d'
-    echo '```'
-    echo
-  done
+  for s in $scenes; do flicker_table "builtin:$s" "$s"; done
   echo "### The failure case: far away, many bumps inside a pixel"
   echo
   echo "The last frame of builtin:mirror-bumps' camera path (frame 23), 1024-spp reference. The four"
@@ -191,14 +194,7 @@ TEXT
   echo
   echo "Flicker: mean over pixels and frames of |(m_t - r_t) - (m_{t-1} - r_{t-1})| (README)."
   echo
-  for s in $aa_scenes; do
-    echo "### builtin:$s"
-    echo
-    echo '```'
-    $B animate -q --scene builtin:$s --methods all --width 320 --height 180 --frames 12 -o "$out/animate-$s" | sed '$d'
-    echo '```'
-    echo
-  done
+  for s in $aa_scenes; do flicker_table "### builtin:$s" "$s"; done
   podee_section
   echo "## Speed"
   echo

@@ -7,3 +7,6 @@ layout(std140, binding = 0) uniform FrameBlock {
   ivec4 uTarget;       // xy: render-target size (pixels); z: sub-pixels per axis k; w: unused
   ivec4 uTile;         // xy: tile origin in sub-pixels of the whole film; z: light samples; w: seed
 };
+
+// Unit vector from p towards the camera (for an orthographic camera, against its view direction).
+vec3 viewDirectionFrom(vec3 p) { return uCameraPos.w > 0.5 ? normalize(uCameraPos.xyz - p) : -uCameraForward.xyz; }

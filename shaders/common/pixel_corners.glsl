@@ -1,7 +1,8 @@
 // The reflected rays through the four corners of a pixel (Podee et al., sec. 3.1, Fig. 2), two
 // ways: exact, by interpolating the vertex attributes at the corners (attributesAtOffset) and
 // reading the normal map there; or to first order, from the screen-space derivatives of the
-// centre's position and reflection vector. Call in uniform control flow (derivatives).
+// centre's position and reflection vector. Call in uniform control flow (derivatives; a branch
+// on a uniform is uniform).
 #include "common/fragment_inputs.glsl"
 #include "common/frame.glsl"
 #include "common/reflection_space_shading.glsl"
@@ -9,8 +10,6 @@
 
 // Corner offsets from the pixel centre, counter-clockwise on screen.
 const vec2 PIXEL_CORNERS[4] = vec2[](vec2(-0.5, -0.5), vec2(0.5, -0.5), vec2(0.5, 0.5), vec2(-0.5, 0.5));
-
-vec3 viewDirectionFrom(vec3 p) { return uCameraPos.w > 0.5 ? normalize(uCameraPos.xyz - p) : -uCameraForward.xyz; }
 
 // Exact corners: the attributes interpolated at the corner, the shading normal rebuilt there as
 // forward.frag builds it at the centre (same side of the surface, same normal-map frame). The
@@ -25,10 +24,9 @@ CornerRays interpolatedCornerRays(Surface s) {
     vec3 p = corner.position;
     vec3 n = normalize(corner.normal) * side;
 #if MATERIAL_NORMAL_MAP
-    vec3 t = normalize(corner.tangent.xyz - n * dot(n, corner.tangent.xyz));
-    vec3 b = cross(n, t) * (corner.tangent.w * side);
-    vec3 m = textureGrad(uNormalMap, normalMapCoordinates(corner.uv), s.dUVdx, s.dUVdy).xyz;
-    n = normalize(m.x * t + m.y * b + m.z * n);
+    vec3 t, b;
+    vertexTangentFrame(n, corner.tangent, side, t, b);
+    n = mappedNormal(textureGrad(uNormalMap, normalMapCoordinates(corner.uv), s.dUVdx, s.dUVdy).xyz, t, b, n);
 #endif
     rays.origin[i] = p;
     rays.direction[i] = reflect(-viewDirectionFrom(p), n);

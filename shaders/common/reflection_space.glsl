@@ -6,10 +6,19 @@
 
 float cross2(vec2 a, vec2 b) { return a.x * b.y - a.y * b.x; }
 
-// Signed angle from u to v in (-pi, pi]; 0 when either is the zero vector.
-float signedAngle(vec2 u, vec2 v) {
-  float c = dot(u, v), s = cross2(u, v);
-  return c == 0.0 && s == 0.0 ? 0.0 : atan(s, c);
+// Shoelace area of the polygon q0..q3 (positive when counter-clockwise), about its first vertex
+// so that small polygons far from the origin keep their precision.
+float quadArea(vec2 q[4]) {
+  return 0.5 * (cross2(q[1] - q[0], q[2] - q[0]) + cross2(q[2] - q[0], q[3] - q[0]));
+}
+
+// Is p inside the convex counter-clockwise polygon q0..q3 (boundary included)? Nothing is inside
+// a polygon without area; the repeated vertex of a triangle makes an edge of length 0, which
+// excludes nothing.
+bool insideConvexQuad(vec2 q[4], vec2 p) {
+  bool inside = quadArea(q) > 0.0;
+  for (int i = 0; i < 4; ++i) inside = inside && cross2(q[(i + 1) % 4] - q[i], p - q[i]) >= 0.0;
+  return inside;
 }
 
 // acos through atan: exact to float precision where acos' polynomial lowering (some drivers,
@@ -87,12 +96,6 @@ void walkEdge(inout ChordWalk w, vec2 a, vec2 b) {
   }
 }
 
-bool insideConvexQuad(vec2 q[4], vec2 p) {
-  bool inside = true;
-  for (int i = 0; i < 4; ++i) inside = inside && cross2(q[(i + 1) % 4] - q[i], p - q[i]) >= 0.0;
-  return inside;
-}
-
 // Area of (unit disk) ∩ (the convex counter-clockwise polygon q0..q3): the chord polygon by the
 // shoelace formula plus a circular segment for every arc of the disk's rim inside the polygon.
 float unitDiskQuadArea(vec2 q[4]) {
@@ -104,15 +107,13 @@ float unitDiskQuadArea(vec2 q[4]) {
   w.segments = 0.0;
   for (int i = 0; i < 4; ++i) walkEdge(w, q[i], q[(i + 1) % 4]);
   if (w.exited && w.entryBeforeExit) w.segments += arcSegment(w.exitPoint, w.firstEntry);
-  if (!w.started) return insideConvexQuad(q, vec2(0.0)) ? PI : 0.0;  // the rim is never crossed
+  // The rim is never crossed: the disk is wholly inside the polygon (whose area is then at least
+  // pi) or wholly outside.
+  if (!w.started) return insideConvexQuad(q, vec2(0.0)) ? min(PI, quadArea(q)) : 0.0;
   w.twiceArea += cross2(w.last - w.anchor, w.first - w.anchor);
-  return 0.5 * w.twiceArea + w.segments;
-}
-
-// Shoelace area of the polygon q0..q3 (positive when counter-clockwise), about its first vertex
-// so that small polygons far from the origin keep their precision.
-float quadArea(vec2 q[4]) {
-  return 0.5 * (cross2(q[1] - q[0], q[2] - q[0]) + cross2(q[2] - q[0], q[3] - q[0]));
+  // An intersection is no larger than either shape; this also holds for slivers of (nearly)
+  // collinear corners, whose edges cross the rim forth and back and leave rounding in the arcs.
+  return clamp(0.5 * w.twiceArea + w.segments, 0.0, min(PI, max(quadArea(q), 0.0)));
 }
 
 // The convex hull of four points as a counter-clockwise quadrilateral (a triangle repeats one
@@ -142,12 +143,10 @@ void convexHullQuad(inout vec2 q[4]) {
 // The point of the convex counter-clockwise polygon q closest to `target`: the target itself
 // when inside, else the closest point of the nearest edge (Podee et al., sec. 3.1).
 vec2 closestPointInConvexQuad(vec2 q[4], vec2 target) {
-  bool inside = true;
   float best = 1e38;
   vec2 closest = q[0];
   for (int i = 0; i < 4; ++i) {
     vec2 a = q[i], e = q[(i + 1) % 4] - a;
-    inside = inside && cross2(e, target - a) >= 0.0;
     float ee = dot(e, e);
     float t = ee > 0.0 ? clamp(dot(target - a, e) / ee, 0.0, 1.0) : 0.0;
     vec2 c = a + t * e;
@@ -157,7 +156,7 @@ vec2 closestPointInConvexQuad(vec2 q[4], vec2 target) {
       closest = c;
     }
   }
-  return inside ? target : closest;
+  return insideConvexQuad(q, target) ? target : closest;
 }
 
 // Area of the lens where the unit disk meets the disk of radius r centred at distance d.
@@ -167,7 +166,13 @@ float unitDiskLensArea(float r, float d) {
   float a1 = preciseAcos(clamp((d * d + 1.0 - r * r) / (2.0 * d), -1.0, 1.0));
   float a2 = preciseAcos(clamp((d * d + r * r - 1.0) / (2.0 * d * r), -1.0, 1.0));
   float k = (-d + 1.0 + r) * (d + 1.0 - r) * (d - 1.0 + r) * (d + 1.0 + r);
-  return a1 + r * r * a2 - 0.5 * sqrt(max(k, 0.0));
+  float lens = a1 + r * r * a2 - 0.5 * sqrt(max(k, 0.0));
+  // A small disk on the rim, where the general formula cancels: there the rim is a straight line
+  // at signed distance h = 1 - d from the small disk's centre, and the part of the small disk
+  // inside it is r^2 (pi - acos(h / r)) + h sqrt(r^2 - h^2).
+  float h = 1.0 - d;
+  float onALine = r * r * (PI - preciseAcos(clamp(h / r, -1.0, 1.0))) + h * sqrt(max(r * r - h * h, 0.0));
+  return clamp(r < 0.01 ? onALine : lens, 0.0, PI * min(r * r, 1.0));
 }
 
 // How the covered fraction is computed (the method's `area` parameter).
@@ -180,15 +185,6 @@ float unitDiskIntersectionArea(vec2 q[4], int mode) {
   if (allInside) return quadArea(q);  // exact, and free of the cancellation of nearly equal terms
   vec2 mean = 0.25 * (q[0] + q[1] + q[2] + q[3]);
   return mode == COVERAGE_LENS ? unitDiskLensArea(sqrt(max(quadArea(q), 0.0) / PI), length(mean)) : unitDiskQuadArea(q);
-}
-
-// Fraction of the convex counter-clockwise quad q covered by the unit disk, in the plane's own
-// measure. A quad of (numerically) zero area is a single point: on the disk or not.
-float unitDiskCoverage(vec2 q[4], int mode) {
-  float area = quadArea(q);
-  vec2 mean = 0.25 * (q[0] + q[1] + q[2] + q[3]);
-  if (!(area > 1e-10)) return dot(mean, mean) <= 1.0 ? 1.0 : 0.0;
-  return clamp(unitDiskIntersectionArea(q, mode) / area, 0.0, 1.0);
 }
 
 // Solid angle of the triangle a, b = a + ab, c = a + ac seen from the origin (Van Oosterom &

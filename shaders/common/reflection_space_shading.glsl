@@ -12,7 +12,6 @@ struct CornerRays {
   vec3 direction[4];  // unit reflection vectors there
 };
 
-
 // Choices of the method's parameters (src/shading/methods/podee.cpp).
 struct ReflectionSpaceOptions {
   int area;     // 0: exact (a disk in its own plane), 1: the paper's plane, light as a circle of equal
@@ -82,7 +81,7 @@ LightPlane lightPlane(LightData L, vec3 p, bool ownPlane) {
 // mass within the light's image in half-vector slopes, a disk of radius tan(theta_L / 2) stretched
 // by 1 / cos(theta_d) across the plane of incidence (reflection halves in-plane angles and
 // compresses the others by cos theta_d), taken as the circle of equal area. Isotropic
-// GGX: t^2 / (alpha^2 + t^2); Beckmann: 1 - exp(-t^2 / alpha^2).
+// GGX: t^2 / (alpha^2 + t^2); Beckmann: 1 - exp(-t^2 / alpha^2), with alpha^2 = sqrt(det A).
 float lobeMassOnLight(Lobe lobe, float angularRadius, float cosThetaD) {
   float alpha2 = sqrt(max(determinant(lobe.A), 0.0));
   if (alpha2 <= 0.0) return 1.0;
@@ -159,17 +158,16 @@ Radiance shadeReflectionSpace(Surface s, LightData L, CornerRays corners, Lobe l
   vec2 mean = 0.25 * (q[0] + q[1] + q[2] + q[3]);
   float coverage = spaceSolidAngle > 1e-20 ? clamp(covered * perArea / spaceSolidAngle, 0.0, 1.0)
                                            : (dot(mean, mean) <= 1.0 ? 1.0 : 0.0);
+  // Fresnel at the selected half vector; the lobe's Smith masking-shadowing (1 for a mirror).
+  vec3 wo = toLocal(s, s.view), wi = toLocal(s, l);
+  float masking = options.glossy ? 1.0 / (1.0 + lobeLambda(lobe, wo) + lobeLambda(lobe, wi)) : 1.0;
   vec3 h = normalize(s.view + l);
-  float cosD = max(dot(s.view, h), 1e-4);
-  float lambda = smithLambdaOfT2(lobe.ndf, sqrt(max(determinant(lobe.A), 0.0)) * (1.0 - cosD * cosD) / (cosD * cosD));
-  float masking = options.glossy ? 1.0 / (1.0 + 2.0 * lambda) : 1.0;
-  vec3 podee = fresnelSchlick(s.f0, cosD) * masking * mass * coverage * lightRadiance(L);
+  vec3 podee = fresnelSchlick(s.f0, max(dot(s.view, h), 0.0)) * masking * mass * coverage * lightRadiance(L);
 
   // Where the lobe is wider than the reflection space the highlight is resolved and the smooth
   // shading is right: weight by the solid angles of the reflection space and of the lobe's blur,
   // Omega_L (1/P - 1). A mirror has no blur: podee alone.
-  float lightSolidAngle = PI * plane.axes.x * plane.axes.y * abs(dot(plane.normal, toCentre)) / pow(dot(toCentre, toCentre), 1.5);
-  float blurSolidAngle = lightSolidAngle * (scale * scale - 1.0);
+  float blurSolidAngle = lightSolidAngle(L, s.position, plane.l) * (scale * scale - 1.0);
   float podeeWeight = blurSolidAngle > 0.0 ? spaceSolidAngle / (spaceSolidAngle + blurSolidAngle) : 1.0;
   result.specular = mix(result.specular, podee, podeeWeight);
   return result;

@@ -40,5 +40,15 @@ void setShadingNormal(inout Surface s, vec3 n) {
   s.bitangent = dot(b, s.vertexBitangent) < 0.0 ? -b : b;
 }
 
+// The vertex tangent frame around an interpolated normal n already turned to the seen side
+// (side = -1 when it was flipped): the tangent orthogonalised, the bitangent along the texture's +v.
+void vertexTangentFrame(vec3 n, vec4 tangent, float side, out vec3 t, out vec3 b) {
+  t = normalize(tangent.xyz - n * dot(n, tangent.xyz));
+  b = cross(n, t) * (tangent.w * side);
+}
+
+// A tangent-space normal-map value m in the frame (t, b, n), normalised.
+vec3 mappedNormal(vec3 m, vec3 t, vec3 b, vec3 n) { return normalize(m.x * t + m.y * b + m.z * n); }
+
 vec3 toLocal(Surface s, vec3 w) { return vec3(dot(w, s.tangent), dot(w, s.bitangent), dot(w, s.normal)); }
 vec3 toWorld(Surface s, vec3 w) { return w.x * s.tangent + w.y * s.bitangent + w.z * s.normal; }

@@ -15,7 +15,7 @@ void prepareSurface(inout Surface s) {
   mat2 covariance = footprintSlopeCovariance(s, b);
   // Shading frame: the mean normal (B, 1) over the vertex frame; the lobe's covariance lives in
   // the base surface's slope space and is used about the mean normal (exact for small B).
-  setShadingNormal(s, normalize(b.x * s.vertexTangent + b.y * s.vertexBitangent + s.vertexNormal));
+  setShadingNormal(s, mappedNormal(vec3(b, 1.0), s.vertexTangent, s.vertexBitangent, s.vertexNormal));
   gLeanLobe.A += 2.0 * covariance;
 #endif
 }

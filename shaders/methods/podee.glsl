@@ -20,19 +20,20 @@ CornerRays gCorners;  // this pixel's corner rays, set by prepareSurface
 Lobe gLobe;           // this pixel's lobe, set by prepareSurface
 
 void prepareSurface(inout Surface s) {
-  // Both variants in uniform control flow (the derivative one needs it); one is kept.
-  CornerRays interpolated = interpolatedCornerRays(s);
-  CornerRays firstOrder = derivativeCornerRays(s);
-  gCorners = param_corners < 0.5 ? interpolated : firstOrder;
+  // A branch on a uniform is uniform control flow, so the derivative variant may take its
+  // derivatives inside it.
+  if (param_corners < 0.5) gCorners = interpolatedCornerRays(s);
+  else gCorners = derivativeCornerRays(s);
   if (param_origin > 0.5)
     for (int i = 0; i < 4; ++i) gCorners.origin[i] = s.position;
   gLobe = materialLobe(s);
 #if MATERIAL_NORMAL_MAP
   // The corners read the normal map filtered over the pixel's footprint: normals that vary inside
   // the footprint are invisible to them, but not to the footprint's slope moments.
-  vec2 meanSlope;
-  mat2 covariance = footprintSlopeCovariance(s, meanSlope);
-  if (param_lobe > 0.5) gLobe.A += 2.0 * covariance;
+  if (param_lobe > 0.5) {
+    vec2 meanSlope;
+    gLobe.A += 2.0 * footprintSlopeCovariance(s, meanSlope);
+  }
 #endif
 }
 

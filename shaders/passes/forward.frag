@@ -28,7 +28,7 @@ void main() {
 
   Surface s;
   s.position = vPosition;
-  s.view = uCameraPos.w > 0.5 ? normalize(uCameraPos.xyz - vPosition) : -uCameraForward.xyz;
+  s.view = viewDirectionFrom(vPosition);
   // Two-sided: flip the frame to the side of the triangle the camera sees (face normal from
   // the position derivatives, so silhouettes of closed objects keep their vertex normals).
   vec3 faceNormal = cross(dPdx, dPdy);
@@ -37,13 +37,13 @@ void main() {
   float side = 1.0;
   if (faceLength > 0.0 && dot(faceNormal, s.view) * dot(faceNormal, n) < 0.0) side = -1.0;
   n *= side;
-  vec3 t = normalize(vTangent.xyz - n * dot(n, vTangent.xyz));
-  vec3 b = cross(n, t) * (vTangent.w * side);  // along +v whichever side is seen
+  vec3 t, b;
+  vertexTangentFrame(n, vTangent, side, t, b);
   s.vertexNormal = n;
   s.vertexTangent = t;
   s.vertexBitangent = b;
   s.mappedNormal = mapped;
-  setShadingNormal(s, normalize(mapped.x * t + mapped.y * b + mapped.z * n));
+  setShadingNormal(s, mappedNormal(mapped, t, b, n));
   s.uv = uv;
   s.dPdx = dPdx;
   s.dPdy = dPdy;

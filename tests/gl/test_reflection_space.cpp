@@ -138,7 +138,7 @@ TEST(ReflectionSpace, HullOfFoldedAndDartQuadsMatchesMonotoneChain) {
 TEST(ReflectionSpace, ExactCoverageMatchesPolygonClipping) {
   // Quads from 1/50 to 4 disk radii, inside, outside, across the rim and around the whole disk.
   const auto cases = random_quads(300, 5);
-  const auto gpu = run(cases, "return vec4(unitDiskCoverage(q, COVERAGE_EXACT), 0.0, 0.0, 0.0);");
+  const auto gpu = run(cases, "return vec4(unitDiskIntersectionArea(q, COVERAGE_EXACT) / quadArea(q), 0.0, 0.0, 0.0);");
   int partial = 0;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const Poly h = hull(cases[i].points());
@@ -172,7 +172,7 @@ TEST(ReflectionSpace, LensAreaMatchesIntegratedChords) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<glm::vec4> a, b;
   for (int i = 0; i < 100; ++i) {
-    const double r = std::exp(std::log(0.05) + u(rng) * std::log(80.0));
+    const double r = std::exp(std::log(0.002) + u(rng) * std::log(2000.0));  // both sides of the small-disk form
     a.emplace_back(r, u(rng) * (1.2 + r), 0, 0);
     b.emplace_back(0);
   }
@@ -205,8 +205,8 @@ TEST(ReflectionSpace, SelectedPointIsTheClosestPointToTheLightsCentre) {
 }
 
 TEST(ReflectionSpace, DegenerateQuadsGiveFiniteFractions) {
-  // Coincident corners, collinear corners, zero quads, points at 1e8 and mixtures: the coverage
-  // of every mode stays finite and within [0, 1]; a zero-area space is all or nothing.
+  // Coincident corners, collinear corners, zero quads, points at 1e8 and mixtures: the covered
+  // area of every mode stays finite, within [0, pi] and within the quad's own area.
   std::mt19937 rng(13);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   std::vector<QuadCase> cases;
@@ -226,15 +226,16 @@ TEST(ReflectionSpace, DegenerateQuadsGiveFiniteFractions) {
   }
   const auto gpu = run(cases, R"(
   vec2 c = closestPointInConvexQuad(q, vec2(0.0));
-  return vec4(unitDiskCoverage(q, COVERAGE_EXACT), unitDiskCoverage(q, COVERAGE_LENS), c);)");
+  return vec4(unitDiskIntersectionArea(q, COVERAGE_EXACT), unitDiskIntersectionArea(q, COVERAGE_LENS), c);)");
   for (std::size_t i = 0; i < cases.size(); ++i) {
     for (int k = 0; k < 4; ++k) ASSERT_TRUE(std::isfinite(gpu[i][k])) << "case " << i << " component " << k;
-    EXPECT_GE(gpu[i].x, 0.0f);
-    EXPECT_LE(gpu[i].x, 1.0f);
-    EXPECT_GE(gpu[i].y, 0.0f);
-    EXPECT_LE(gpu[i].y, 1.0f);
-    if (i % 4 == 0) {
-      EXPECT_EQ(gpu[i].x, glm::dot(glm::vec2(cases[i].a), glm::vec2(cases[i].a)) <= 1.0f ? 1.0f : 0.0f);
+    // No larger than the disk or the quad (up to the float rounding of the quad's area).
+    double extent = 0;
+    for (const auto& p : cases[i].points()) extent = std::max({extent, std::abs(p.x), std::abs(p.y)});
+    const double bound = std::min(M_PI, area(hull(cases[i].points())) + 1e-6 * extent * extent) * (1 + 1e-4) + 1e-6;
+    for (int k = 0; k < 2; ++k) {
+      EXPECT_GE(gpu[i][k], 0.0f) << "case " << i;
+      EXPECT_LE(gpu[i][k], bound) << "case " << i << " mode " << k << ": " << cases[i].a.x << "," << cases[i].a.y << " " << cases[i].a.z << "," << cases[i].a.w << " " << cases[i].b.x << "," << cases[i].b.y << " " << cases[i].b.z << "," << cases[i].b.w;
     }
   }
 }

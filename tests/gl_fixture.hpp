@@ -3,6 +3,7 @@
 // given as TOML text, and to evaluate GLSL functions on the device through a compute shader.
 #include <epoxy/gl.h>
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -34,9 +35,10 @@ struct SceneFixture {
     gpu = std::make_unique<GpuScene>(scene);
     renderer = std::make_unique<Renderer>(shaders(), *gpu);
   }
-  Frame method(const std::string& id) {
+  /// The scene's camera and film rendered by a method, parameters as `--param` gives them.
+  Frame method(const std::string& id, const std::map<std::string, std::string>& params = {}) {
     const auto& m = find_method(id);
-    return renderer->render(m, resolve_params(m, {}), scene.camera, scene.film.width, scene.film.height);
+    return renderer->render(m, resolve_params(m, params), scene.camera, scene.film.width, scene.film.height);
   }
   Frame reference(int spp, int light_samples = 0) {
     ReferenceSettings s;

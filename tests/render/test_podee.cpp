@@ -16,11 +16,6 @@ using namespace glintlab::test;
 
 namespace {
 
-Frame render_with(SceneFixture& f, const std::string& id, const std::map<std::string, std::string>& params = {}) {
-  const auto& m = find_method(id);
-  return f.renderer->render(m, resolve_params(m, params), f.scene.camera, f.scene.film.width, f.scene.film.height);
-}
-
 double luminance_sum(const Image& image) {
   double sum = 0;
   for (const auto& p : image.pixels()) sum += 0.2126 * p.r + 0.7152 * p.g + 0.0722 * p.b;
@@ -113,12 +108,12 @@ TEST(Podee, FlatMirrorUnderADiskGivesTheCoveredFraction) {
   SceneFixture f(kFlatMirror);
   const auto fraction = covered_fraction(f.scene);
   for (const std::string corners : {"interpolated", "derivatives"}) {
-    const auto e = compare_with_fraction(render_with(f, "podee", {{"corners", corners}}).specular, fraction);
+    const auto e = compare_with_fraction(f.method("podee", {{"corners", corners}}).specular, fraction);
     EXPECT_GE(e.edge_pixels, 15) << corners;
     EXPECT_LT(e.worst, 0.02) << corners;
   }
-  EXPECT_GT(compare_with_fraction(render_with(f, "conventional").specular, fraction).worst, 0.3);
-  EXPECT_GT(compare_with_fraction(render_with(f, "podee", {{"origin", "centre"}}).specular, fraction).worst, 0.1);
+  EXPECT_GT(compare_with_fraction(f.method("conventional").specular, fraction).worst, 0.3);
+  EXPECT_GT(compare_with_fraction(f.method("podee", {{"origin", "centre"}}).specular, fraction).worst, 0.1);
 }
 
 namespace {
@@ -167,9 +162,9 @@ TEST(Podee, MirrorSphereKeepsTheHighlightsEnergy) {
   const Frame reference = f.reference(1024);
   const double reference_energy = luminance_sum(reference.specular);
   ASSERT_GT(reference_energy, 0.0);
-  const double conventional_rmse = rmse(render_with(f, "conventional").specular, reference.specular);
+  const double conventional_rmse = rmse(f.method("conventional").specular, reference.specular);
   for (const std::string corners : {"interpolated", "derivatives"}) {
-    const Frame podee = render_with(f, "podee", {{"corners", corners}});
+    const Frame podee = f.method("podee", {{"corners", corners}});
     EXPECT_NEAR(luminance_sum(podee.specular) / reference_energy, 1.0, 0.05) << corners;
     EXPECT_LT(rmse(podee.specular, reference.specular), 0.05 * conventional_rmse) << corners;
   }
@@ -181,10 +176,10 @@ TEST(Podee, LobeExtensionHoldsOnAGlossySphereUnderASphereLight) {
   // the whole light's radiance into the covered fraction and ignores the lobe's spread.
   SceneFixture f(sphere_scene("0.03", "type = \"sphere\""));
   const Frame reference = f.reference(1024);
-  const double extension = rmse(render_with(f, "podee").specular, reference.specular);
-  EXPECT_LT(extension, 0.3 * rmse(render_with(f, "conventional").specular, reference.specular));
-  EXPECT_LT(extension, 0.5 * rmse(render_with(f, "podee", {{"glossy", "off"}}).specular, reference.specular));
-  EXPECT_NEAR(luminance_sum(render_with(f, "podee").specular) / luminance_sum(reference.specular), 1.0, 0.2);
+  const double extension = rmse(f.method("podee").specular, reference.specular);
+  EXPECT_LT(extension, 0.3 * rmse(f.method("conventional").specular, reference.specular));
+  EXPECT_LT(extension, 0.5 * rmse(f.method("podee", {{"glossy", "off"}}).specular, reference.specular));
+  EXPECT_NEAR(luminance_sum(f.method("podee").specular) / luminance_sum(reference.specular), 1.0, 0.2);
 }
 
 TEST(Podee, EnumerationParametersTakeNamesOrIndices) {

@@ -22,7 +22,13 @@ Lobe axisAlignedLobe(int ndf, vec2 alpha) {
   return Lobe(ndf, mat2(a.x * a.x, 0.0, 0.0, a.y * a.y), vec2(0.0));
 }
 
-Lobe materialLobe(Surface s) { return axisAlignedLobe(s.ndf, s.alpha); }
+// The material's lobe: A = 2 Sigma for the slope covariance Sigma of deviations alpha / sqrt(2)
+// and correlation rho (Chermain et al. 2021, eq. 16).
+Lobe materialLobe(Surface s) {
+  Lobe lobe = axisAlignedLobe(s.ndf, s.alpha);
+  lobe.A[0][1] = lobe.A[1][0] = s.rho * sqrt(lobe.A[0][0] * lobe.A[1][1]);
+  return lobe;
+}
 
 // Largest eigenvalue of a symmetric 2x2 matrix.
 float maxEigenvalue(mat2 m) {

@@ -4,7 +4,9 @@
 struct MaterialData {
   vec4 f0_ndf;          // rgb: Schlick F0; a: 0 GGX, 1 Beckmann
   vec4 diffuse_tiling;  // rgb: Lambert albedo; a: normal-map repeats per uv unit
-  vec4 alpha;           // xy: alpha_x, alpha_y; zw: unused (a normal map is a program variant)
+  vec4 alpha_rho;       // xy: alpha_x, alpha_y; z: slope correlation rho; w: unused
+  vec4 glints;          // glinty materials (a program variant, MATERIAL_GLINTS): x: ln microfacets
+                        // per uv area; y: relative area; z: max anisotropy; w: unused
 };
 #define MAX_MATERIALS 256
 layout(std140, binding = 2) uniform MaterialBlock { MaterialData materials[MAX_MATERIALS]; };

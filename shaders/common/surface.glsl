@@ -18,6 +18,7 @@ struct Surface {
   // Material
   int ndf;
   vec2 alpha;
+  float rho;       // slope correlation of the material's lobe (glinty materials; 0 otherwise)
   vec3 f0;
   vec3 diffuse;
   bool hasNormalMap;

@@ -52,7 +52,8 @@ void main() {
   s.dUVdx = dUVdx;
   s.dUVdy = dUVdy;
   s.ndf = int(m.f0_ndf.a + 0.5);
-  s.alpha = m.alpha.xy;
+  s.alpha = m.alpha_rho.xy;
+  s.rho = m.alpha_rho.z;
   s.f0 = m.f0_ndf.rgb;
   s.diffuse = m.diffuse_tiling.rgb;
   s.hasNormalMap = MATERIAL_NORMAL_MAP != 0;

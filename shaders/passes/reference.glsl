@@ -8,14 +8,33 @@
 #include "common/lights.glsl"
 #include "common/sampling.glsl"
 #include "common/surface.glsl"
+#if MATERIAL_GLINTS
+#include "common/glint_shading.glsl"
+GlintSurface gGlint;  // the glinty BRDF with this sub-pixel's own footprint, no anti-aliasing
+#endif
 
 // Below this alpha the material is treated as a perfect mirror (a delta BRDF).
 const float REFERENCE_MIRROR_ALPHA = 1e-4;
 
 uint gReferenceLightIndex = 0u;
 
-// Ground truth takes the surface as it is.
-void prepareSurface(inout Surface s) {}
+// Ground truth takes the surface as it is; a glinty material's patch-SDF is that of the
+// sub-pixel's footprint (the papers' protocol).
+void prepareSurface(inout Surface s) {
+#if MATERIAL_GLINTS
+  MaterialData m = materials[uMaterial];
+  gGlint = glintSurface(s, m.glints, m.diffuse_tiling.a, s.rho);
+#endif
+}
+
+// The material's specular BRDF times the cosine.
+vec3 materialSpecularCos(Surface s, vec3 wo, vec3 wi) {
+#if MATERIAL_GLINTS
+  return glintSpecularCos(gGlint, wo, wi, s.f0, vec2(0.0), vec2(0.0), false);
+#else
+  return specularCos(s.ndf, wo, wi, s.alpha, s.f0);
+#endif
+}
 
 // Solid-angle density of the BRDF sampling strategy below.
 float brdfSamplePdf(Surface s, vec3 wo, vec3 wi) {
@@ -34,7 +53,16 @@ Radiance shadeLight(Surface s, LightData L) {
   vec3 wo = toLocal(s, s.view);
   if (wo.z <= 0.0) return result;
 
-  if (!lightHasExtent(L)) return shadeDeltaLight(s, materialLobe(s), L, wo);
+  if (!lightHasExtent(L)) {
+#if MATERIAL_GLINTS
+    vec3 l, irradiance;
+    glintLightIncidence(L, s.position, l, irradiance);
+    vec3 wi = toLocal(s, l);
+    return Radiance(diffuseCos(s.diffuse, wi) * irradiance, materialSpecularCos(s, wo, wi) * irradiance);
+#else
+    return shadeDeltaLight(s, materialLobe(s), L, wo);
+#endif
+  }
 
   int k = uTarget.z;
   ivec2 global = uTile.xy + ivec2(gl_FragCoord.xy);
@@ -46,7 +74,7 @@ Radiance shadeLight(Surface s, LightData L) {
   vec2 rotLight = hashToUnit2(seed);
   vec2 rotBrdf = hashToUnit2(pcgHash(seed + 1u));
   vec3 radiance = lightRadiance(L);
-  bool mirror = max(s.alpha.x, s.alpha.y) < REFERENCE_MIRROR_ALPHA;
+  bool mirror = max(s.alpha.x, s.alpha.y) < REFERENCE_MIRROR_ALPHA && MATERIAL_GLINTS == 0;
 
   for (uint j = 0u; j < n; ++j) {
     vec3 dir;
@@ -58,7 +86,7 @@ Radiance shadeLight(Surface s, LightData L) {
         if (!mirror) {
           float pdfBrdf = brdfSamplePdf(s, wo, wi);
           float w = pdfLight * pdfLight / (pdfLight * pdfLight + pdfBrdf * pdfBrdf);
-          result.specular += specularCos(s.ndf, wo, wi, s.alpha, s.f0) * radiance * (w / pdfLight);
+          result.specular += materialSpecularCos(s, wo, wi) * radiance * (w / pdfLight);
         }
       }
     }
@@ -71,7 +99,7 @@ Radiance shadeLight(Surface s, LightData L) {
         float pdfL = lightPdf(L, s.position, dirWorld, dist);
         if (pdfBrdf > 0.0) {
           float w = pdfBrdf * pdfBrdf / (pdfBrdf * pdfBrdf + pdfL * pdfL);
-          result.specular += specularCos(s.ndf, wo, wi, s.alpha, s.f0) * radiance * (w / pdfBrdf);
+          result.specular += materialSpecularCos(s, wo, wi) * radiance * (w / pdfBrdf);
         }
       }
     }

@@ -1,8 +1,10 @@
 #include "render/gpu_scene.hpp"
 
+#include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/vec4.hpp>
 
+#include "core/cache_directory.hpp"
 #include "gl/context.hpp"
 
 namespace glintlab {
@@ -32,7 +34,8 @@ struct Vertex {
 struct MaterialGpu {
   glm::vec4 f0_ndf;
   glm::vec4 diffuse_tiling;
-  glm::vec4 alpha;
+  glm::vec4 alpha_rho;
+  glm::vec4 glints;
 };
 
 // Mirrors LightData in shaders/common/lights.glsl (std430).
@@ -138,10 +141,15 @@ GpuScene::GpuScene(const Scene& scene) {
 
   std::vector<MaterialGpu> materials;
   for (const auto& m : scene.materials) {
+    const GlintParams g = m.glints.value_or(GlintParams{});
     materials.push_back({glm::vec4(m.f0, m.ndf == Ndf::Beckmann ? 1.0f : 0.0f), glm::vec4(m.diffuse, m.normal_map_tiling),
-                         glm::vec4(m.alpha, 0.0f, 0.0f)});
+                         glm::vec4(m.alpha, m.rho, 0.0f),
+                         glm::vec4(g.log_density, g.relative_area, g.max_anisotropy, 0.0f)});
     normal_maps_.push_back(m.normal_map ? upload_normal_map(*m.normal_map) : NormalMapTextures{});
+    glinty_.push_back(m.glints.has_value());
   }
+  if (std::find(glinty_.begin(), glinty_.end(), true) != glinty_.end())
+    glint_dictionary_ = upload_glint_dictionary(GlintDictionary::load_or_generate({}, default_cache_directory()));
   materials.resize(kMaxMaterials);  // the uniform block's declared size
   materials_ = gl::make_buffer(static_cast<GLsizeiptr>(materials.size() * sizeof(MaterialGpu)), materials.data());
 

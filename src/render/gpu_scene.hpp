@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "gl/objects.hpp"
+#include "render/glint_dictionary_texture.hpp"
 #include "scene/scene.hpp"
 
 namespace glintlab {
@@ -50,6 +51,10 @@ class GpuScene {
   [[nodiscard]] GLuint slope_cross_moment(int material) const {
     return normal_maps_[index(material)].slope_cross_moment.id();
   }
+  [[nodiscard]] bool glinty(int material) const { return glinty_[index(material)]; }
+  /// The glint dictionary (shaders/common/glint_dictionary.glsl), uploaded when a material is
+  /// glinty; texture 0 otherwise.
+  [[nodiscard]] const GlintDictionaryTexture& glint_dictionary() const { return glint_dictionary_; }
   /// The light buffer is sorted by kind; [x, y) is the index range of each kind.
   [[nodiscard]] const LightRanges& light_ranges() const { return light_ranges_; }
   /// Binds the material (binding 2) and light (binding 1) uniform buffers.
@@ -65,6 +70,8 @@ class GpuScene {
   std::vector<GpuMesh> meshes_;
   std::vector<GpuEmitter> emitters_;
   std::vector<NormalMapTextures> normal_maps_;
+  std::vector<bool> glinty_;
+  GlintDictionaryTexture glint_dictionary_;
   gl::Buffer materials_;
   gl::Buffer lights_;
   LightRanges light_ranges_{};

@@ -1,9 +1,9 @@
 #include "render/reference_cache.hpp"
 
 #include <cstdio>
-#include <cstdlib>
 #include <iostream>
 
+#include "core/cache_directory.hpp"
 #include "core/hash.hpp"
 #include "core/image_io.hpp"
 
@@ -11,12 +11,7 @@ namespace glintlab {
 
 ReferenceCache::ReferenceCache(std::filesystem::path directory) : directory_(std::move(directory)) {}
 
-std::filesystem::path ReferenceCache::default_directory() {
-  if (const char* d = std::getenv("GLINTLAB_CACHE_DIR"); d && *d) return d;
-  if (const char* d = std::getenv("XDG_CACHE_HOME"); d && *d) return std::filesystem::path(d) / "glintlab";
-  if (const char* h = std::getenv("HOME"); h && *h) return std::filesystem::path(h) / ".cache" / "glintlab";
-  return {};
-}
+std::filesystem::path ReferenceCache::default_directory() { return default_cache_directory(); }
 
 std::uint64_t ReferenceCache::key(const Scene& scene, const Camera& camera, int width, int height,
                                   const ReferenceSettings& settings, std::uint64_t shaders_hash,

@@ -1,7 +1,7 @@
 #pragma once
 // On-disk cache of ground-truth frames, keyed by a hash of everything that affects them: scene
 // content, camera, film size, reference settings, shader sources and the GL renderer.
-// Location: $GLINTLAB_CACHE_DIR, else $XDG_CACHE_HOME/glintlab, else ~/.cache/glintlab.
+// Location: default_cache_directory() (core/cache_directory.hpp).
 #include <cstdint>
 #include <filesystem>
 #include <optional>

@@ -41,19 +41,22 @@ RenderTarget& Renderer::target(int width, int height) {
   return *target_;
 }
 
-ShaderDefines forward_variant(const std::string& module, const LightRanges& light_ranges, bool normal_map) {
+ShaderDefines forward_variant(const std::string& module, const LightRanges& light_ranges, MaterialVariant material) {
   std::string ranges = "ivec2[](";
   for (std::size_t k = 0; k < light_ranges.size(); ++k)
     ranges += (k ? ", ivec2(" : "ivec2(") + std::to_string(light_ranges[k].x) + ", " + std::to_string(light_ranges[k].y) + ")";
-  return {{"$METHOD", module}, {"LIGHT_RANGES", ranges + ")"}, {"MATERIAL_NORMAL_MAP", normal_map ? "1" : "0"}};
+  return {{"$METHOD", module},
+          {"LIGHT_RANGES", ranges + ")"},
+          {"MATERIAL_NORMAL_MAP", material.normal_map ? "1" : "0"},
+          {"MATERIAL_GLINTS", material.glints ? "1" : "0"}};
 }
 
 GLuint Renderer::forward_program(const std::string& module, int material) {
-  const bool normal_map = scene_.normal_map(material) != 0;
-  GLuint& program = forward_programs_[{module, normal_map}];
+  const MaterialVariant variant{scene_.normal_map(material) != 0, scene_.glinty(material)};
+  GLuint& program = forward_programs_[{module, variant}];
   if (!program)
     program = shaders_.graphics("passes/forward.vert", "passes/forward.frag",
-                                forward_variant(module, scene_.light_ranges(), normal_map));
+                                forward_variant(module, scene_.light_ranges(), variant));
   return program;
 }
 
@@ -84,6 +87,7 @@ void Renderer::draw_scene(const std::string& module, const ParamValues& params, 
     glBindTextureUnit(0, scene_.normal_map(mesh.material));
     glBindTextureUnit(1, scene_.slope_moments(mesh.material));
     glBindTextureUnit(2, scene_.slope_cross_moment(mesh.material));
+    glBindTextureUnit(3, scene_.glint_dictionary().texture.id());
     glBindVertexArray(mesh.vao.id());
     glDrawElements(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr);
   }

@@ -31,10 +31,17 @@ struct ReferenceSettings {
 /// Throws InputError unless spp is k*k with k in 1..32.
 void validate_spp(int spp);
 
+/// What of a material changes the forward program: MATERIAL_NORMAL_MAP and MATERIAL_GLINTS.
+struct MaterialVariant {
+  bool normal_map = false;
+  bool glints = false;
+  auto operator<=>(const MaterialVariant&) const = default;
+};
+
 /// Defines of one variant of the forward pass (shaders/passes/forward.frag): the shading module
 /// (a method's or the reference's), the index range of each light kind in the light buffer and
-/// whether the material has a normal map.
-ShaderDefines forward_variant(const std::string& module, const LightRanges& light_ranges, bool normal_map);
+/// the material's variant.
+ShaderDefines forward_variant(const std::string& module, const LightRanges& light_ranges, MaterialVariant material);
 
 /// Called after each reference tile: (tiles done, tiles total).
 using ProgressFn = std::function<void(int, int)>;
@@ -69,7 +76,7 @@ class Renderer {
   const GpuScene& scene_;
   gl::Buffer frame_ubo_;
   std::unique_ptr<RenderTarget> target_;
-  std::map<std::pair<std::string, bool>, GLuint> forward_programs_;  // (module, normal map)
+  std::map<std::pair<std::string, MaterialVariant>, GLuint> forward_programs_;
 };
 
 }  // namespace glintlab

@@ -22,7 +22,9 @@ NormalMap load_normal_map(const std::filesystem::path& path) {
   return map;
 }
 
-NormalMap generate_bumps(int resolution, float slope_sigma, int waves, int max_frequency, std::uint32_t seed) {
+NormalMap generate_bumps(int resolution, float slope_sigma, int waves, int max_frequency, std::uint32_t seed,
+                         float anisotropy, float angle_degrees) {
+  const float axis = glm::radians(angle_degrees);
   struct Wave {
     glm::vec2 k;  // integer cycles per tile
     float phase;
@@ -41,7 +43,11 @@ NormalMap generate_bumps(int resolution, float slope_sigma, int waves, int max_f
     };
     for (int attempt = 0; attempt < 1000 && (k == glm::vec2(0.0f) || taken(k)); ++attempt) {
       const float r = 1.0f + (static_cast<float>(max_frequency) - 1.0f) * std::sqrt(uni(rng));
-      const float theta = glm::two_pi<float>() * uni(rng);
+      // Isotropic: any direction. Anisotropic: a deviation from the axis in [-pi/2, pi/2) (k and
+      // -k are one wave) narrowed by the anisotropy.
+      const float u = uni(rng);
+      const float theta = anisotropy == 1.0f ? glm::two_pi<float>() * u
+                                             : axis + glm::pi<float>() * (u - 0.5f) / anisotropy;
       k = glm::round(glm::vec2(r * std::cos(theta), r * std::sin(theta)));
     }
     if (k == glm::vec2(0.0f) || taken(k)) break;  // fewer distinct frequencies than waves asked for

@@ -22,7 +22,11 @@ NormalMap load_normal_map(const std::filesystem::path& path);
 /// Periodic Gaussian random surface (random-phase cosine waves, after Heitz's procedural Beckmann
 /// surfaces) whose slopes have standard deviation `slope_sigma` / sqrt(2) per axis, i.e. a
 /// Beckmann-like NDF with roughness alpha = slope_sigma. Frequencies are integers so it tiles.
-NormalMap generate_bumps(int resolution, float slope_sigma, int waves, int max_frequency, std::uint32_t seed);
+/// anisotropy > 1 narrows the wave directions about `angle_degrees` (from +u towards +v) by that
+/// factor: ridges across that direction, slopes elongated along it (correlated in uv when the
+/// angle is not a multiple of 90 degrees); the total slope variance is unchanged.
+NormalMap generate_bumps(int resolution, float slope_sigma, int waves, int max_frequency, std::uint32_t seed,
+                         float anisotropy = 1.0f, float angle_degrees = 0.0f);
 
 /// Voronoi "flakes": each cell tilted by a normal drawn from a Beckmann distribution of roughness
 /// `alpha`; toroidal, so it tiles. `cells` is the number of cells along one edge.

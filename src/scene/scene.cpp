@@ -14,6 +14,9 @@ std::uint64_t Scene::content_hash() const {
   for (const auto& m : materials) {
     h.value(m.ndf);
     h.value(m.alpha);
+    h.value(m.rho);
+    h.value(m.glints.has_value());
+    if (m.glints) h.value(*m.glints);
     h.value(m.f0);
     h.value(m.diffuse);
     h.value(m.normal_map_tiling);

@@ -1,4 +1,5 @@
 // The TOML scene format. Every key is documented in docs/scene-format.md; keep the two in step.
+#include <cmath>
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <map>
@@ -91,8 +92,11 @@ std::shared_ptr<const NormalMap> parse_normal_map(TomlReader r, const std::files
     const auto alpha = static_cast<float>(r.get_number("alpha", 0.3, 0.0, 2.0));
     const int waves = r.get_int("waves", 128, 1, 4096);
     const int max_frequency = r.get_int("max_frequency", 24, 1, resolution / 2);
+    const auto anisotropy = static_cast<float>(r.get_number("anisotropy", 1.0, 1.0, 64.0));
+    const auto angle = static_cast<float>(r.get_number("angle", 0.0, -360.0, 360.0));
     r.finish();
-    return std::make_shared<NormalMap>(generate_bumps(resolution, alpha, waves, max_frequency, seed));
+    return std::make_shared<NormalMap>(
+        generate_bumps(resolution, alpha, waves, max_frequency, seed, anisotropy, angle));
   }
   const int cells = r.get_int("cells", 32, 1, resolution);
   const auto alpha = static_cast<float>(r.get_number("alpha", 0.2, 0.0, 2.0));
@@ -100,11 +104,30 @@ std::shared_ptr<const NormalMap> parse_normal_map(TomlReader r, const std::files
   return std::make_shared<NormalMap>(generate_flakes(resolution, cells, alpha, seed));
 }
 
+// The keys of a glinty material (docs/scene-format.md): a Beckmann microsurface given by its
+// slope deviations sigma (alpha = sqrt(2) sigma) and correlation rho, made of discrete microfacets.
+void parse_glints(TomlReader& r, Material& m) {
+  m.ndf = Ndf::Beckmann;
+  m.alpha = std::sqrt(2.0f) * r.get_vec2("sigma", glm::vec2(0.1f), 0.005, 0.7);
+  m.rho = static_cast<float>(r.get_number("rho", 0.0, -0.99, 0.99));
+  GlintParams g;
+  g.log_density = static_cast<float>(r.get_number("log_density", g.log_density, 0.0, 60.0));
+  g.relative_area = static_cast<float>(r.get_number("relative_area", g.relative_area, 0.0, 1.0));
+  g.max_anisotropy = static_cast<float>(r.get_number("max_anisotropy", g.max_anisotropy, 1.0, 64.0));
+  m.glints = g;
+}
+
 Material parse_material(TomlReader r, const std::filesystem::path& base_dir) {
   Material m;
   m.name = r.require_string("name");
-  m.ndf = r.get_string("ndf", "ggx", {"ggx", "beckmann"}) == "ggx" ? Ndf::GGX : Ndf::Beckmann;
-  m.alpha = r.get_vec2("alpha", m.alpha, 0.0, 1.0);
+  if (r.get_string("type", "microfacet", {"microfacet", "glinty"}) == "glinty") {
+    for (const char* key : {"alpha", "ndf"})
+      if (r.has(key)) r.fail(key, "is not a key of a glinty material; it has sigma (alpha = sqrt(2) sigma) and a Beckmann NDF");
+    parse_glints(r, m);
+  } else {
+    m.ndf = r.get_string("ndf", "ggx", {"ggx", "beckmann"}) == "ggx" ? Ndf::GGX : Ndf::Beckmann;
+    m.alpha = r.get_vec2("alpha", m.alpha, 0.0, 1.0);
+  }
   const bool has_f0 = r.has("f0");
   const bool has_metal = r.has("base_color") || r.has("metallic");
   if (has_f0 && has_metal) r.fail("f0", "cannot be combined with base_color/metallic; give one or the other");

@@ -17,12 +17,14 @@ MethodDescriptor kaplanyan_ggx_method();
 MethodDescriptor tokuyoshi_method();
 MethodDescriptor lean_method();
 MethodDescriptor podee_method();
+MethodDescriptor chermain2020_method();
+MethodDescriptor chermain2021_method();
 
 const std::vector<MethodDescriptor>& all_methods() {
   static const std::vector<MethodDescriptor> methods = {
       conventional_method(),       toksvig_method(),     vlachos_method(),   kaplanyan_beckmann_method(),
       kaplanyan_rect_method(),     kaplanyan_ggx_method(), tokuyoshi_method(), lean_method(),
-      podee_method(),
+      podee_method(),              chermain2020_method(), chermain2021_method(),
   };
   return methods;
 }

@@ -28,9 +28,10 @@ TEST(Shaders, EveryMethodAndPassCompiles) {
   }
   for (const auto& module : modules)
     for (bool normal_map : {false, true})
-      EXPECT_NO_THROW(shaders().graphics("passes/forward.vert", "passes/forward.frag",
-                                         forward_variant(module, every_kind, normal_map)))
-          << module << (normal_map ? " with a normal map" : "");
+      for (bool glints : {false, true})
+        EXPECT_NO_THROW(shaders().graphics("passes/forward.vert", "passes/forward.frag",
+                                           forward_variant(module, every_kind, {normal_map, glints})))
+            << module << (normal_map ? " with a normal map" : "") << (glints ? ", glinty" : "");
   EXPECT_NO_THROW(shaders().graphics("passes/forward.vert", "passes/emitter.frag"));
   EXPECT_NO_THROW(shaders().compute("passes/downsample.comp"));
 }

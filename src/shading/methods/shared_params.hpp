@@ -1,5 +1,7 @@
 #pragma once
 // Parameters and citations that several method descriptors share.
+#include <string>
+
 #include "shading/method.hpp"
 
 namespace glintlab {
@@ -15,6 +17,19 @@ inline ParamDecl fp_max_param() {
   return {"fp_max", 1.0f, 0.01f, 4.0f,
           "upper clamp of the footprint's half extent in slope space (the talk uses 0.1 .. 1)"};
 }
+
+/// LEAN + glints (Chermain et al. 2021, sec. 5): the glint lobe widened by the normal map's slope
+/// covariance inside the footprint.
+inline ParamDecl glint_lean_param(bool on_by_default) {
+  return {"lean", on_by_default ? 1.0f : 0.0f, 0.0f, 1.0f,
+          "LEAN + glints: add the normal map's slope covariance inside the pixel's footprint to the glint "
+          "lobe and shade about the mean normal (chermain2020 keeps only its diagonal)",
+          {"off", "on"}};
+}
+
+inline constexpr const char* kChermain2020Citation =
+    "X. Chermain, B. Sauvage, J.-M. Dischler, C. Dachsbacher, Procedural Physically based BRDF for Real-Time "
+    "Rendering of Glints, Pacific Graphics 2020 (CGF 39(7))";
 
 /// The three `kaplanyan-*` variants come from one paper and talk.
 inline constexpr const char* kKaplanyan2016Citation =

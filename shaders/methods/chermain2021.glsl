@@ -1,0 +1,36 @@
+// Method `chermain2021`: Chermain et al. 2021, geometric glint anti-aliasing (each cell's
+// marginals filtered by the pixel's half-vector footprint, eq. 19) and the slope correlation rho
+// (eq. 18) on the glinty BRDF of 2020. With rho = 0 and kernel = 0 it equals `chermain2020`.
+// Descriptor: src/shading/methods/chermain2021.cpp; docs/methods.md#chermain2021.
+#include "common/glint_shading.glsl"
+
+uniform float param_mirror_alpha;
+uniform float param_lean;
+uniform float param_kernel;       // s_K
+uniform float param_derivatives;  // 0: projected half vectors (eq. 21), 1: half slopes (eq. 20)
+
+#if MATERIAL_GLINTS
+GlintSurface gGlint;
+#endif
+
+void prepareSurface(inout Surface s) {
+#if MATERIAL_GLINTS
+  if (param_lean > 0.5) combineWithNormalMapSlopes(s);
+  MaterialData m = materials[uMaterial];
+  gGlint = glintSurface(s, m.glints, m.diffuse_tiling.a, s.rho);
+#endif
+}
+
+Radiance shadeLight(Surface s, LightData L) {
+#if MATERIAL_GLINTS
+  vec3 l, irradiance;
+  glintLightIncidence(L, s.position, l, irradiance);
+  vec2 dx, dy;
+  halfVectorDerivatives(s, l, param_derivatives > 0.5, dx, dy);  // first: uniform control flow
+  vec3 wo = toLocal(s, s.view), wi = toLocal(s, l);
+  return Radiance(diffuseCos(s.diffuse, wi) * irradiance,
+                  glintSpecularCos(gGlint, wo, wi, s.f0, param_kernel * dx, param_kernel * dy, true) * irradiance);
+#else
+  return shadeLobe(s, L, materialLobe(s), param_mirror_alpha);
+#endif
+}

@@ -1,0 +1,24 @@
+// Diagnostics, not a method: the number of glint cells inside each pixel's footprint at the two
+// levels the glinty BRDF blends (common/glint_ndf.glsl, without its guard of GLINT_MAX_CELLS per
+// level), in the specular output: r = level floor(lod), g = level floor(lod) + 1, b = 1 for a
+// glinty pixel. Each light adds its share, so the sum over the scene's lights is the count.
+#include "common/glint_shading.glsl"
+
+const ivec2 kGlintCellsLightRanges[LIGHT_KIND_COUNT] = LIGHT_RANGES;
+vec3 gGlintCells = vec3(0.0);
+
+void prepareSurface(inout Surface s) {
+#if MATERIAL_GLINTS
+  MaterialData m = materials[uMaterial];
+  GlintFootprint fp = glintSurface(s, m.glints, m.diffuse_tiling.a, 0.0).footprint;
+  if (fp.lod >= 0.0) {
+    int level = int(floor(fp.lod));
+    gGlintCells = vec3(level < GLINT_LEVELS ? glintCellCount(fp, level) : 0,
+                       level + 1 < GLINT_LEVELS ? glintCellCount(fp, level + 1) : 0, 1.0);
+  }
+#endif
+}
+
+Radiance shadeLight(Surface s, LightData L) {
+  return Radiance(vec3(0.0), gGlintCells / float(kGlintCellsLightRanges[LIGHT_KIND_COUNT - 1].y));
+}

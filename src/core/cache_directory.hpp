@@ -1,0 +1,16 @@
+#pragma once
+// Where glintlab keeps what it can recompute (reference frames, the glint dictionary):
+// $GLINTLAB_CACHE_DIR, else $XDG_CACHE_HOME/glintlab, else ~/.cache/glintlab; empty if none is set.
+#include <cstdlib>
+#include <filesystem>
+
+namespace glintlab {
+
+inline std::filesystem::path default_cache_directory() {
+  if (const char* d = std::getenv("GLINTLAB_CACHE_DIR"); d && *d) return d;
+  if (const char* d = std::getenv("XDG_CACHE_HOME"); d && *d) return std::filesystem::path(d) / "glintlab";
+  if (const char* h = std::getenv("HOME"); h && *h) return std::filesystem::path(h) / ".cache" / "glintlab";
+  return {};
+}
+
+}  // namespace glintlab

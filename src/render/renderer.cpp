@@ -132,7 +132,12 @@ void Renderer::draw_module(const std::string& module, const ParamValues& params,
 }
 
 Frame Renderer::render(const MethodDescriptor& method, const ParamValues& params, const Camera& camera, int width, int height) {
-  draw(method, params, camera, width, height);
+  return render_module(method.module_path(), params, camera, width, height);
+}
+
+Frame Renderer::render_module(const std::string& module, const ParamValues& params, const Camera& camera, int width,
+                              int height) {
+  draw_module(module, params, camera, width, height);
   return {RenderTarget::read(target_->total(), width, height), RenderTarget::read(target_->specular(), width, height)};
 }
 

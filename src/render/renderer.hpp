@@ -56,6 +56,9 @@ class Renderer {
   void draw(const MethodDescriptor& method, const ParamValues& params, const Camera& camera, int width, int height);
   /// The same with any shading module in the method slot (e.g. passes/unshaded.glsl).
   void draw_module(const std::string& module, const ParamValues& params, const Camera& camera, int width, int height);
+  /// draw_module, read back (e.g. the diagnostics of passes/glint_cells.glsl).
+  Frame render_module(const std::string& module, const ParamValues& params, const Camera& camera, int width,
+                      int height);
   /// Ground truth: k x k supersampling in tiles, box-filtered (DESIGN.md, "Ground truth").
   Frame render_reference(const Camera& camera, int width, int height, const ReferenceSettings& settings,
                          const ProgressFn& progress = {});

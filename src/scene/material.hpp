@@ -18,7 +18,7 @@ enum class Ndf { GGX = 0, Beckmann = 1 };
 struct GlintParams {
   float log_density = 20.0f;     ///< ln of the number of microfacets per unit of uv area
   float relative_area = 1.0f;    ///< fraction of the surface's cells that hold microfacets
-  float max_anisotropy = 8.0f;   ///< clamp of the footprint ellipse's eccentricity
+  float max_anisotropy = 4.0f;   ///< clamp of the footprint ellipse's eccentricity (2021's default)
 };
 
 struct Material {

@@ -93,10 +93,10 @@ int render_command(const CommonOptions& o, const std::string& reference_arg, boo
   const Frame f = reference_given ? session.reference(frame) : session.render(methods[0], frame);
   const std::string name = reference_given ? "reference" : methods[0].method->id;
   if (ext == ".exr" || ext == ".png") {
-    write_frame(path.parent_path(), path.stem().string(), f, session.scene().film.exposure);
+    write_frame(path.parent_path(), path.stem().string(), f, session.scene().film);
     std::cout << "written " << (path.parent_path() / path.stem()).string() << ".exr and .png\n";
   } else {
-    write_frame(path, name, f, session.scene().film.exposure);
+    write_frame(path, name, f, session.scene().film);
     std::cout << "written " << (path / name).string() << ".exr and .png\n";
   }
   return 0;

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <glm/common.hpp>
 
+#include "core/star_bloom.hpp"
+
 namespace glintlab {
 
 float aces_filmic(float x) {
@@ -19,12 +21,15 @@ float srgb_encode(float v) {
   return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
 }
 
-Image tonemap_for_display(const Image& linear, float exposure_stops) {
+Image tonemap_for_display(const Image& linear, float exposure_stops, float bloom) {
   const float gain = std::exp2(exposure_stops);
+  Image exposed(linear.width(), linear.height());
+  for (std::size_t i = 0; i < linear.pixel_count(); ++i) exposed.pixels()[i] = gain * linear.pixels()[i];
+  // Streaks of about 1.5% of the picture's height, whatever its resolution.
+  if (bloom > 0.0f) exposed = star_bloom(exposed, bloom, 0.015f * static_cast<float>(linear.height()));
   Image out(linear.width(), linear.height());
   for (std::size_t i = 0; i < linear.pixel_count(); ++i)
-    for (int c = 0; c < 3; ++c)
-      out.pixels()[i][c] = srgb_encode(aces_filmic(gain * linear.pixels()[i][c]));
+    for (int c = 0; c < 3; ++c) out.pixels()[i][c] = srgb_encode(aces_filmic(exposed.pixels()[i][c]));
   return out;
 }
 

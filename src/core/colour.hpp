@@ -4,9 +4,10 @@
 
 namespace glintlab {
 
-/// Exposure (in stops), ACES filmic tonemap (Narkowicz 2015 fit), then sRGB encoding.
-/// The fit keeps highlights' hue and rolls off smoothly, which matters for tiny bright glints.
-Image tonemap_for_display(const Image& linear, float exposure_stops);
+/// Exposure (in stops), an optional star bloom (core/star_bloom.hpp; 0: none), ACES filmic
+/// tonemap (Narkowicz 2015 fit), then sRGB encoding. The fit keeps highlights' hue and rolls off
+/// smoothly, which matters for tiny bright glints.
+Image tonemap_for_display(const Image& linear, float exposure_stops, float bloom = 0.0f);
 
 float aces_filmic(float x);
 float srgb_encode(float linear);

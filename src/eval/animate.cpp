@@ -30,7 +30,7 @@ bool encode_mp4(const std::filesystem::path& frames_dir, const std::filesystem::
 std::vector<TemporalMetrics> run_animate(Session& session, const std::vector<MethodChoice>& methods,
                                          const std::filesystem::path& out) {
   const int frames = session.frames();
-  const float exposure = session.scene().film.exposure;
+  const Film& film = session.scene().film;
   std::vector<FlickerAccumulator> flicker(methods.size());
   std::vector<TemporalMetrics> results(methods.size());
   // Frames go to a staging folder first, so a failure half-way leaves no partial animation.
@@ -40,12 +40,12 @@ std::vector<TemporalMetrics> run_animate(Session& session, const std::vector<Met
   for (int f = 0; f < frames; ++f) {
     const Frame reference = session.reference(f);
     std::snprintf(name, sizeof name, "%04d.png", f);
-    write_png(staging / "reference" / name, tonemap_for_display(reference.total, exposure));
+    write_png(staging / "reference" / name, tonemap_for_display(reference.total, film.exposure, film.bloom));
     for (std::size_t i = 0; i < methods.size(); ++i) {
       const Frame frame = session.render(methods[i], f);
       flicker[i].add_frame(frame.total, reference.total);
       results[i].rmse_per_frame.push_back(rmse(frame.total, reference.total));
-      write_png(staging / methods[i].method->id / name, tonemap_for_display(frame.total, exposure));
+      write_png(staging / methods[i].method->id / name, tonemap_for_display(frame.total, film.exposure, film.bloom));
     }
   }
   nlohmann::json json;

@@ -102,13 +102,13 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
   }
   if (error_scale <= 0.0f) error_scale = 1.0f;
 
-  const float exposure = session.scene().film.exposure;
-  write_frame(out, "reference", reference, exposure);
-  std::vector<Image> displays{tonemap_for_display(reference.total, exposure)};
+  const Film& film = session.scene().film;
+  write_frame(out, "reference", reference, film);
+  std::vector<Image> displays{tonemap_for_display(reference.total, film.exposure, film.bloom)};
   for (std::size_t i = 0; i < methods.size(); ++i) {
-    write_frame(out, methods[i].method->id, frames[i], exposure);
+    write_frame(out, methods[i].method->id, frames[i], film);
     write_png(out / (methods[i].method->id + "-error.png"), false_colour(errors[i], error_scale));
-    displays.push_back(tonemap_for_display(frames[i].total, exposure));
+    displays.push_back(tonemap_for_display(frames[i].total, film.exposure, film.bloom));
   }
   std::vector<const Image*> display_ptrs;
   for (const auto& d : displays) display_ptrs.push_back(&d);

@@ -9,6 +9,6 @@
 namespace glintlab {
 
 /// Writes <dir>/<stem>.exr and <dir>/<stem>.png.
-void write_frame(const std::filesystem::path& dir, const std::string& stem, const Frame& frame, float exposure);
+void write_frame(const std::filesystem::path& dir, const std::string& stem, const Frame& frame, const Film& film);
 
 }  // namespace glintlab

@@ -338,6 +338,7 @@ std::string glint_tubes() {
 [film]
 width = 640
 height = 360
+bloom = 0.3
 
 [camera]
 position = [0.0, 0.25, 2.6]
@@ -405,6 +406,7 @@ std::string glint_sphere() {
 [film]
 width = 640
 height = 360
+bloom = 0.3
 
 [camera]
 position = [0.0, 0.4, 3.6]
@@ -464,6 +466,7 @@ std::string glint_terrain() {
 [film]
 width = 640
 height = 360
+bloom = 0.3
 
 [camera]
 position = [0.0, 0.8, 4.0]

@@ -17,6 +17,7 @@ struct Film {
   int width = 640;
   int height = 360;
   float exposure = 0.0f;  ///< stops, applied to displayed images only (never to metrics)
+  float bloom = 0.0f;     ///< star bloom strength, displayed images only (0: none)
 };
 
 struct Shape {

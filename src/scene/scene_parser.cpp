@@ -26,6 +26,7 @@ void parse_film(TomlReader r, Film& film) {
     r.fail("height", "film " + std::to_string(film.width) + "x" + std::to_string(film.height) +
                          " has more than 64 Mpixels; allowed: width * height <= 67108864");
   film.exposure = static_cast<float>(r.get_number("exposure", film.exposure, -30, 30));
+  film.bloom = static_cast<float>(r.get_number("bloom", film.bloom, 0, 10));
   r.finish();
 }
 

@@ -1,13 +1,17 @@
 #include "app/cli.hpp"
 
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <iostream>
 
 #include "core/error.hpp"
 #include "eval/commands.hpp"
+#include "core/cache_directory.hpp"
 #include "eval/outputs.hpp"
+#include "render/glint_dictionary_texture.hpp"
 #include "eval/session.hpp"
 #include "scene/scene_loader.hpp"
+#include "render/reference_cache.hpp"
 #include "shading/registry.hpp"
 
 namespace glintlab {
@@ -69,6 +73,15 @@ void print_info() {
             << "  max draw buffers          " << i.max_draw_buffers << "\n"
             << "  timer queries             " << (i.timer_query ? "yes" : "no") << "\n"
             << "reference cache: " << ReferenceCache::default_directory().string() << "\n";
+  // The glint dictionary: loaded from the cache, or generated (and cached) on first use.
+  const auto start = std::chrono::steady_clock::now();
+  const GlintDictionary dict = GlintDictionary::load_or_generate({}, default_cache_directory());
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const GlintDictionaryTexture texture = upload_glint_dictionary(dict);
+  const auto& st = dict.settings();
+  std::cout << "glint dictionary: " << st.marginals << " marginals x " << st.levels << " levels x " << st.texels
+            << " texels, " << texture.bytes_base / 1024 << " KiB, " << texture.bytes_with_mips / 1024
+            << " KiB with mips (RGB16F); ready in " << static_cast<int>(ms) << " ms\n";
 }
 
 int render_command(const CommonOptions& o, const std::string& reference_arg, bool reference_given, int frame) {

@@ -41,6 +41,13 @@ void combineWithNormalMapSlopes(inout Surface s) {
 #endif
 }
 
+// The per-pixel step of the glint methods: LEAN + glints when asked, then the glint state of
+// material m, with the surface's correlation (2021) or without (2020).
+GlintSurface prepareGlints(inout Surface s, MaterialData m, bool lean, bool correlated) {
+  if (lean) combineWithNormalMapSlopes(s);
+  return glintSurface(s, m.glints, m.diffuse_tiling.a, correlated ? s.rho : 0.0);
+}
+
 // V-cavity masking (2020, eq. 8, after Cook & Torrance 1982) of direction w for microfacet h.
 float vCavityG1(vec3 w, vec3 h) { return min(1.0, 2.0 * h.z * w.z / max(dot(w, h), 1e-9)); }
 
@@ -73,4 +80,11 @@ void glintLightIncidence(LightData L, vec3 p, out vec3 l, out vec3 irradiance) {
     l = lightCentreDirection(L, p);
     irradiance = lightRadiance(L) * lightSolidAngle(L, p, l);
   }
+}
+
+// Diffuse and glinty specular radiance from light direction l with the given irradiance.
+Radiance shadeGlints(Surface s, GlintSurface g, vec3 l, vec3 irradiance, vec2 kernelDx, vec2 kernelDy, bool filtered) {
+  vec3 wo = toLocal(s, s.view), wi = toLocal(s, l);
+  return Radiance(diffuseCos(s.diffuse, wi) * irradiance,
+                  glintSpecularCos(g, wo, wi, s.f0, kernelDx, kernelDy, filtered) * irradiance);
 }

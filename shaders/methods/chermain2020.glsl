@@ -12,9 +12,7 @@ GlintSurface gGlint;
 
 void prepareSurface(inout Surface s) {
 #if MATERIAL_GLINTS
-  if (param_lean > 0.5) combineWithNormalMapSlopes(s);
-  MaterialData m = materials[uMaterial];
-  gGlint = glintSurface(s, m.glints, m.diffuse_tiling.a, 0.0);  // the 2020 model has no correlation
+  gGlint = prepareGlints(s, materials[uMaterial], param_lean > 0.5, false);  // 2020: no correlation
 #endif
 }
 
@@ -22,9 +20,7 @@ Radiance shadeLight(Surface s, LightData L) {
 #if MATERIAL_GLINTS
   vec3 l, irradiance;
   glintLightIncidence(L, s.position, l, irradiance);
-  vec3 wo = toLocal(s, s.view), wi = toLocal(s, l);
-  return Radiance(diffuseCos(s.diffuse, wi) * irradiance,
-                  glintSpecularCos(gGlint, wo, wi, s.f0, vec2(0.0), vec2(0.0), false) * irradiance);
+  return shadeGlints(s, gGlint, l, irradiance, vec2(0.0), vec2(0.0), false);
 #else
   return shadeLobe(s, L, materialLobe(s), param_mirror_alpha);
 #endif

@@ -25,9 +25,7 @@ void halfVectorDerivatives(Surface s, vec3 l, bool ofSlopes, out vec2 dx, out ve
 
 void prepareSurface(inout Surface s) {
 #if MATERIAL_GLINTS
-  if (param_lean > 0.5) combineWithNormalMapSlopes(s);
-  MaterialData m = materials[uMaterial];
-  gGlint = glintSurface(s, m.glints, m.diffuse_tiling.a, s.rho);
+  gGlint = prepareGlints(s, materials[uMaterial], param_lean > 0.5, true);
 #endif
 }
 
@@ -37,9 +35,7 @@ Radiance shadeLight(Surface s, LightData L) {
   glintLightIncidence(L, s.position, l, irradiance);
   vec2 dx, dy;
   halfVectorDerivatives(s, l, param_derivatives > 0.5, dx, dy);  // first: uniform control flow
-  vec3 wo = toLocal(s, s.view), wi = toLocal(s, l);
-  return Radiance(diffuseCos(s.diffuse, wi) * irradiance,
-                  glintSpecularCos(gGlint, wo, wi, s.f0, param_kernel * dx, param_kernel * dy, true) * irradiance);
+  return shadeGlints(s, gGlint, l, irradiance, param_kernel * dx, param_kernel * dy, true);
 #else
   return shadeLobe(s, L, materialLobe(s), param_mirror_alpha);
 #endif

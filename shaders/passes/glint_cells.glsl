@@ -9,8 +9,7 @@ vec3 gGlintCells = vec3(0.0);
 
 void prepareSurface(inout Surface s) {
 #if MATERIAL_GLINTS
-  MaterialData m = materials[uMaterial];
-  GlintFootprint fp = glintSurface(s, m.glints, m.diffuse_tiling.a, 0.0).footprint;
+  GlintFootprint fp = prepareGlints(s, materials[uMaterial], false, false).footprint;
   if (fp.lod >= 0.0) {
     int level = int(floor(fp.lod));
     gGlintCells = vec3(level < GLINT_LEVELS ? glintCellCount(fp, level) : 0,

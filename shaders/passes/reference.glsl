@@ -22,8 +22,7 @@ uint gReferenceLightIndex = 0u;
 // sub-pixel's footprint (the papers' protocol).
 void prepareSurface(inout Surface s) {
 #if MATERIAL_GLINTS
-  MaterialData m = materials[uMaterial];
-  gGlint = glintSurface(s, m.glints, m.diffuse_tiling.a, s.rho);
+  gGlint = prepareGlints(s, materials[uMaterial], false, true);
 #endif
 }
 
@@ -57,8 +56,7 @@ Radiance shadeLight(Surface s, LightData L) {
 #if MATERIAL_GLINTS
     vec3 l, irradiance;
     glintLightIncidence(L, s.position, l, irradiance);
-    vec3 wi = toLocal(s, l);
-    return Radiance(diffuseCos(s.diffuse, wi) * irradiance, materialSpecularCos(s, wo, wi) * irradiance);
+    return shadeGlints(s, gGlint, l, irradiance, vec2(0.0), vec2(0.0), false);
 #else
     return shadeDeltaLight(s, materialLobe(s), L, wo);
 #endif

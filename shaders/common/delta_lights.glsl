@@ -6,10 +6,10 @@
 #include "common/lobe.glsl"
 #include "common/surface.glsl"
 
-Radiance shadeDeltaLight(Surface s, Lobe lobe, LightData L, vec3 wo) {
-  vec3 l, irradiance;
+// Unit direction from p to a point or delta directional light, and its irradiance at normal incidence.
+void deltaLightIncidence(LightData L, vec3 p, out vec3 l, out vec3 irradiance) {
   if (lightType(L) == LIGHT_POINT) {
-    vec3 d = L.position_radius.xyz - s.position;
+    vec3 d = L.position_radius.xyz - p;
     float d2 = max(dot(d, d), 1e-12);
     l = d * inversesqrt(d2);
     irradiance = L.colour_type.rgb / d2;
@@ -17,6 +17,11 @@ Radiance shadeDeltaLight(Surface s, Lobe lobe, LightData L, vec3 wo) {
     l = -L.direction_cos.xyz;
     irradiance = L.colour_type.rgb;
   }
+}
+
+Radiance shadeDeltaLight(Surface s, Lobe lobe, LightData L, vec3 wo) {
+  vec3 l, irradiance;
+  deltaLightIncidence(L, s.position, l, irradiance);
   vec3 wi = toLocal(s, l);
   return Radiance(diffuseCos(s.diffuse, wi) * irradiance, lobeSpecularCos(lobe, wo, wi, s.f0) * irradiance);
 }

@@ -4,6 +4,7 @@
 // transformed products of two dictionary marginals (2021, eqs. 3-6, 10, 15, 18).
 #include "common/constants.glsl"
 #include "common/glint_dictionary.glsl"
+#include "common/lobe.glsl"
 
 // Cells evaluated per level at most (the papers' guard); passes/glint_cells.glsl counts how many
 // a footprint holds.
@@ -11,42 +12,61 @@ const int GLINT_MAX_CELLS = 100;
 // Standard deviation of the per-cell jitter of the dictionary level (2020, sec. 4.3: zeta = 2).
 const float GLINT_LEVEL_JITTER = 2.0;
 
-// The material's slope distribution in its smooth limit, and the map from its slopes to the
-// dictionary's (2021, eq. 18): M = (1 / sigma_dict) [[sigma_x sqrt(1 - rho^2), rho sigma_x], [0, sigma_y]],
-// so that M Sigma_dict M^T is the covariance [[sx^2, rho sx sy], [rho sx sy, sy^2]] (eq. 16).
+// The material's slope distribution in its smooth limit, a Beckmann lobe of roughness matrix
+// A = 2 Sigma (common/lobe.glsl), and the map from its slopes to the dictionary's (2021, eq. 18):
+// M = (1 / sigma_dict) [[sigma_x sqrt(1 - rho^2), rho sigma_x], [0, sigma_y]], so that
+// M Sigma_dict M^T is Sigma = [[sx^2, rho sx sy], [rho sx sy, sy^2]] (eq. 16).
 struct GlintLobe {
-  vec2 sigma;
-  float rho;
+  mat2 A;
   mat2 invM;      // M^-1, before the per-cell rotation
   float detInvM;  // the Jacobian of the change of variables (eq. 4)
 };
 
-GlintLobe glintLobe(vec2 sigma, float rho) {
+GlintLobe glintLobe(mat2 A) {
+  vec2 sigma = sqrt(0.5 * vec2(A[0][0], A[1][1]));
+  float rho = clamp(A[0][1] / sqrt(A[0][0] * A[1][1]), -0.99, 0.99);
+  A[0][1] = A[1][0] = rho * sqrt(A[0][0] * A[1][1]);
   float k = sqrt(1.0 - rho * rho);
   // M^-1 = sigma_dict [[1 / (sx k), -rho / (sy k)], [0, 1 / sy]] (GLSL matrices are column-major).
   mat2 invM = GLINT_DICT_SIGMA * mat2(1.0 / (sigma.x * k), 0.0, -rho / (sigma.y * k), 1.0 / sigma.y);
-  return GlintLobe(sigma, rho, invM, determinant(invM));
+  return GlintLobe(A, invM, determinant(invM));
 }
 
-// The smooth limit: the Beckmann slope density with covariance Sigma (eq. 16).
-float correlatedBeckmannP22(vec2 m, vec2 sigma, float rho) {
-  float k = 1.0 - rho * rho;
-  vec2 u = m / sigma;
-  float e = (u.x * u.x - 2.0 * rho * u.x * u.y + u.y * u.y) / (2.0 * k);
-  return exp(-e) / (TWO_PI * sigma.x * sigma.y * sqrt(k));
-}
-
-// The pixel's footprint in uv: an ellipse with axes axis0 (major) and axis1 (minor, lengthened so
-// that the eccentricity is at most maxAnisotropy, as pbrt's EWA does), and its continuous level of
-// detail lod = levels - 1 + log2(|minor|): level l has 2^(levels - 1 - l) cells per uv unit, so the
-// minor axis spans one to two cells of level floor(lod). lod < 0 marks a degenerate footprint.
-struct GlintFootprint {
-  vec2 uv;
-  vec2 axis0, axis1;
-  float lod;
+// The footprint ellipse in the cells of one level: the implicit ellipse A s^2 + B s t + C t^2 < 1
+// about st (cell centres at integers), widened by one cell (pbrt-v3, MIPMap::EWA), and its
+// bounding box of cells [lo, hi].
+struct GlintEllipse {
+  vec2 st;
+  vec3 abc;
+  ivec2 lo, hi;
 };
 
-GlintFootprint glintFootprint(vec2 uv, vec2 dUVdx, vec2 dUVdy, float maxAnisotropy) {
+// The pixel's footprint at the two levels of the virtual MIP hierarchy that the patch-SDF blends
+// (2021, eq. 3), computed once per pixel. level < 0 marks a degenerate footprint (the smooth NDF).
+struct GlintPatch {
+  int level;
+  float blend;  // weight of level + 1
+  GlintEllipse fine, coarse;
+};
+
+GlintEllipse glintEllipse(vec2 uv, vec2 axis0, vec2 axis1, int level) {
+  float cellsPerUV = exp2(float(GLINT_LEVELS - 1 - level));
+  vec2 st = uv * cellsPerUV - 0.5;
+  vec2 d0 = axis0 * cellsPerUV, d1 = axis1 * cellsPerUV;
+  float A = d0.y * d0.y + d1.y * d1.y + 1.0;
+  float B = -2.0 * (d0.x * d0.y + d1.x * d1.y);
+  float C = d0.x * d0.x + d1.x * d1.x + 1.0;
+  vec3 abc = vec3(A, B, C) / (A * C - 0.25 * B * B);
+  float det = 4.0 * abc.x * abc.z - abc.y * abc.y;
+  vec2 halfBox = 2.0 * sqrt(vec2(det * abc.z, det * abc.x)) / det;
+  return GlintEllipse(st, abc, ivec2(ceil(st - halfBox)), ivec2(floor(st + halfBox)));
+}
+
+// The uv derivatives as an ellipse with a major axis and a minor one lengthened so that the
+// eccentricity is at most maxAnisotropy (pbrt's EWA clamp); its level of detail
+// lod = levels - 1 + log2(|minor|): level l has 2^(levels - 1 - l) cells per uv unit, so the minor
+// axis spans one to two cells of level floor(lod).
+GlintPatch glintPatch(vec2 uv, vec2 dUVdx, vec2 dUVdy, float maxAnisotropy) {
   vec2 major = dUVdx, minor = dUVdy;
   if (dot(major, major) < dot(minor, minor)) {
     major = dUVdy;
@@ -59,7 +79,9 @@ GlintFootprint glintFootprint(vec2 uv, vec2 dUVdx, vec2 dUVdy, float maxAnisotro
     minorLength *= scale;
   }
   float lod = minorLength > 0.0 ? max(0.0, float(GLINT_LEVELS - 1) + log2(minorLength)) : -1.0;
-  return GlintFootprint(uv, major, minor, lod);
+  int level = int(floor(lod));
+  return GlintPatch(level, lod - floor(lod), glintEllipse(uv, major, minor, max(level, 0)),
+                    glintEllipse(uv, major, minor, max(level + 1, 0)));
 }
 
 // Integer hash of Hugo Elias / Inigo Quilez, to [0, 1] (the papers' pseudo-random numbers).
@@ -120,7 +142,7 @@ float glintCellP22(GlintQuery q, GlintLobe lobe, int level, ivec2 cell, float le
   float u = clamp(glintHash(seed * 2171u), 1e-6, 1.0 - 1e-6);
   float dictLevel = clamp(round(levelBase + GLINT_LEVEL_JITTER * 1.41421356 * erfInverse(2.0 * u - 1.0)), 0.0,
                           float(GLINT_LEVELS));
-  if (dictLevel >= float(GLINT_LEVELS)) return correlatedBeckmannP22(q.slope, lobe.sigma, lobe.rho);
+  if (dictLevel >= float(GLINT_LEVELS)) return slopeDensityBeckmann(q.slope, lobe.A);
 
   // Random rotation, then the material's transform: slopes in the dictionary's space.
   float theta = TWO_PI * glintHash(seed);
@@ -144,28 +166,6 @@ float glintCellP22(GlintQuery q, GlintLobe lobe, int level, ivec2 cell, float le
   return px * py * lobe.detInvM;
 }
 
-// The footprint ellipse in the cells of one level: the implicit ellipse A s^2 + B s t + C t^2 < 1
-// about st (cell centres at integers), widened by one cell (pbrt-v3, MIPMap::EWA), and its
-// bounding box of cells [lo, hi].
-struct GlintEllipse {
-  vec2 st;
-  vec3 abc;
-  ivec2 lo, hi;
-};
-
-GlintEllipse glintEllipse(GlintFootprint fp, int level) {
-  float cellsPerUV = exp2(float(GLINT_LEVELS - 1 - level));
-  vec2 st = fp.uv * cellsPerUV - 0.5;
-  vec2 d0 = fp.axis0 * cellsPerUV, d1 = fp.axis1 * cellsPerUV;
-  float A = d0.y * d0.y + d1.y * d1.y + 1.0;
-  float B = -2.0 * (d0.x * d0.y + d1.x * d1.y);
-  float C = d0.x * d0.x + d1.x * d1.x + 1.0;
-  vec3 abc = vec3(A, B, C) / (A * C - 0.25 * B * B);
-  float det = 4.0 * abc.x * abc.z - abc.y * abc.y;
-  vec2 halfBox = 2.0 * sqrt(vec2(det * abc.z, det * abc.x)) / det;
-  return GlintEllipse(st, abc, ivec2(ceil(st - halfBox)), ivec2(floor(st + halfBox)));
-}
-
 // r^2 of cell (s, t): inside the ellipse when < 1.
 float glintCellRadius2(GlintEllipse e, int s, int t) {
   vec2 d = vec2(s, t) - e.st;
@@ -173,8 +173,7 @@ float glintCellRadius2(GlintEllipse e, int s, int t) {
 }
 
 // The number of cells inside the footprint at one level, without the guard (diagnostics).
-int glintCellCount(GlintFootprint fp, int level) {
-  GlintEllipse e = glintEllipse(fp, level);
+int glintCellCount(GlintEllipse e) {
   int count = 0;
   for (int t = e.lo.y; t <= e.hi.y; ++t)
     for (int s = e.lo.x; s <= e.hi.x; ++s)
@@ -185,10 +184,9 @@ int glintCellCount(GlintFootprint fp, int level) {
 // The cells of one level inside the footprint, weighted by a truncated Gaussian (pbrt's EWA:
 // W = exp(-2 r^2) - exp(-2); 2020, Alg. 2) and normalised by the weights' sum; at most
 // GLINT_MAX_CELLS of them.
-float glintLevelP22(GlintQuery q, GlintLobe lobe, GlintFootprint fp, int level) {
-  if (level >= GLINT_LEVELS) return correlatedBeckmannP22(q.slope, lobe.sigma, lobe.rho);
+float glintLevelP22(GlintQuery q, GlintLobe lobe, GlintEllipse e, int level) {
+  if (level >= GLINT_LEVELS) return slopeDensityBeckmann(q.slope, lobe.A);
   float levelBase = float(level - (GLINT_LEVELS - 1)) + q.logDensity / 1.38629436;  // log4 of the count
-  GlintEllipse e = glintEllipse(fp, level);
   float sum = 0.0, weights = 0.0;
   int evaluated = 0;
   for (int t = e.lo.y; t <= e.hi.y && evaluated < GLINT_MAX_CELLS; ++t)
@@ -206,9 +204,8 @@ float glintLevelP22(GlintQuery q, GlintLobe lobe, GlintFootprint fp, int level) 
 
 // The patch-SDF (2021, eq. 3 or eq. 10 when filtered): the two levels around the footprint's
 // level of detail, blended linearly.
-float glintP22(GlintQuery q, GlintLobe lobe, GlintFootprint fp) {
-  if (fp.lod < 0.0) return correlatedBeckmannP22(q.slope, lobe.sigma, lobe.rho);
-  int level = int(floor(fp.lod));
-  float w = fp.lod - float(level);
-  return mix(glintLevelP22(q, lobe, fp, level), glintLevelP22(q, lobe, fp, level + 1), w);
+float glintP22(GlintQuery q, GlintLobe lobe, GlintPatch footprint) {
+  if (footprint.level < 0) return slopeDensityBeckmann(q.slope, lobe.A);
+  return mix(glintLevelP22(q, lobe, footprint.fine, footprint.level), glintLevelP22(q, lobe, footprint.coarse, footprint.level + 1),
+             footprint.blend);
 }

@@ -11,41 +11,25 @@
 #include "common/surface.glsl"
 
 struct GlintSurface {
-  GlintFootprint footprint;
+  GlintPatch footprint;
   GlintLobe lobe;
   float logDensity;
   float relativeArea;
 };
 
-// The glint state of a surface whose material holds `glints` (MaterialData.glints): uv and
-// footprint in the material's own uv (the normal-map tiling removed), the lobe of deviations
-// alpha / sqrt(2) and the surface's correlation (set rho to 0 for the 2020 model).
-GlintSurface glintSurface(Surface s, vec4 glints, float tiling, float rho) {
-  GlintFootprint fp = glintFootprint(s.uv / tiling, s.dUVdx / tiling, s.dUVdy / tiling, glints.z);
-  return GlintSurface(fp, glintLobe(s.alpha * 0.70710678, rho), glints.x, glints.y);
-}
-
-// LEAN mapping + glints (2021, sec. 5): the normal map's slope covariance inside the footprint
-// added to the material's, Sigma = Sigma_m + Sigma_n, the shading normal moved to the mean slope.
-// Sets s.alpha and s.rho to the combined lobe (so the smooth limit agrees with it).
-void combineWithNormalMapSlopes(inout Surface s) {
-#if MATERIAL_NORMAL_MAP
-  vec2 meanSlope;
-  mat2 normals = footprintSlopeCovariance(s, meanSlope);
-  setShadingNormal(s, mappedNormal(vec3(meanSlope, 1.0), s.vertexTangent, s.vertexBitangent, s.vertexNormal));
-  vec2 sigma = s.alpha * 0.70710678;
-  mat2 total = mat2(sigma.x * sigma.x, s.rho * sigma.x * sigma.y, s.rho * sigma.x * sigma.y, sigma.y * sigma.y) + normals;
-  vec2 combined = min(sqrt(vec2(total[0][0], total[1][1])), vec2(1.0));
-  s.rho = clamp(total[0][1] / (combined.x * combined.y), -0.99, 0.99);
-  s.alpha = combined * 1.41421356;
-#endif
-}
-
-// The per-pixel step of the glint methods: LEAN + glints when asked, then the glint state of
-// material m, with the surface's correlation (2021) or without (2020).
+// The per-pixel step of the glint methods and the reference, for a surface of glinty material m:
+// the footprint in the material's own uv (the normal-map tiling removed), and the lobe: the
+// material's (A = 2 Sigma, rho included), widened by LEAN + glints when asked (2021, sec. 5:
+// Sigma_m + Sigma_n about the mean normal), without its correlation for the 2020 model.
 GlintSurface prepareGlints(inout Surface s, MaterialData m, bool lean, bool correlated) {
-  if (lean) combineWithNormalMapSlopes(s);
-  return glintSurface(s, m.glints, m.diffuse_tiling.a, correlated ? s.rho : 0.0);
+  Lobe lobe = materialLobe(s);
+#if MATERIAL_NORMAL_MAP
+  if (lean) lobe.A += 2.0 * leanShadingFrame(s);
+#endif
+  if (!correlated) lobe.A[0][1] = lobe.A[1][0] = 0.0;
+  float tiling = m.diffuse_tiling.a;
+  return GlintSurface(glintPatch(s.uv / tiling, s.dUVdx / tiling, s.dUVdy / tiling, m.glints.z), glintLobe(lobe.A),
+                      m.glints.x, m.glints.y);
 }
 
 // V-cavity masking (2020, eq. 8, after Cook & Torrance 1982) of direction w for microfacet h.
@@ -67,15 +51,8 @@ vec3 glintSpecularCos(GlintSurface g, vec3 wo, vec3 wi, vec3 f0, vec2 kernelDx, 
 // lights; lights with extent as a point at their centre carrying radiance x solid angle (the
 // glinty BRDFs of 2020/2021 are defined for point and directional lights only).
 void glintLightIncidence(LightData L, vec3 p, out vec3 l, out vec3 irradiance) {
-  int type = lightType(L);
-  if (type == LIGHT_POINT) {
-    vec3 d = L.position_radius.xyz - p;
-    float d2 = max(dot(d, d), 1e-12);
-    l = d * inversesqrt(d2);
-    irradiance = L.colour_type.rgb / d2;
-  } else if (type == LIGHT_DIRECTIONAL) {
-    l = -L.direction_cos.xyz;
-    irradiance = L.colour_type.rgb;
+  if (!lightHasExtent(L)) {
+    deltaLightIncidence(L, p, l, irradiance);
   } else {
     l = lightCentreDirection(L, p);
     irradiance = lightRadiance(L) * lightSolidAngle(L, p, l);

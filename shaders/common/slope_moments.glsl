@@ -16,3 +16,13 @@ mat2 footprintSlopeCovariance(Surface s, out vec2 meanSlope) {
   meanSlope = m.xy;
   return leanSlopeCovariance(m.xy, vec3(m.zw, mxy));
 }
+
+// LEAN mapping's shading frame: the normal moved to the mean of the normal map's slopes inside the
+// footprint (over the vertex frame). Returns their covariance, which widens a lobe as A + 2 Sigma
+// (about the mean normal; exact for small mean slopes).
+mat2 leanShadingFrame(inout Surface s) {
+  vec2 meanSlope;
+  mat2 covariance = footprintSlopeCovariance(s, meanSlope);
+  setShadingNormal(s, mappedNormal(vec3(meanSlope, 1.0), s.vertexTangent, s.vertexBitangent, s.vertexNormal));
+  return covariance;
+}

@@ -11,12 +11,7 @@ Lobe gLeanLobe;  // this pixel's lobe, set by prepareSurface
 void prepareSurface(inout Surface s) {
   gLeanLobe = materialLobe(s);
 #if MATERIAL_NORMAL_MAP
-  vec2 b;
-  mat2 covariance = footprintSlopeCovariance(s, b);
-  // Shading frame: the mean normal (B, 1) over the vertex frame; the lobe's covariance lives in
-  // the base surface's slope space and is used about the mean normal (exact for small B).
-  setShadingNormal(s, mappedNormal(vec3(b, 1.0), s.vertexTangent, s.vertexBitangent, s.vertexNormal));
-  gLeanLobe.A += 2.0 * covariance;
+  gLeanLobe.A += 2.0 * leanShadingFrame(s);
 #endif
 }
 

@@ -9,12 +9,10 @@ vec3 gGlintCells = vec3(0.0);
 
 void prepareSurface(inout Surface s) {
 #if MATERIAL_GLINTS
-  GlintFootprint fp = prepareGlints(s, materials[uMaterial], false, false).footprint;
-  if (fp.lod >= 0.0) {
-    int level = int(floor(fp.lod));
-    gGlintCells = vec3(level < GLINT_LEVELS ? glintCellCount(fp, level) : 0,
-                       level + 1 < GLINT_LEVELS ? glintCellCount(fp, level + 1) : 0, 1.0);
-  }
+  GlintPatch fp = prepareGlints(s, materials[uMaterial], false, false).footprint;
+  if (fp.level >= 0)
+    gGlintCells = vec3(fp.level < GLINT_LEVELS ? glintCellCount(fp.fine) : 0,
+                       fp.level + 1 < GLINT_LEVELS ? glintCellCount(fp.coarse) : 0, 1.0);
 #endif
 }
 

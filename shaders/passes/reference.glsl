@@ -53,13 +53,10 @@ Radiance shadeLight(Surface s, LightData L) {
   if (wo.z <= 0.0) return result;
 
   if (!lightHasExtent(L)) {
-#if MATERIAL_GLINTS
     vec3 l, irradiance;
-    glintLightIncidence(L, s.position, l, irradiance);
-    return shadeGlints(s, gGlint, l, irradiance, vec2(0.0), vec2(0.0), false);
-#else
-    return shadeDeltaLight(s, materialLobe(s), L, wo);
-#endif
+    deltaLightIncidence(L, s.position, l, irradiance);
+    vec3 wi = toLocal(s, l);
+    return Radiance(diffuseCos(s.diffuse, wi) * irradiance, materialSpecularCos(s, wo, wi) * irradiance);
   }
 
   int k = uTarget.z;
@@ -72,7 +69,7 @@ Radiance shadeLight(Surface s, LightData L) {
   vec2 rotLight = hashToUnit2(seed);
   vec2 rotBrdf = hashToUnit2(pcgHash(seed + 1u));
   vec3 radiance = lightRadiance(L);
-  bool mirror = max(s.alpha.x, s.alpha.y) < REFERENCE_MIRROR_ALPHA && MATERIAL_GLINTS == 0;
+  bool mirror = max(s.alpha.x, s.alpha.y) < REFERENCE_MIRROR_ALPHA;  // never glinty: sigma >= 0.005
 
   for (uint j = 0u; j < n; ++j) {
     vec3 dir;

@@ -15,7 +15,13 @@ using namespace glintlab::test;
 
 namespace {
 
-const char* kIncludes = "#define MATERIAL_NORMAL_MAP 0\n#include \"common/glint_shading.glsl\"";
+// The glint GLSL, and the roughness matrix A = 2 Sigma of slope deviations sigma and correlation rho.
+const char* kIncludes = R"(#define MATERIAL_NORMAL_MAP 0
+#include "common/glint_shading.glsl"
+mat2 roughnessMatrix(vec2 sigma, float rho) {
+  float c = rho * sigma.x * sigma.y;
+  return 2.0 * mat2(sigma.x * sigma.x, c, c, sigma.y * sigma.y);
+})";
 
 /// The default dictionary bound where the shaders read it (texture unit 3).
 void bind_dictionary() {
@@ -109,17 +115,17 @@ void expect_converges_to_beckmann(glm::vec2 sigma, float rho) {
     }
   const auto r = evaluate_glsl(kIncludes, R"(
 vec4 evaluate(vec4 a, vec4 b) {
-  GlintLobe lobe = glintLobe(a.zw, b.x);
+  GlintLobe lobe = glintLobe(roughnessMatrix(a.zw, b.x));
   // Footprints of 2^-10 uv (level 5); ln(density) such that cells use dictionary levels near 10.
   GlintQuery q = GlintQuery(a.xy, vec2(0.0), vec2(0.0), false, 27.7, 1.0);
   float sum = 0.0;
   for (int i = 0; i < 64; ++i) {
     float k = float(i + 64 * int(b.y));
     vec2 uv = vec2(fract(k * 0.7548777), fract(k * 0.5698403)) * 3.0;
-    GlintFootprint fp = glintFootprint(uv, vec2(exp2(-10.0), 0.0), vec2(0.0, exp2(-10.0)), 8.0);
+    GlintPatch fp = glintPatch(uv, vec2(exp2(-10.0), 0.0), vec2(0.0, exp2(-10.0)), 8.0);
     sum += glintP22(q, lobe, fp);
   }
-  return vec4(sum / 64.0, correlatedBeckmannP22(a.xy, lobe.sigma, lobe.rho), 0.0, 0.0);
+  return vec4(sum / 64.0, slopeDensityBeckmann(a.xy, lobe.A), 0.0, 0.0);
 })",
                                a, b);
   for (std::size_t s = 0; s < slopes.size(); ++s) {
@@ -159,17 +165,17 @@ vec4 evaluate(vec4 a, vec4 b) {
   vec2 uv = (vec2(rand(i, 1.0), rand(i, 2.0)) - 0.5) * 2000.0;
   vec2 d0 = scale * vec2(rand(i, 3.0) - 0.5, rand(i, 4.0) - 0.5);
   vec2 d1 = scale * pow(10.0, -3.0 * rand(i, 5.0)) * vec2(rand(i, 6.0) - 0.5, rand(i, 7.0) - 0.5);
-  GlintFootprint fp = glintFootprint(uv, d0, d1, 1.0 + 63.0 * rand(i, 8.0));
+  GlintPatch fp = glintPatch(uv, d0, d1, 1.0 + 63.0 * rand(i, 8.0));
   vec2 sigma = vec2(0.005) + 0.995 * vec2(rand(i, 9.0), rand(i, 10.0));
   float rho = 1.98 * rand(i, 11.0) - 0.99;
-  GlintSurface g = GlintSurface(fp, glintLobe(sigma, rho), 60.0 * rand(i, 12.0), rand(i, 13.0));
+  GlintSurface g = GlintSurface(fp, glintLobe(roughnessMatrix(sigma, rho)), 60.0 * rand(i, 12.0), rand(i, 13.0));
   vec2 kx = pow(10.0, 6.0 * rand(i, 14.0) - 6.0) * vec2(rand(i, 15.0) - 0.5, rand(i, 16.0));
   vec2 ky = rand(i, 17.0) < 0.2 ? vec2(0.0) : kx.yx;
   vec3 f0 = vec3(rand(i, 18.0));
   vec3 plain = glintSpecularCos(g, a.xyz, b.xyz, f0, vec2(0.0), vec2(0.0), false);
   vec3 filtered = glintSpecularCos(g, a.xyz, b.xyz, f0, kx, ky, true);
   bool below = a.z <= 0.0 || b.z <= 0.0;
-  return vec4(plain.x, filtered.x, below ? max(plain.x, filtered.x) : 0.0, fp.lod);
+  return vec4(plain.x, filtered.x, below ? max(plain.x, filtered.x) : 0.0, 0.0);
 })",
                                a, b);
   int lit = 0;

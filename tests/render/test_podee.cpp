@@ -18,7 +18,7 @@ namespace {
 
 double luminance_sum(const Image& image) {
   double sum = 0;
-  for (const auto& p : image.pixels()) sum += 0.2126 * p.r + 0.7152 * p.g + 0.0722 * p.b;
+  for (const auto& p : image.pixels()) sum += luminance(p);
   return sum;
 }
 

@@ -1,0 +1,2 @@
+// Footprint kernels of the specular AA methods (placeholder, being written).
+#include <gtest/gtest.h>

@@ -28,15 +28,23 @@ mat2 clampCovariance(mat2 c, float limit) {
   return top > limit ? c * (limit / top) : c;
 }
 
-// Kaplanyan et al. 2016, Beckmann: the Gaussian footprint convolved with the lobe, R' = R + 2C
-// with the full (non-axis-aligned) C. fpMax bounds the footprint's extent (sqrt of C's largest
-// eigenvalue) as the rectangle variants do, which keeps grazing angles finite.
+// Standard deviation (pixels) of the Gaussian pixel filter of Kaplanyan et al. 2016: the talk's
+// "standard deviation of 0.5 pixel" ("Filtering Beckmann"), the rectangle code's half extent
+// fp = (|dx| + |dy|) / 2, and tokuyoshi's sigma2 = 0.25 (docs/methods.md#kaplanyan-beckmann).
+const float KAPLANYAN_PIXEL_SIGMA = 0.5;
+
+// Kaplanyan et al. 2016, Beckmann: the Gaussian pixel filter mapped to slope space by the
+// whole-pixel derivatives U = [dx dy] has covariance C = sigma^2 U U^T; the lobe convolved with it
+// is R' = R + 2C, full (non-axis-aligned). fpMax bounds the footprint's standard deviation (sqrt of
+// C's largest eigenvalue) as the rectangle variants bound fp, which keeps grazing angles finite.
 Lobe kaplanyanBeckmannLobe(Lobe base, vec2 dx, vec2 dy, float fpMax) {
-  mat2 c = clampCovariance(footprintCovariance(dx, dy), fpMax * fpMax);
+  float sigma2 = KAPLANYAN_PIXEL_SIGMA * KAPLANYAN_PIXEL_SIGMA;
+  mat2 c = clampCovariance(sigma2 * footprintCovariance(dx, dy), fpMax * fpMax);
   return Lobe(base.ndf, base.A + 2.0 * c, base.footprint);
 }
 
-// Half sides of the footprint's axis-aligned bounding rectangle, (|dx| + |dy|) / 2, clamped above.
+// Half sides of the footprint's axis-aligned bounding rectangle, (|dx| + |dy|) / 2, clamped above:
+// per axis at least the covariance's standard deviation sigma sqrt(dx_i^2 + dy_i^2) (sigma = 1/2).
 vec2 footprintRectangle(vec2 dx, vec2 dy, float fpMax) { return min(0.5 * (abs(dx) + abs(dy)), vec2(fpMax)); }
 
 // Kaplanyan et al. 2016, axis-aligned: R' = R + 2 diag(fp^2) with the bounding rectangle.

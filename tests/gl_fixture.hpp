@@ -40,10 +40,14 @@ struct SceneFixture {
     const auto& m = find_method(id);
     return renderer->render(m, resolve_params(m, params), scene.camera, scene.film.width, scene.film.height);
   }
-  Frame reference(int spp, int light_samples = 0) {
+  /// The scene's ground truth (its mean), `spp` samples per pixel.
+  Frame reference(int spp, int light_samples = 0) { return reference_estimate(spp, light_samples).mean; }
+  /// The same with its own error (standard error, passes); `seed` as a frame's.
+  ReferenceFrame reference_estimate(int spp, int light_samples = 0, int seed = 0) {
     ReferenceSettings s;
     s.spp = spp;
     s.light_samples = light_samples;
+    s.seed = seed;
     return renderer->render_reference(scene.camera, scene.film.width, scene.film.height, s);
   }
   Scene scene;

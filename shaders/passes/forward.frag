@@ -1,8 +1,9 @@
 // Forward shading: builds the surface record once per fragment (derivatives in uniform control
 // flow), then sums the method's (or the reference's) radiance over every light. The module is
 // chosen by the renderer through the $METHOD include; this pass never names a method.
-// Variant defines (src/render/renderer.cpp): LIGHT_RANGES (common/light_loop.glsl) and
-// MATERIAL_NORMAL_MAP (1 when the material has a normal map).
+// Variant defines (src/render/renderer.cpp): LIGHT_RANGES (common/light_loop.glsl),
+// MATERIAL_NORMAL_MAP (1 when the material has a normal map) and REFERENCE_PASS (1 for ground
+// truth, which evaluates the surface itself at each sample: textures at their base level).
 #include "common/frame.glsl"
 #include "common/fragment_inputs.glsl"
 #include "common/lights.glsl"
@@ -20,7 +21,11 @@ void main() {
   vec3 dPdx = dFdxFine(vPosition), dPdy = dFdyFine(vPosition);
   vec3 dNdx = dFdxFine(vNormal), dNdy = dFdyFine(vNormal);
   vec2 dUVdx = dFdxFine(uv), dUVdy = dFdyFine(uv);
-#if MATERIAL_NORMAL_MAP
+#if MATERIAL_NORMAL_MAP && REFERENCE_PASS
+  // Ground truth takes the map at this sample point (bilinear at level 0), never an average over
+  // a footprint: the normals a filtered level would average away are the highlights being judged.
+  vec3 mapped = textureLod(uNormalMap, uv, 0.0).xyz;
+#elif MATERIAL_NORMAL_MAP
   vec3 mapped = textureGrad(uNormalMap, uv, dUVdx, dUVdy).xyz;
 #else
   vec3 mapped = vec3(0.0, 0.0, 1.0);

@@ -30,7 +30,14 @@ void add_common(CLI::App* cmd, CommonOptions& o, bool many_methods) {
     cmd->add_option("--method,--methods", o.methods, "method id (see 'glintlab methods')")->default_str("conventional");
   }
   cmd->add_option("--param", o.params, "set a method parameter: name=value or method.name=value (repeatable)");
-  cmd->add_option("--spp", o.spp, "reference samples per pixel, k*k with k = 1..32")->default_str("64");
+  cmd->add_option("--spp", o.spp_text,
+                  "reference samples per pixel (1 .. 65536; 4 k^2 gives four passes of k x k), or auto: "
+                  "add passes until the reference's noise is below --noise-fraction of the differences ranked")
+      ->default_str("64");
+  cmd->add_option("--max-spp", o.max_spp, "the cap of --spp auto")->default_str("4096");
+  cmd->add_option("--noise-fraction", o.noise_fraction,
+                  "--spp auto's target: reference noise RMSE over the smallest RMSE or RMSE difference ranked")
+      ->default_str("0.1");
   cmd->add_option("--light-samples", o.light_samples,
                   "reference light samples per sub-pixel and area light (0: max(1, 256/spp))")->default_str("0");
   cmd->add_option("--width", o.width, "film width in pixels (overrides the scene)");
@@ -87,13 +94,8 @@ void print_info() {
 int render_command(const CommonOptions& o, const std::string& reference_arg, bool reference_given, int frame) {
   CommonOptions opts = o;
   if (reference_given && !reference_arg.empty()) {
-    try {
-      std::size_t used = 0;
-      opts.spp = std::stoi(reference_arg, &used);
-      if (used != reference_arg.size()) throw std::invalid_argument("");
-    } catch (const std::exception&) {
-      throw InputError("--reference=" + reference_arg + ": not an integer; allowed: k*k with k = 1..32");
-    }
+    parse_spp(reference_arg, "--reference", opts);
+    opts.spp_text.clear();  // --reference=N wins over --spp
   }
   const auto methods = resolve_methods(o.methods, o.params);
   if (methods.size() != 1) throw InputError("render: --method takes one method; use 'compare' for several");
@@ -103,15 +105,20 @@ int render_command(const CommonOptions& o, const std::string& reference_arg, boo
   const std::string out = o.out.empty() ? default_out("render", o) : o.out;
   const std::filesystem::path path(out);
   const std::string ext = path.extension().string();
-  const Frame f = reference_given ? session.reference(frame) : session.render(methods[0], frame);
   const std::string name = reference_given ? "reference" : methods[0].method->id;
-  if (ext == ".exr" || ext == ".png") {
-    write_frame(path.parent_path(), path.stem().string(), f, session.scene().film);
-    std::cout << "written " << (path.parent_path() / path.stem()).string() << ".exr and .png\n";
+  const bool file = ext == ".exr" || ext == ".png";
+  const std::filesystem::path dir = file ? path.parent_path() : path;
+  const std::string stem = file ? path.stem().string() : name;
+  const Frame method = session.render(methods[0], frame);
+  if (reference_given) {
+    // --reference=auto sizes the reference by the method's own error (the --method, default conventional).
+    const ReferenceFrame reference = session.reference(frame, {&method});
+    write_reference(dir, stem, reference, session.scene().film);
+    std::cout << describe_reference(reference) << "\n";
   } else {
-    write_frame(path, name, f, session.scene().film);
-    std::cout << "written " << (path / name).string() << ".exr and .png\n";
+    write_frame(dir, stem, method, session.scene().film);
   }
+  std::cout << "written " << (dir / stem).string() << ".exr and .png\n";
   return 0;
 }
 

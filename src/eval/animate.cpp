@@ -1,3 +1,4 @@
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -27,33 +28,60 @@ bool encode_mp4(const std::filesystem::path& frames_dir, const std::filesystem::
 
 }  // namespace
 
-std::vector<TemporalMetrics> run_animate(Session& session, const std::vector<MethodChoice>& methods,
+void FlickerFloor::add_frame(const ReferenceFrame& reference) {
+  halves_.add_frame(reference.even_passes, reference.odd_passes);
+  noise_sum_ += reference.passes >= 2 ? reference.noise_rmse() : 0.0;
+  spp_min_ = frames_ == 0 ? reference.spp : std::min(spp_min_, reference.spp);
+  spp_max_ = std::max(spp_max_, reference.spp);
+  ++frames_;
+}
+
+ReferenceFloor FlickerFloor::floor() const {
+  return {halves_.flicker() / std::sqrt(2.0), frames_ > 0 ? noise_sum_ / frames_ : 0.0, spp_min_, spp_max_};
+}
+
+AnimateResult run_animate(Session& session, const std::vector<MethodChoice>& methods,
                                          const std::filesystem::path& out) {
   const int frames = session.frames();
   const Film& film = session.scene().film;
   std::vector<FlickerAccumulator> flicker(methods.size());
   std::vector<TemporalMetrics> results(methods.size());
+  FlickerFloor floor;
   // Frames go to a staging folder first, so a failure half-way leaves no partial animation.
   const auto staging = out / ".frames-staging";
   std::filesystem::remove_all(staging);
   char name[32];
   for (int f = 0; f < frames; ++f) {
-    const Frame reference = session.reference(f);
+    std::vector<Frame> rendered;
+    for (const auto& m : methods) rendered.push_back(session.render(m, f));
+    std::vector<const Frame*> ranked;
+    for (const auto& r : rendered) ranked.push_back(&r);
+    const ReferenceFrame estimate = session.reference(f, ranked);
+    const Frame& reference = estimate.mean;
+    floor.add_frame(estimate);
     std::snprintf(name, sizeof name, "%04d.png", f);
     write_png(staging / "reference" / name, tonemap_for_display(reference.total, film.exposure, film.bloom));
     for (std::size_t i = 0; i < methods.size(); ++i) {
-      const Frame frame = session.render(methods[i], f);
-      flicker[i].add_frame(frame.total, reference.total);
-      results[i].rmse_per_frame.push_back(rmse(frame.total, reference.total));
-      write_png(staging / methods[i].method->id / name, tonemap_for_display(frame.total, film.exposure, film.bloom));
+      flicker[i].add_frame(rendered[i].total, reference.total);
+      results[i].rmse_per_frame.push_back(rmse(rendered[i].total, reference.total));
+      write_png(staging / methods[i].method->id / name,
+                tonemap_for_display(rendered[i].total, film.exposure, film.bloom));
     }
   }
+  const ReferenceFloor reference_floor = floor.floor();
   nlohmann::json json;
   json["scene"] = session.scene().source;
   json["frames"] = frames;
   json["width"] = session.width();
   json["height"] = session.height();
-  json["reference_spp"] = session.reference_settings().spp;
+  json["reference_spp"] = reference_floor.spp_max;
+  json["reference_spp_min"] = reference_floor.spp_min;
+  json["reference_auto"] = session.options().spp_auto;
+  json["reference_noise_rmse"] = reference_floor.noise_rmse;
+  json["flicker_floor"] = reference_floor.flicker;
+  json["flicker_floor_definition"] =
+      "flicker of the reference's even passes against its odd passes, over sqrt(2): the flicker a second "
+      "independent reference would show against the first; smaller method differences are noise";
   json["device"] = session.context().info().renderer;
   json["flicker_definition"] = "mean over pixels, RGB channels and frames t>=1 of |(m_t - r_t) - (m_{t-1} - r_{t-1})|";
   for (std::size_t i = 0; i < methods.size(); ++i) {
@@ -78,11 +106,13 @@ std::vector<TemporalMetrics> run_animate(Session& session, const std::vector<Met
   json["video"] = ffmpeg ? "mp4" : "png frames (ffmpeg not installed)";
   write_text_file(out / "metrics.json", json.dump(2) + "\n");
 
-  std::printf("scene %s, %d frames, %dx%d, reference %d spp\n%-22s %12s %12s\n", session.scene().source.c_str(), frames,
-              session.width(), session.height(), session.reference_settings().spp, "method", "mean_rmse", "flicker");
+  std::printf("scene %s, %d frames, %dx%d, reference %d..%d spp\n%-22s %12s %12s\n", session.scene().source.c_str(),
+              frames, session.width(), session.height(), reference_floor.spp_min, reference_floor.spp_max, "method",
+              "mean_rmse", "flicker");
   for (const auto& r : results) std::printf("%-22s %12.6f %12.6f\n", r.method.c_str(), r.mean_rmse, r.flicker);
+  std::printf("%-22s %12.6f %12.6f\n", "(reference floor)", reference_floor.noise_rmse, reference_floor.flicker);
   std::printf("written to %s/\n", out.string().c_str());
-  return results;
+  return {results, reference_floor};
 }
 
 }  // namespace glintlab

@@ -25,10 +25,36 @@ struct TemporalMetrics {
   double flicker = 0;
 };
 
-/// The camera path for every method and the reference: per-frame RMSE and flicker, an MP4 per
-/// method when ffmpeg is installed (PNG frames otherwise), metrics.json under `out`.
-std::vector<TemporalMetrics> run_animate(Session& session, const std::vector<MethodChoice>& methods,
-                                         const std::filesystem::path& out);
+/// What the reference of an animation allows one to resolve.
+struct ReferenceFloor {
+  double flicker = 0;     ///< the flicker a second independent reference would show against the first
+  double noise_rmse = 0;  ///< the reference's noise RMSE, mean over frames
+  int spp_min = 0, spp_max = 0;
+};
+
+/// The flicker floor from the even and odd passes of each frame's reference: two independent
+/// half-references, whose flicker against each other is sqrt(2) times that of two full ones
+/// (their noise has twice the variance), so the floor is that flicker over sqrt(2).
+class FlickerFloor {
+ public:
+  void add_frame(const ReferenceFrame& reference);
+  [[nodiscard]] ReferenceFloor floor() const;
+
+ private:
+  FlickerAccumulator halves_;
+  double noise_sum_ = 0;
+  int frames_ = 0, spp_min_ = 0, spp_max_ = 0;
+};
+
+struct AnimateResult {
+  std::vector<TemporalMetrics> methods;
+  ReferenceFloor reference;
+};
+
+/// The camera path for every method and the reference: per-frame RMSE and flicker, the flicker
+/// floor of the reference, an MP4 per method when ffmpeg is installed (PNG frames otherwise),
+/// metrics.json under `out`.
+AnimateResult run_animate(Session& session, const std::vector<MethodChoice>& methods, const std::filesystem::path& out);
 
 struct BenchResult {
   std::string method;

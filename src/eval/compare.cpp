@@ -59,7 +59,7 @@ Image side_by_side(const std::vector<const Image*>& displays, const Region& r, i
   return out;
 }
 
-std::string format_table(const std::vector<MethodMetrics>& rows) {
+std::string format_table(const std::vector<MethodMetrics>& rows, const ReferenceFrame& reference) {
   std::ostringstream s;
   char line[256];
   std::snprintf(line, sizeof line, "%-22s %10s %10s %8s %9s %9s %9s\n", "method", "rmse", "rmse_spec", "psnr",
@@ -71,6 +71,10 @@ std::string format_table(const std::vector<MethodMetrics>& rows) {
                   m.rmse_specular, m.psnr, m.energy_ratio, m.energy_ratio_specular, m.max_error);
     s << line;
   }
+  std::snprintf(line, sizeof line, "%-22s %10.5f %10s %8s  +-%.4f  +-%.4f\n", "(reference noise)",
+                reference.noise_rmse(), "", "", reference.relative_energy_error(),
+                reference.relative_energy_error(true));
+  s << line;
   return s.str();
 }
 
@@ -78,10 +82,17 @@ std::string format_table(const std::vector<MethodMetrics>& rows) {
 
 std::vector<MethodMetrics> run_compare(Session& session, const std::vector<MethodChoice>& methods,
                                        const std::filesystem::path& out, int frame) {
-  // Render everything first: a NaN anywhere fails the command before any file is written.
-  const Frame reference = session.reference(frame);
+  // Render everything first: a NaN anywhere fails the command before any file is written. The
+  // methods come first: --spp auto sizes the reference by the differences between them.
   std::vector<Frame> frames;
   for (const auto& m : methods) frames.push_back(session.render(m, frame));
+  std::vector<const Frame*> ranked;
+  for (const auto& f : frames) ranked.push_back(&f);
+  const ReferenceFrame reference_estimate = session.reference(frame, ranked);
+  const Frame& reference = reference_estimate.mean;
+  const double noise = reference_estimate.noise_rmse();
+  const double energy_error = reference_estimate.relative_energy_error();
+  const double energy_error_specular = reference_estimate.relative_energy_error(true);
 
   std::vector<MethodMetrics> rows;
   std::vector<Image> errors;
@@ -103,7 +114,7 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
   if (error_scale <= 0.0f) error_scale = 1.0f;
 
   const Film& film = session.scene().film;
-  write_frame(out, "reference", reference, film);
+  write_reference(out, "reference", reference_estimate, film);
   std::vector<Image> displays{tonemap_for_display(reference.total, film.exposure, film.bloom)};
   for (std::size_t i = 0; i < methods.size(); ++i) {
     write_frame(out, methods[i].method->id, frames[i], film);
@@ -121,14 +132,25 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
   }
 
   std::ostringstream csv;
-  csv << "method,rmse,rmse_specular,psnr,energy_ratio,energy_ratio_specular,max_error\n";
+  // The reference's own error beside every number it judges: its noise RMSE (a method's RMSE
+  // cannot be told from another's closer than this) and the standard error of each energy ratio.
+  csv << "method,rmse,rmse_specular,psnr,energy_ratio,energy_ratio_specular,max_error,reference_noise_rmse,"
+         "energy_ratio_error,energy_ratio_specular_error\n";
   nlohmann::json json;
   json["scene"] = session.scene().source;
   json["frame"] = frame;
   json["width"] = session.width();
   json["height"] = session.height();
-  json["reference_spp"] = session.reference_settings().spp;
+  json["reference_spp"] = reference_estimate.spp;
+  json["reference_passes"] = reference_estimate.passes;
+  json["reference_auto"] = session.options().spp_auto;
   json["reference_light_samples"] = session.reference_settings().effective_light_samples();
+  json["reference_noise_rmse"] = noise;
+  json["reference_energy_error"] = energy_error;
+  if (session.options().spp_auto) {
+    json["reference_noise_target"] = reference_noise_target(reference, ranked, session.options().noise_fraction);
+    json["reference_max_spp"] = session.options().max_spp;
+  }
   json["device"] = session.context().info().renderer;
   json["error_map_scale"] = error_scale;
   json["crops"] = crops;
@@ -136,8 +158,9 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
   for (const auto& row : rows) {
     const auto& m = row.metrics;
     char line[256];
-    std::snprintf(line, sizeof line, "%s,%.8g,%.8g,%.6g,%.8g,%.8g,%.8g\n", row.method.c_str(), m.rmse, m.rmse_specular,
-                  m.psnr, m.energy_ratio, m.energy_ratio_specular, m.max_error);
+    std::snprintf(line, sizeof line, "%s,%.8g,%.8g,%.6g,%.8g,%.8g,%.8g,%.6g,%.6g,%.6g\n", row.method.c_str(), m.rmse,
+                  m.rmse_specular, m.psnr, m.energy_ratio, m.energy_ratio_specular, m.max_error, noise,
+                  m.energy_ratio * energy_error, m.energy_ratio_specular * energy_error_specular);
     csv << line;
     json["methods"].push_back({{"method", row.method},
                                {"rmse", m.rmse},
@@ -145,13 +168,16 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
                                {"psnr", m.psnr},
                                {"energy_ratio", m.energy_ratio},
                                {"energy_ratio_specular", m.energy_ratio_specular},
-                               {"max_error", m.max_error}});
+                               {"max_error", m.max_error},
+                               {"reference_noise_rmse", noise},
+                               {"energy_ratio_error", m.energy_ratio * energy_error},
+                               {"energy_ratio_specular_error", m.energy_ratio_specular * energy_error_specular}});
   }
   write_text_file(out / "metrics.csv", csv.str());
   write_text_file(out / "metrics.json", json.dump(2) + "\n");
-  std::cout << "scene " << session.scene().source << ", " << session.width() << "x" << session.height()
-            << ", reference " << session.reference_settings().spp << " spp\n"
-            << format_table(rows) << "written to " << out.string() << "/\n";
+  std::cout << "scene " << session.scene().source << ", " << session.width() << "x" << session.height() << ", "
+            << describe_reference(reference_estimate) << "\n"
+            << format_table(rows, reference_estimate) << "written to " << out.string() << "/\n";
   return rows;
 }
 

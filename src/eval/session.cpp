@@ -1,6 +1,10 @@
 #include "eval/session.hpp"
 
+#include <cmath>
+#include <limits>
+
 #include "core/error.hpp"
+#include "core/metrics.hpp"
 #include "eval/progress.hpp"
 #include "scene/scene_loader.hpp"
 #include "shading/registry.hpp"
@@ -41,6 +45,40 @@ std::vector<MethodChoice> resolve_methods(const std::string& methods, const std:
   return choices;
 }
 
+double reference_noise_target(const Frame& reference, const std::vector<const Frame*>& ranked, double fraction) {
+  std::vector<double> errors;
+  for (const Frame* f : ranked) errors.push_back(rmse(f->total, reference.total));
+  double smallest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < errors.size(); ++i) {
+    smallest = std::min(smallest, errors[i]);
+    for (std::size_t j = i + 1; j < errors.size(); ++j)
+      if (const double d = std::abs(errors[i] - errors[j]); d > 1e-9) smallest = std::min(smallest, d);
+  }
+  return std::isfinite(smallest) ? fraction * smallest : 0.0;
+}
+
+void parse_spp(const std::string& text, const std::string& flag, CommonOptions& options) {
+  if (text == "auto") {
+    options.spp_auto = true;
+    return;
+  }
+  try {
+    std::size_t used = 0;
+    options.spp = std::stoi(text, &used);
+    if (used != text.size()) throw std::invalid_argument(text);
+  } catch (const std::exception&) {
+    throw InputError(flag + "=" + text + ": not a number; allowed: 1 .. " + std::to_string(kMaxReferenceSpp) +
+                     " samples per pixel, or auto");
+  }
+  options.spp_auto = false;
+  validate_spp(options.spp);
+  if (options.max_spp < 4 * kProgressivePassSpp || options.max_spp > kMaxReferenceSpp)
+    throw InputError("--max-spp " + std::to_string(options.max_spp) + ": allowed: " +
+                     std::to_string(4 * kProgressivePassSpp) + " .. " + std::to_string(kMaxReferenceSpp));
+  if (!(options.noise_fraction > 0.0 && options.noise_fraction <= 1.0))
+    throw InputError("--noise-fraction " + std::to_string(options.noise_fraction) + ": allowed: (0, 1]");
+}
+
 void require_finite(const Frame& frame, const std::string& what) {
   const auto bad = std::max(frame.total.count_non_finite(), frame.specular.count_non_finite());
   if (bad > 0)
@@ -51,7 +89,13 @@ Session::Session(const CommonOptions& options)
     : options_(options),
       scene_(load_scene(options.scene.empty() ? kDefaultScene : options.scene)),
       cache_(options.no_cache ? std::filesystem::path() : ReferenceCache::default_directory()) {
-  validate_spp(options.spp);
+  if (!options.spp_text.empty()) parse_spp(options.spp_text, "--spp", options_);
+  validate_spp(options_.spp);
+  if (options.max_spp < 4 * kProgressivePassSpp || options.max_spp > kMaxReferenceSpp)
+    throw InputError("--max-spp " + std::to_string(options.max_spp) + ": allowed: " +
+                     std::to_string(4 * kProgressivePassSpp) + " .. " + std::to_string(kMaxReferenceSpp));
+  if (!(options.noise_fraction > 0.0 && options.noise_fraction <= 1.0))
+    throw InputError("--noise-fraction " + std::to_string(options.noise_fraction) + ": allowed: (0, 1]");
   if (options.light_samples < 0 || options.light_samples > 4096)
     throw InputError("--light-samples " + std::to_string(options.light_samples) + ": allowed: 0 (auto) .. 4096");
   width_ = options.width > 0 ? options.width : scene_.film.width;
@@ -61,8 +105,8 @@ Session::Session(const CommonOptions& options)
                      ": allowed: 1 .. 16384 per side and at most 67108864 pixels");
   frames_ = options.frames > 0 ? options.frames : scene_.path.frames;
   if (options.frames > 0) scene_.path.frames = options.frames;
-  reference_.spp = options.spp;
-  reference_.light_samples = options.light_samples;
+  reference_.spp = options_.spp_auto ? kProgressivePassSpp * 4 : options_.spp;
+  reference_.light_samples = options_.light_samples;
   context_ = GlContext::create_headless();
   shaders_hash_ = shaders_.sources_hash();
   device_ = context_->info().renderer;
@@ -76,17 +120,47 @@ Frame Session::render(const MethodChoice& choice, int frame) {
   return f;
 }
 
-Frame Session::reference(int frame) {
+ReferenceFrame Session::reference(int frame, const std::vector<const Frame*>& ranked) {
   ReferenceSettings settings = reference_;
   settings.seed = frame;
   const Camera cam = camera(frame);
-  const auto key = ReferenceCache::key(scene_, cam, width_, height_, settings, shaders_hash_, device_);
-  if (auto cached = cache_.load(key)) return *cached;
-  ProgressBar bar("reference " + std::to_string(settings.spp) + " spp, frame " + std::to_string(frame), !options_.quiet);
-  Frame f = renderer_->render_reference(cam, width_, height_, settings, [&](int d, int t) { bar.update(d, t); });
-  require_finite(f, "reference");
-  cache_.store(key, f);
-  return f;
+  if (!options_.spp_auto) {
+    const auto key = ReferenceCache::key(scene_, cam, width_, height_, settings, shaders_hash_, device_);
+    if (auto cached = cache_.load(key)) return *cached;
+    ProgressBar bar("reference " + std::to_string(settings.spp) + " spp, frame " + std::to_string(frame), !options_.quiet);
+    ReferenceFrame r =
+        renderer_->render_reference(cam, width_, height_, settings, [&](int d, int t) { bar.update(d, t); });
+    require_finite(r.mean, "reference");
+    cache_.store(key, r);
+    return r;
+  }
+
+  // Progressive: continue from what the cache holds, one pass of k = 8 at a time.
+  settings.spp = kProgressivePassSpp * 4;  // k = 8; light samples as for 256 spp
+  const int k = settings.subpixels();
+  const auto key = ReferenceCache::key(scene_, cam, width_, height_, settings, shaders_hash_, device_, true);
+  const auto cached = cache_.load(key);
+  ReferenceAccumulator acc = cached ? ReferenceAccumulator(*cached, k * k) : ReferenceAccumulator(width_, height_, k * k);
+  const int max_passes = options_.max_spp / (k * k);
+  ProgressBar bar("reference auto (<= " + std::to_string(options_.max_spp) + " spp), frame " + std::to_string(frame),
+                  !options_.quiet);
+  bool grew = false;
+  for (;;) {
+    if (acc.passes() >= 4) {
+      const ReferenceFrame now = acc.result();
+      const double target = reference_noise_target(now.mean, ranked, options_.noise_fraction);
+      if (acc.passes() >= max_passes || acc.noise_rmse() <= target) break;
+    }
+    const int p = acc.passes();
+    acc.add_pass(renderer_->render_reference_pass(cam, width_, height_, k, settings.effective_light_samples(),
+                                                  reference_pass_seed(frame, p), reference_pass_jitter(frame, p)));
+    grew = true;
+    bar.update(std::min(acc.passes(), max_passes), max_passes);
+  }
+  ReferenceFrame r = acc.result();
+  require_finite(r.mean, "reference");
+  if (grew) cache_.store(key, r);
+  return r;
 }
 
 }  // namespace glintlab

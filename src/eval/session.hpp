@@ -22,7 +22,11 @@ struct CommonOptions {
   std::string scene;
   std::string methods = "conventional";
   std::vector<std::string> params;  ///< "name=value" or "method.name=value"
+  std::string spp_text;         ///< --spp as given; Session parses it (parse_spp)
   int spp = 64;
+  bool spp_auto = false;        ///< --spp auto: progressive reference, see Session::reference
+  int max_spp = 4096;           ///< the cap of --spp auto
+  double noise_fraction = 0.1;  ///< --spp auto's target, a fraction of the differences ranked
   int light_samples = 0;
   int width = 0;   ///< 0: the scene's film
   int height = 0;
@@ -56,8 +60,12 @@ class Session {
   /// Renders a method's frame; throws RuntimeFailure if it holds NaN or Inf.
   Frame render(const MethodChoice& choice, int frame);
   /// The ground truth of a frame, from the cache when possible; throws on NaN or Inf.
-  Frame reference(int frame);
+  /// With --spp N: N samples per pixel. With --spp auto: passes of kProgressivePassSpp are added
+  /// until the reference's noise RMSE is at most noise_fraction times the smallest of the
+  /// `ranked` methods' RMSEs and of their nonzero pairwise differences, or max_spp is reached.
+  ReferenceFrame reference(int frame, const std::vector<const Frame*>& ranked = {});
   [[nodiscard]] const ReferenceSettings& reference_settings() const { return reference_; }
+  [[nodiscard]] const CommonOptions& options() const { return options_; }
 
  private:
   CommonOptions options_;
@@ -72,6 +80,16 @@ class Session {
   std::uint64_t shaders_hash_ = 0;  ///< part of every reference cache key
   std::string device_;
 };
+
+/// Samples per pixel of one pass of a progressive (--spp auto) reference: k = 8.
+constexpr int kProgressivePassSpp = 64;
+
+/// --spp auto's target: `fraction` times the smallest of the methods' RMSEs against `reference`
+/// and of their pairwise differences larger than 1e-9 (identical methods are not a ranking).
+double reference_noise_target(const Frame& reference, const std::vector<const Frame*>& ranked, double fraction);
+
+/// Parses --spp (or --reference=): a sample count or "auto"; throws InputError naming `flag`.
+void parse_spp(const std::string& text, const std::string& flag, CommonOptions& options);
 
 /// Throws RuntimeFailure naming `what` and the number of pixels with NaN or Inf.
 void require_finite(const Frame& frame, const std::string& what);

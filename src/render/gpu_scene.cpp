@@ -1,6 +1,7 @@
 #include "render/gpu_scene.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/vec4.hpp>
 
@@ -38,7 +39,7 @@ struct MaterialGpu {
   glm::vec4 glints;
 };
 
-// Mirrors LightData in shaders/common/lights.glsl (std430).
+// Mirrors LightData in shaders/common/lights.glsl (std140).
 struct LightGpu {
   glm::vec4 colour_type;
   glm::vec4 position_radius;
@@ -77,13 +78,18 @@ LightGpu to_gpu(const Light& l) {
   LightGpu g{};
   g.colour_type = glm::vec4(l.colour, static_cast<float>(gpu_light_kind(l)));
   g.position_radius = glm::vec4(l.position, l.radius);
-  g.direction_cos = glm::vec4(l.direction, std::cos(glm::radians(l.angular_radius_degrees)));
+  // Sun cones in double: 1 - cos = 2 sin^2(theta / 2) keeps its precision at small angles, where
+  // 1 - cos in float would not (shaders/common/lights.glsl, sunOneMinusCos).
+  const double theta = static_cast<double>(l.angular_radius_degrees) * (3.14159265358979323846 / 180.0);
+  const double half_sin = std::sin(0.5 * theta);
+  g.direction_cos = glm::vec4(l.direction, static_cast<float>(std::cos(theta)));
   if (l.type == LightType::Quad) {
     const glm::vec3 u = glm::normalize(glm::cross(l.up, l.direction));
     const glm::vec3 v = glm::cross(l.direction, u);
     g.axis_u = glm::vec4(0.5f * l.size.x * u, 0.0f);
     g.axis_v = glm::vec4(0.5f * l.size.y * v, 0.0f);
   }
+  g.axis_u.w = static_cast<float>(2.0 * half_sin * half_sin);
   return g;
 }
 

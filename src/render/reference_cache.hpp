@@ -18,16 +18,19 @@ class ReferenceCache {
   explicit ReferenceCache(std::filesystem::path directory);
   static std::filesystem::path default_directory();
 
+  /// `progressive`: a key for a reference that grows pass by pass (--spp auto), without the spp.
   [[nodiscard]] static std::uint64_t key(const Scene& scene, const Camera& camera, int width, int height,
                                          const ReferenceSettings& settings, std::uint64_t shaders_hash,
-                                         const std::string& renderer);
-  [[nodiscard]] std::optional<Frame> load(std::uint64_t key) const;
+                                         const std::string& renderer, bool progressive = false);
+  /// An entry is an EXR (mean, specular, standard error, even and odd passes) and a JSON of its
+  /// passes, written last so that a half-written entry is never read.
+  [[nodiscard]] std::optional<ReferenceFrame> load(std::uint64_t key) const;
   /// Failures to write are reported on stderr and otherwise ignored: the cache is an optimisation.
-  void store(std::uint64_t key, const Frame& frame) const;
+  void store(std::uint64_t key, const ReferenceFrame& frame) const;
   [[nodiscard]] bool enabled() const { return !directory_.empty(); }
 
  private:
-  [[nodiscard]] std::filesystem::path path(std::uint64_t key) const;
+  [[nodiscard]] std::filesystem::path path(std::uint64_t key, const char* extension) const;
   std::filesystem::path directory_;
 };
 

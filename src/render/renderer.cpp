@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/mat3x3.hpp>
 
 #include "core/error.hpp"
@@ -18,17 +19,20 @@ struct Renderer::FrameUniforms {
   glm::ivec4 tile;
 };
 
-int ReferenceSettings::subpixels() const { return static_cast<int>(std::lround(std::sqrt(static_cast<double>(spp)))); }
+int ReferenceSettings::subpixels() const {
+  for (int k = 32; k > 1; --k)
+    if (spp % (k * k) == 0 && 4 * k * k <= spp) return k;
+  return 1;
+}
 
 int ReferenceSettings::effective_light_samples() const {
   return light_samples > 0 ? light_samples : std::max(1, (256 + spp - 1) / spp);
 }
 
 void validate_spp(int spp) {
-  const int k = static_cast<int>(std::lround(std::sqrt(static_cast<double>(spp))));
-  if (spp < 1 || k * k != spp || k > 32)
-    throw InputError("--spp " + std::to_string(spp) + ": allowed: k*k samples per pixel with k = 1..32 "
-                     "(1, 4, 16, 64, 256, 1024, ...)");
+  if (spp < 1 || spp > kMaxReferenceSpp)
+    throw InputError("--spp " + std::to_string(spp) + ": allowed: 1 .. " + std::to_string(kMaxReferenceSpp) +
+                     " samples per pixel (best 4 k^2: 64, 256, 1024, 4096)");
 }
 
 Renderer::Renderer(ShaderLibrary& shaders, const GpuScene& scene) : shaders_(shaders), scene_(scene) {
@@ -41,6 +45,25 @@ RenderTarget& Renderer::target(int width, int height) {
   return *target_;
 }
 
+namespace {
+
+/// The reference's shading module: it reads every texture unfiltered (REFERENCE_PASS).
+constexpr const char* kReferenceModule = "passes/reference.glsl";
+
+/// A well-mixed 32-bit hash (the finaliser of MurmurHash3) for per-pass seeds and jitter.
+std::uint32_t mix32(std::uint32_t x) {
+  x ^= x >> 16;
+  x *= 0x85ebca6bu;
+  x ^= x >> 13;
+  x *= 0xc2b2ae35u;
+  x ^= x >> 16;
+  return x;
+}
+
+float unit_float(std::uint32_t x) { return static_cast<float>(x >> 8) * (1.0f / 16777216.0f); }
+
+}  // namespace
+
 ShaderDefines forward_variant(const std::string& module, const LightRanges& light_ranges, MaterialVariant material) {
   std::string ranges = "ivec2[](";
   for (std::size_t k = 0; k < light_ranges.size(); ++k)
@@ -48,7 +71,8 @@ ShaderDefines forward_variant(const std::string& module, const LightRanges& ligh
   return {{"$METHOD", module},
           {"LIGHT_RANGES", ranges + ")"},
           {"MATERIAL_NORMAL_MAP", material.normal_map ? "1" : "0"},
-          {"MATERIAL_GLINTS", material.glints ? "1" : "0"}};
+          {"MATERIAL_GLINTS", material.glints ? "1" : "0"},
+          {"REFERENCE_PASS", module == kReferenceModule ? "1" : "0"}};
 }
 
 GLuint Renderer::forward_program(const std::string& module, int material) {
@@ -141,10 +165,33 @@ Frame Renderer::render_module(const std::string& module, const ParamValues& para
   return {RenderTarget::read(target_->total(), width, height), RenderTarget::read(target_->specular(), width, height)};
 }
 
-Frame Renderer::render_reference(const Camera& camera, int width, int height, const ReferenceSettings& settings,
-                                 const ProgressFn& progress) {
+ReferenceFrame Renderer::render_reference(const Camera& camera, int width, int height,
+                                          const ReferenceSettings& settings, const ProgressFn& progress) {
   validate_spp(settings.spp);
-  const int k = settings.subpixels();
+  const int k = settings.subpixels(), passes = settings.passes();
+  ReferenceAccumulator accumulator(width, height, k * k);
+  for (int p = 0; p < passes; ++p) {
+    accumulator.add_pass(render_reference_pass(
+        camera, width, height, k, settings.effective_light_samples(), reference_pass_seed(settings.seed, p),
+        reference_pass_jitter(settings.seed, p), [&](int done, int total) {
+          if (progress) progress(p * total + done, passes * total);
+        }));
+  }
+  return accumulator.result();
+}
+
+std::uint32_t reference_pass_seed(int frame_seed, int pass) {
+  return mix32(static_cast<std::uint32_t>(frame_seed) * 0x9e3779b9u ^ mix32(static_cast<std::uint32_t>(pass) + 1u));
+}
+
+glm::vec2 reference_pass_jitter(int frame_seed, int pass) {
+  const std::uint32_t h = mix32(reference_pass_seed(frame_seed, pass) ^ 0x6a09e667u);
+  return {unit_float(h), unit_float(mix32(h))};
+}
+
+Frame Renderer::render_reference_pass(const Camera& camera, int width, int height, int k, int light_samples,
+                                      std::uint32_t seed, glm::vec2 jitter, const ProgressFn& progress) {
+  if (k < 1 || k > 32) throw InputError("reference sub-pixels per axis " + std::to_string(k) + ": allowed: 1 .. 32");
   constexpr int kMaxTileSide = 2048;  // sub-pixels per side of one high-resolution tile
   const int tile = std::max(1, kMaxTileSide / k);
   const int tiles_x = (width + tile - 1) / tile, tiles_y = (height + tile - 1) / tile;
@@ -163,10 +210,16 @@ Frame Renderer::render_reference(const Camera& camera, int width, int height, co
       const glm::ivec2 origin(tx * tile, ty * tile);
       const glm::ivec2 size(std::min(tile, width - origin.x), std::min(tile, height - origin.y));
       const int gl_y = height - origin.y - size.y;  // the same tile in GL's y-up pixel rows
-      high.bind_and_clear(size.x * k, size.y * k);
-      draw_scene("passes/reference.glsl", {}, frame_uniforms(camera, camera.tile_projection_matrix(film, origin, size),
-                                         {size.x * k, size.y * k, k, 0},
-                                         {origin.x * k, gl_y * k, settings.effective_light_samples(), settings.seed}));
+      const glm::ivec2 high_size = size * k;
+      // The rasteriser samples each sub-pixel at its centre; moving the image by (0.5 - jitter)
+      // sub-pixels makes that centre see the point `jitter` from the cell's corner instead.
+      const glm::vec2 shift_ndc = 2.0f * (glm::vec2(0.5f) - jitter) / glm::vec2(high_size);
+      const glm::mat4 projection = glm::translate(glm::mat4(1.0f), glm::vec3(shift_ndc, 0.0f)) *
+                                   camera.tile_projection_matrix(film, origin, size);
+      high.bind_and_clear(high_size.x, high_size.y);
+      draw_scene(kReferenceModule, {},
+                 frame_uniforms(camera, projection, {high_size.x, high_size.y, k, 0},
+                                {origin.x * k, gl_y * k, light_samples, static_cast<int>(seed & 0x7fffffffu)}));
 
       glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
       glUseProgram(downsample);

@@ -8,28 +8,32 @@
 #include "core/image.hpp"
 #include "gl/shader_library.hpp"
 #include "render/gpu_scene.hpp"
+#include "render/reference_estimate.hpp"
 #include "render/render_target.hpp"
 #include "scene/camera.hpp"
 #include "shading/method.hpp"
 
 namespace glintlab {
 
-/// One rendered frame: linear radiance and its specular part.
-struct Frame {
-  Image total;
-  Image specular;
-};
-
+/// How a reference is sampled: `spp` samples per pixel in all, rendered as passes() independent
+/// passes of k x k jittered sub-pixels (k = subpixels()).
 struct ReferenceSettings {
-  int spp = 64;            ///< k * k sub-pixels per pixel, k in 1..32
+  int spp = 64;            ///< passes x k x k; see subpixels()
   int light_samples = 0;   ///< per sub-pixel and light with extent; 0: max(1, ceil(256 / spp))
   int seed = 0;            ///< decorrelates frames of an animation
+  /// k: the largest k <= 32 with k * k dividing spp and at most spp / 4 (so that there are at
+  /// least four passes to estimate the reference's own error from), or 1.
   [[nodiscard]] int subpixels() const;
+  [[nodiscard]] int passes() const { return spp / (subpixels() * subpixels()); }
   [[nodiscard]] int effective_light_samples() const;
 };
 
-/// Throws InputError unless spp is k*k with k in 1..32.
+constexpr int kMaxReferenceSpp = 65536;
+/// Throws InputError unless spp is in 1 .. kMaxReferenceSpp.
 void validate_spp(int spp);
+/// The sample seed and the sub-pixel jitter in [0, 1)^2 of one pass of a frame's reference.
+std::uint32_t reference_pass_seed(int frame_seed, int pass);
+glm::vec2 reference_pass_jitter(int frame_seed, int pass);
 
 /// What of a material changes the forward program: MATERIAL_NORMAL_MAP and MATERIAL_GLINTS.
 struct MaterialVariant {
@@ -59,9 +63,15 @@ class Renderer {
   /// draw_module, read back (e.g. the diagnostics of passes/glint_cells.glsl).
   Frame render_module(const std::string& module, const ParamValues& params, const Camera& camera, int width,
                       int height);
-  /// Ground truth: k x k supersampling in tiles, box-filtered (DESIGN.md, "Ground truth").
-  Frame render_reference(const Camera& camera, int width, int height, const ReferenceSettings& settings,
-                         const ProgressFn& progress = {});
+  /// Ground truth (docs/methods.md, "Ground truth"): settings.passes() passes, each of k x k
+  /// jittered sub-pixels per pixel, with their mean and standard error.
+  ReferenceFrame render_reference(const Camera& camera, int width, int height, const ReferenceSettings& settings,
+                                  const ProgressFn& progress = {});
+  /// One pass of the reference: k x k sub-pixels per pixel, rendered in tiles and box-filtered,
+  /// every sub-pixel moved by the same `jitter` in [0, 1)^2 sub-pixels from its cell's corner;
+  /// `seed` selects the pass's light and BRDF samples.
+  Frame render_reference_pass(const Camera& camera, int width, int height, int subpixels, int light_samples,
+                              std::uint32_t seed, glm::vec2 jitter, const ProgressFn& progress = {});
 
  private:
   struct FrameUniforms;

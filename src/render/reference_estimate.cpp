@@ -1,0 +1,119 @@
+#include "render/reference_estimate.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "core/error.hpp"
+
+namespace glintlab {
+
+namespace {
+
+glm::dvec3 as_double(const glm::vec3& v) { return glm::dvec3(v); }
+
+double luminance_of(const glm::dvec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
+/// Unbiased variance of the mean of n samples from their sum and sum of squares.
+glm::dvec3 variance_of_mean(const glm::dvec3& sum, const glm::dvec3& squares, int n) {
+  if (n < 2) return glm::dvec3(0.0);
+  const glm::dvec3 mean = sum / double(n);
+  const glm::dvec3 var = (squares - double(n) * mean * mean) / double(n - 1);
+  return glm::max(var, glm::dvec3(0.0)) / double(n);
+}
+
+}  // namespace
+
+double ReferenceFrame::noise_rmse() const {
+  if (passes < 2) return std::numeric_limits<double>::quiet_NaN();
+  double sum = 0.0;
+  for (const auto& e : standard_error.pixels()) sum += glm::dot(glm::dvec3(e), glm::dvec3(e));
+  return std::sqrt(sum / (3.0 * static_cast<double>(standard_error.pixel_count())));
+}
+
+double ReferenceFrame::relative_energy_error(bool specular) const {
+  const auto& values = specular ? pass_luminance_specular : pass_luminance;
+  const auto n = static_cast<double>(values.size());
+  if (values.size() < 2) return std::numeric_limits<double>::quiet_NaN();
+  double sum = 0.0, squares = 0.0;
+  for (double v : values) sum += v, squares += v * v;
+  const double mean = sum / n;
+  const double var = std::max(squares - n * mean * mean, 0.0) / (n - 1.0);
+  return mean > 0.0 ? std::sqrt(var / n) / mean : 0.0;
+}
+
+ReferenceAccumulator::ReferenceAccumulator(int width, int height, int spp_per_pass)
+    : width_(width), height_(height), spp_per_pass_(spp_per_pass) {
+  const auto n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  sum_.assign(n, glm::dvec3(0.0));
+  sum_squares_ = specular_sum_ = even_sum_ = sum_;
+}
+
+ReferenceAccumulator::ReferenceAccumulator(const ReferenceFrame& earlier, int spp_per_pass)
+    : ReferenceAccumulator(earlier.mean.total.width(), earlier.mean.total.height(), spp_per_pass) {
+  passes_ = earlier.passes;
+  pass_luminance_ = earlier.pass_luminance;
+  pass_luminance_specular_ = earlier.pass_luminance_specular;
+  if (static_cast<int>(pass_luminance_.size()) != passes_ || pass_luminance_specular_.size() != pass_luminance_.size())
+    throw RuntimeFailure("reference frame with " + std::to_string(passes_) + " passes but " +
+                         std::to_string(pass_luminance_.size()) + " pass means");
+  const double n = passes_;
+  const int even = (passes_ + 1) / 2;
+  for (std::size_t i = 0; i < sum_.size(); ++i) {
+    const glm::dvec3 mean = as_double(earlier.mean.total.pixels()[i]);
+    const glm::dvec3 se = as_double(earlier.standard_error.pixels()[i]);
+    sum_[i] = mean * n;
+    // Inverts variance_of_mean: squares = (n - 1) n se^2 + n mean^2.
+    sum_squares_[i] = (n - 1.0) * n * se * se + n * mean * mean;
+    specular_sum_[i] = as_double(earlier.mean.specular.pixels()[i]) * n;
+    even_sum_[i] = as_double(earlier.even_passes.pixels()[i]) * double(even);
+  }
+}
+
+void ReferenceAccumulator::add_pass(const Frame& pass) {
+  if (pass.total.width() != width_ || pass.total.height() != height_)
+    throw RuntimeFailure("reference pass of a different size");
+  const bool even = passes_ % 2 == 0;
+  for (std::size_t i = 0; i < sum_.size(); ++i) {
+    const glm::dvec3 v = as_double(pass.total.pixels()[i]);
+    sum_[i] += v;
+    sum_squares_[i] += v * v;
+    specular_sum_[i] += as_double(pass.specular.pixels()[i]);
+    if (even) even_sum_[i] += v;
+  }
+  pass_luminance_.push_back(luminance_of(pass.total.mean()));
+  pass_luminance_specular_.push_back(luminance_of(pass.specular.mean()));
+  ++passes_;
+}
+
+double ReferenceAccumulator::noise_rmse() const {
+  if (passes_ < 2) return std::numeric_limits<double>::quiet_NaN();
+  double sum = 0.0;
+  for (std::size_t i = 0; i < sum_.size(); ++i) {
+    const glm::dvec3 v = variance_of_mean(sum_[i], sum_squares_[i], passes_);
+    sum += v.x + v.y + v.z;
+  }
+  return std::sqrt(sum / (3.0 * static_cast<double>(sum_.size())));
+}
+
+ReferenceFrame ReferenceAccumulator::result() const {
+  ReferenceFrame r;
+  r.passes = passes_;
+  r.spp = passes_ * spp_per_pass_;
+  r.pass_luminance = pass_luminance_;
+  r.pass_luminance_specular = pass_luminance_specular_;
+  r.mean = {Image(width_, height_), Image(width_, height_)};
+  r.standard_error = r.even_passes = r.odd_passes = Image(width_, height_);
+  const int even = (passes_ + 1) / 2, odd = passes_ / 2;
+  for (std::size_t i = 0; i < sum_.size(); ++i) {
+    const double n = std::max(passes_, 1);
+    r.mean.total.pixels()[i] = glm::vec3(sum_[i] / n);
+    r.mean.specular.pixels()[i] = glm::vec3(specular_sum_[i] / n);
+    r.standard_error.pixels()[i] = glm::vec3(glm::sqrt(variance_of_mean(sum_[i], sum_squares_[i], passes_)));
+    const glm::dvec3 even_mean = even > 0 ? even_sum_[i] / double(even) : glm::dvec3(0.0);
+    r.even_passes.pixels()[i] = glm::vec3(even_mean);
+    r.odd_passes.pixels()[i] = glm::vec3(odd > 0 ? (sum_[i] - even_sum_[i]) / double(odd) : even_mean);
+  }
+  return r;
+}
+
+}  // namespace glintlab

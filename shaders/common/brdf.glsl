@@ -33,17 +33,40 @@ float smithLambdaOfT2(int kind, float t2) {
   return 0.5 * (-1.0 + sqrt(1.0 + t2));
 }
 
-// Smith Lambda for direction w of the axis-aligned NDF.
-float smithLambda(int kind, vec3 w, vec2 alpha) {
+// |w.z| Lambda(w) for direction w of the axis-aligned NDF, with s = alpha(w) |w.xy| (so that
+// t2 = s^2 / w.z^2), in forms without division by w.z: it stays finite and exact as w.z -> 0, where
+// Lambda itself diverges. G1 / w.z and G2 / wo.z, which the BRDF needs, are built from it.
+float smithLambdaCos(int kind, vec3 w, vec2 alpha) {
   vec2 a = max(alpha, vec2(MIN_ALPHA));
-  return smithLambdaOfT2(kind, (a.x * a.x * w.x * w.x + a.y * a.y * w.y * w.y) / max(w.z * w.z, 1e-12));
+  float s2 = a.x * a.x * w.x * w.x + a.y * a.y * w.y * w.y;
+  float z = abs(w.z);
+  if (kind == 1) {
+    // Beckmann, Walter's fit in b = z / s: z Lambda = s (1 - 1.259 b + 0.396 b^2) / (3.535 + 2.181 b).
+    float s = sqrt(s2);
+    if (z >= 1.6 * s) return 0.0;
+    float b = z / s;
+    return s * (1.0 - 1.259 * b + 0.396 * b * b) / (3.535 + 2.181 * b);
+  }
+  // GGX: z (sqrt(1 + s^2/z^2) - 1) / 2 = s^2 / (2 (z + sqrt(z^2 + s^2))).
+  float d = z + sqrt(z * z + s2);
+  return d > 0.0 ? 0.5 * s2 / d : 0.0;
 }
 
-float smithG1(int kind, vec3 w, vec2 alpha) { return 1.0 / (1.0 + smithLambda(kind, w, alpha)); }
+// Smith Lambda for direction w of the axis-aligned NDF (infinite at w.z = 0).
+float smithLambda(int kind, vec3 w, vec2 alpha) { return smithLambdaCos(kind, w, alpha) / abs(w.z); }
+
+float smithG1(int kind, vec3 w, vec2 alpha) { return abs(w.z) / (abs(w.z) + smithLambdaCos(kind, w, alpha)); }
 
 // Height-correlated masking-shadowing (Heitz 2014, eq. 99).
 float smithG2(int kind, vec3 wo, vec3 wi, vec2 alpha) {
   return 1.0 / (1.0 + smithLambda(kind, wo, alpha) + smithLambda(kind, wi, alpha));
+}
+
+// G2(wo, wi) / wo.z for wo.z, wi.z > 0, finite as either tends to 0 (no 1/wo.z blow-up: it tends
+// to 1 / (z Lambda(wo)) ~ 2 / alpha, the true limit).
+float smithG2OverCos(int kind, vec3 wo, vec3 wi, vec2 alpha) {
+  float lo = smithLambdaCos(kind, wo, alpha), li = smithLambdaCos(kind, wi, alpha);
+  return 1.0 / (wo.z + lo + li * wo.z / wi.z);
 }
 
 vec3 fresnelSchlick(vec3 f0, float cosTheta) {
@@ -57,8 +80,7 @@ vec3 specularCos(int kind, vec3 wo, vec3 wi, vec2 alpha, vec3 f0) {
   if (wo.z <= 0.0 || wi.z <= 0.0) return vec3(0.0);
   vec3 h = normalize(wo + wi);
   float d = ndf(kind, h, alpha);
-  float g = smithG2(kind, wo, wi, alpha);
-  return fresnelSchlick(f0, dot(wo, h)) * (d * g / (4.0 * wo.z));
+  return fresnelSchlick(f0, dot(wo, h)) * (0.25 * d * smithG2OverCos(kind, wo, wi, alpha));
 }
 
 // Lambert diffuse times the cosine.

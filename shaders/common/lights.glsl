@@ -17,7 +17,7 @@ struct LightData {
   vec4 position_radius;  // xyz: centre; w: radius (disk, sphere)
   vec4 direction_cos;    // xyz: travel direction (directional, sun) or emitting normal (disk, quad);
                          // w: cos(angular radius) of a sun
-  vec4 axisU;            // quad: half edge vectors
+  vec4 axisU;            // xyz: quad: half edge vectors; w: sun: 1 - cos(angular radius), exact
   vec4 axisV;
 };
 // A uniform buffer, not a storage buffer: its loads are scalar, and drivers that mask storage
@@ -33,13 +33,27 @@ int lightType(LightData L) { return int(L.colour_type.a); }
 // Lights with extent: a delta-free integral over solid angle (area lights and suns).
 bool lightHasExtent(LightData L) { return lightType(L) >= LIGHT_DISK; }
 
+// 1 - cos(angular radius) of a sun, computed in double on the CPU (src/render/gpu_scene.cpp):
+// 1 - direction_cos.w in float keeps only ~160 steps at 0.25 degrees. Hand-built records (tests)
+// must set it too.
+float sunOneMinusCos(LightData L) { return L.axisU.w; }
+
+// sin^2 of a cone's half-angle from 1 - cos, without cancellation: (1 - c)(1 + c).
+float coneSin2(float oneMinusCos) { return oneMinusCos * (2.0 - oneMinusCos); }
+
+// Is the direction dir inside the cone of half-angle acos(1 - oneMinusCos) (< 90 degrees) around
+// axis? Compares sin^2 from the cross product, exact near the axis, not cosines near 1.
+bool inCone(vec3 dir, vec3 axis, float oneMinusCos) {
+  float c = dot(dir, axis);
+  if (c <= 0.0) return false;
+  vec3 x = cross(dir, axis);
+  return dot(x, x) <= coneSin2(oneMinusCos) * dot(dir, dir) * dot(axis, axis);
+}
+
 // Radiance of lights with extent. A sun of angular radius theta with irradiance E at normal
 // incidence has radiance E / (pi sin^2 theta).
 vec3 lightRadiance(LightData L) {
-  if (lightType(L) == LIGHT_SUN) {
-    float sin2 = max(1.0 - L.direction_cos.w * L.direction_cos.w, 1e-12);
-    return L.colour_type.rgb / (PI * sin2);
-  }
+  if (lightType(L) == LIGHT_SUN) return L.colour_type.rgb / (PI * max(coneSin2(sunOneMinusCos(L)), 1e-30));
   return L.colour_type.rgb;
 }
 
@@ -64,14 +78,15 @@ vec3 lightCentreDirection(LightData L, vec3 p) {
 bool lightHit(LightData L, vec3 origin, vec3 dir, out float dist) {
   int t = lightType(L);
   dist = FAR_AWAY;
-  if (t == LIGHT_SUN) return dot(dir, -L.direction_cos.xyz) >= L.direction_cos.w;
+  if (t == LIGHT_SUN) return inCone(dir, -L.direction_cos.xyz, sunOneMinusCos(L));
   if (t == LIGHT_POINT || t == LIGHT_DIRECTIONAL) return false;
   vec3 c = L.position_radius.xyz;
   if (t == LIGHT_SPHERE) {
     float r = L.position_radius.w;
     vec3 oc = origin - c;
     float b = dot(oc, dir);
-    float disc = b * b - (dot(oc, oc) - r * r);
+    vec3 perp = oc - b * dir;  // r^2 - |perp|^2, not b^2 - |oc|^2 + r^2: no cancellation far away
+    float disc = r * r - dot(perp, perp);
     if (disc < 0.0) return false;
     float s = sqrt(disc);
     dist = -b - s;
@@ -101,29 +116,33 @@ void basisAround(vec3 n, out vec3 t, out vec3 b) {
   b = vec3(c, s + n.y * n.y * a, -n.y);
 }
 
-// Uniform direction in the cone of half-angle acos(cosMax) around axis; pdf = 1 / (2 pi (1 - cosMax)).
-vec3 sampleCone(vec3 axis, float cosMax, vec2 u) {
-  float cosT = 1.0 - u.x * (1.0 - cosMax);
-  float sinT = sqrt(max(0.0, 1.0 - cosT * cosT));
+// Uniform direction in the cone of half-angle acos(1 - oneMinusCosMax) around axis;
+// pdf = 1 / (2 pi oneMinusCosMax). Samples 1 - cos directly, so small cones keep their resolution.
+vec3 sampleCone(vec3 axis, float oneMinusCosMax, vec2 u) {
+  float oneMinusCosT = u.x * oneMinusCosMax;
+  float cosT = 1.0 - oneMinusCosT;
+  float sinT = sqrt(max(0.0, coneSin2(oneMinusCosT)));
   float phi = TWO_PI * u.y;
   vec3 t, b;
   basisAround(axis, t, b);
   return normalize(sinT * cos(phi) * t + sinT * sin(phi) * b + cosT * axis);
 }
 
-// cos of the half-angle a sphere light subtends from p (1e-6 floor keeps the pdf finite).
-float sphereConeCos(LightData L, vec3 p) {
+// 1 - cos of the half-angle a sphere light subtends from p, as sin^2 / (1 + cos): no
+// cancellation for small or distant spheres.
+float sphereConeOneMinusCos(LightData L, vec3 p) {
   vec3 d = L.position_radius.xyz - p;
   float r = L.position_radius.w;
-  float sin2 = min(r * r / max(dot(d, d), 1e-12), 1.0);
-  return sqrt(max(1.0 - sin2, 0.0));
+  float sin2 = min(r * r / max(dot(d, d), 1e-30), 1.0);
+  return sin2 / (1.0 + sqrt(1.0 - sin2));
 }
+float sphereConeCos(LightData L, vec3 p) { return 1.0 - sphereConeOneMinusCos(L, p); }
 
 // Solid-angle density with which sampleLightDirection picks `dir` (which hits at `dist`).
 float lightPdf(LightData L, vec3 p, vec3 dir, float dist) {
   int t = lightType(L);
-  if (t == LIGHT_SUN) return 1.0 / (TWO_PI * (1.0 - L.direction_cos.w));
-  if (t == LIGHT_SPHERE) return 1.0 / (TWO_PI * max(1.0 - sphereConeCos(L, p), 1e-9));
+  if (t == LIGHT_SUN) return 1.0 / (TWO_PI * max(sunOneMinusCos(L), 1e-30));
+  if (t == LIGHT_SPHERE) return 1.0 / (TWO_PI * max(sphereConeOneMinusCos(L, p), 1e-30));
   float cosL = abs(dot(dir, L.direction_cos.xyz));
   return dist * dist / max(lightArea(L) * cosL, 1e-20);
 }
@@ -133,15 +152,14 @@ bool sampleLightDirection(LightData L, vec3 p, vec2 u, out vec3 dir, out float d
   int t = lightType(L);
   dist = FAR_AWAY;
   if (t == LIGHT_SUN) {
-    dir = sampleCone(-L.direction_cos.xyz, L.direction_cos.w, u);
+    dir = sampleCone(-L.direction_cos.xyz, sunOneMinusCos(L), u);
     pdf = lightPdf(L, p, dir, dist);
     return true;
   }
   vec3 c = L.position_radius.xyz;
   if (t == LIGHT_SPHERE) {
     vec3 toC = c - p;
-    float cosMax = sphereConeCos(L, p);
-    dir = sampleCone(normalize(toC), cosMax, u);
+    dir = sampleCone(normalize(toC), sphereConeOneMinusCos(L, p), u);
     pdf = lightPdf(L, p, dir, dist);
     return lightHit(L, p, dir, dist);
   }

@@ -1,4 +1,6 @@
-// Random numbers and BRDF sampling for the reference renderer.
+// Random numbers and BRDF sampling for the reference renderer, with the densities of the
+// reflected directions they produce (for multiple importance sampling).
+#include "common/brdf.glsl"
 #include "common/constants.glsl"
 
 // PCG hash (Jarzynski & Olano 2020, "Hash Functions for GPU Rendering").
@@ -43,4 +45,27 @@ vec3 sampleBeckmannNormal(vec2 alpha, vec2 u) {
   float phi = TWO_PI * u.y;
   vec2 slope = a * r * vec2(cos(phi), sin(phi));
   return normalize(vec3(-slope, 1.0));
+}
+
+// Solid-angle density of wi = reflect(-wo, h) for h from sampleGGXVisibleNormal: the visible-normal
+// density G1(wo) max(0, wo.h) D(h) / wo.z (Heitz 2018, eq. 3) times the reflection Jacobian
+// 1 / (4 wo.h) (Walter et al. 2007, eq. 14), i.e. D(h) G1(wo) / (4 wo.z), with G1 / wo.z in its
+// stable form: specularCos / this pdf = F G2 / G1 <= 1 at every angle, grazing included.
+float ggxVisibleReflectionPdf(vec3 wo, vec3 wi, vec2 alpha) {
+  vec3 m = wo + wi;
+  if (wo.z <= 0.0 || dot(m, m) <= 0.0) return 0.0;
+  vec3 h = normalize(m);
+  if (dot(wo, h) <= 0.0) return 0.0;
+  return ndfGGX(h, alpha) / (4.0 * (wo.z + smithLambdaCos(0, wo, alpha)));
+}
+
+// Solid-angle density of wi = reflect(-wo, h) for h from sampleBeckmannNormal: D(h) h.z / (4 wo.h).
+// Normals facing away from wo (wo.h < 0) reflect below the horizon, where this is 0.
+float beckmannReflectionPdf(vec3 wo, vec3 wi, vec2 alpha) {
+  vec3 m = wo + wi;
+  if (dot(m, m) <= 0.0) return 0.0;
+  vec3 h = normalize(m);
+  float oh = dot(wo, h);
+  if (oh <= 0.0) return 0.0;
+  return ndfBeckmann(h, alpha) * h.z / (4.0 * oh);
 }

@@ -74,12 +74,16 @@ TEST(Cli, BadInputClassesExitWith2AndWriteNothing) {
                    {"nope.obj"});
   expect_bad_input("render --scene builtin:nothing", {"builtin:nothing", "spheres"});
   expect_bad_input("render --method magic", {"unknown method 'magic'", "conventional"});
-  expect_bad_input("render --param nonsense=1", {"nonsense", "mirror_alpha"});
-  expect_bad_input("render --param mirror_alpha=7", {"mirror_alpha=7", "0 .. 1"});
-  expect_bad_input("render --param mirror_alpha=abc", {"not a number"});
+  expect_bad_input("render --method tokuyoshi --param nonsense=1", {"nonsense", "sigma2"});
+  expect_bad_input("render --method tokuyoshi --param sigma2=7", {"sigma2=7", "0 .. 1"});
+  expect_bad_input("render --method tokuyoshi --param sigma2=abc", {"not a number"});
   expect_bad_input("render --method podee --param area=bogus", {"area=bogus", "not a choice", "exact|circle|lens"});
   expect_bad_input("render --method podee --param area=1.5", {"area=1.5", "exact|circle|lens"});
-  expect_bad_input("compare --spp 50", {"--spp 50", "k*k"});
+  expect_bad_input("compare --spp 0", {"--spp 0", "1 .. 65536"});
+  expect_bad_input("compare --spp lots", {"--spp=lots", "auto"});
+  expect_bad_input("render --reference=many", {"--reference=many", "auto"});
+  expect_bad_input("compare --spp auto --max-spp 10", {"--max-spp 10", "256 .. 65536"});
+  expect_bad_input("compare --spp auto --noise-fraction 2", {"--noise-fraction", "(0, 1]"});
   expect_bad_input("render --width 100000", {"100000", "16384"});
   expect_bad_input("render --frame 999", {"--frame 999"});
   expect_bad_input("render --no-such-flag", {"no-such-flag"});
@@ -111,7 +115,38 @@ TEST(Cli, ReferenceCacheIsReused) {
   ASSERT_EQ(run_glintlab("render -q --reference=16 --scene '" + scene.string() + "' -o '" + (scratch() / "c1").string() + "'").code, 0);
   int entries = 0;
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(scratch() / "cache")) ++entries;
-  EXPECT_EQ(entries, 1);
+  EXPECT_EQ(entries, 2);  // the EXR and its passes' JSON
   ASSERT_EQ(run_glintlab("render -q --reference=16 --scene '" + scene.string() + "' -o '" + (scratch() / "c2").string() + "'").code, 0);
   EXPECT_EQ(read_bytes(scratch() / "c1" / "reference.exr"), read_bytes(scratch() / "c2" / "reference.exr"));
+}
+
+TEST(Cli, AutoReferenceReachesItsTargetOrItsCapAndReportsItsNoise) {
+  const fs::path scene = write("auto.toml", "[film]\nwidth = 24\nheight = 16\n" + glintlab::test::kMinimalScene +
+                                                "[[light]]\ntype = \"sphere\"\nposition = [1, 2, 2]\nradius = 0.3\n"
+                                                "radiance = 20\n");
+  fs::remove_all(scratch() / "cache");
+  int spp = 0;
+  for (const int cap : {256, 1024}) {
+    const fs::path out = scratch() / ("auto-" + std::to_string(cap));
+    const CliResult r = run_glintlab("compare -q --spp auto --max-spp " + std::to_string(cap) +
+                                     " --methods conventional,toksvig,kaplanyan-ggx --scene '" + scene.string() +
+                                     "' -o '" + out.string() + "'");
+    ASSERT_EQ(r.code, 0) << r.err;
+    const std::string json = read_bytes(out / "metrics.json");
+    auto number = [&](const std::string& key) {
+      const auto at = json.find("\"" + key + "\": ");
+      EXPECT_NE(at, std::string::npos) << key;
+      return at == std::string::npos ? -1.0 : std::stod(json.substr(at + key.size() + 4));
+    };
+    const double reached = number("reference_spp"), noise = number("reference_noise_rmse");
+    const double target = number("reference_noise_target");
+    EXPECT_GE(reached, 256);
+    EXPECT_LE(reached, cap);
+    EXPECT_GT(noise, 0.0);
+    EXPECT_TRUE(noise <= target || reached == cap) << noise << " > " << target << " at " << reached;
+    // Continued from the cache: a larger cap never gives fewer samples.
+    EXPECT_GE(reached, spp);
+    spp = static_cast<int>(reached);
+    EXPECT_NE(read_bytes(out / "metrics.csv").find("reference_noise_rmse"), std::string::npos);
+  }
 }

@@ -11,12 +11,19 @@
 // Corner offsets from the pixel centre, counter-clockwise on screen.
 const vec2 PIXEL_CORNERS[4] = vec2[](vec2(-0.5, -0.5), vec2(0.5, -0.5), vec2(0.5, 0.5), vec2(-0.5, 0.5));
 
+// The normal map as the corners see it: read over the pixel's texture footprint scaled by
+// 2^lodBias, i.e. lodBias mip levels finer than the centre's (0: the centre's level, where detail
+// smaller than the pixel is averaged away, the method's failure case at a distance; -16: in
+// effect the base level, bilinear). docs/methods.md#podee, parameter `corner_lod`.
+vec3 cornerNormalMap(Surface s, vec2 uv, float lodBias) {
+  float scale = exp2(lodBias);
+  return textureGrad(uNormalMap, uv, s.dUVdx * scale, s.dUVdy * scale).xyz;
+}
+
 // Exact corners: the attributes interpolated at the corner, the shading normal rebuilt there as
-// forward.frag builds it at the centre (same side of the surface, same normal-map frame). The
-// normal map is read with the centre's footprint, so a corner normal is as filtered as the
-// centre's: detail smaller than that footprint is invisible to the corners (the method's failure
-// case at a distance, docs/methods.md#podee).
-CornerRays interpolatedCornerRays(Surface s) {
+// forward.frag builds it at the centre (same side of the surface, same normal-map frame), the
+// normal map read at the level cornerNormalMap chooses.
+CornerRays interpolatedCornerRays(Surface s, float lodBias) {
   CornerRays rays;
   float side = dot(normalize(vNormal), s.vertexNormal) < 0.0 ? -1.0 : 1.0;
   for (int i = 0; i < 4; ++i) {
@@ -26,7 +33,7 @@ CornerRays interpolatedCornerRays(Surface s) {
 #if MATERIAL_NORMAL_MAP
     vec3 t, b;
     vertexTangentFrame(n, corner.tangent, side, t, b);
-    n = mappedNormal(textureGrad(uNormalMap, normalMapCoordinates(corner.uv), s.dUVdx, s.dUVdy).xyz, t, b, n);
+    n = mappedNormal(cornerNormalMap(s, normalMapCoordinates(corner.uv), lodBias), t, b, n);
 #endif
     rays.origin[i] = p;
     rays.direction[i] = reflect(-viewDirectionFrom(p), n);
@@ -34,11 +41,15 @@ CornerRays interpolatedCornerRays(Surface s) {
   return rays;
 }
 
-// First-order corners: r + dr/dx ox + dr/dy oy from the centre's shading normal (normal map
-// included). Fine derivatives are one-sided within the 2x2 quad, so two of the four corners are
-// extrapolated.
-CornerRays derivativeCornerRays(Surface s) {
-  vec3 r = reflect(-s.view, s.normal);
+// First-order corners: r + dr/dx ox + dr/dy oy from the centre's normal (normal map included, read
+// at the level cornerNormalMap chooses). Fine derivatives are one-sided within the 2x2 quad, so two
+// of the four corners are extrapolated.
+CornerRays derivativeCornerRays(Surface s, float lodBias) {
+  vec3 n = s.normal;
+#if MATERIAL_NORMAL_MAP
+  n = mappedNormal(cornerNormalMap(s, s.uv, lodBias), s.vertexTangent, s.vertexBitangent, s.vertexNormal);
+#endif
+  vec3 r = reflect(-s.view, n);
   vec3 drdx = dFdxFine(r), drdy = dFdyFine(r);
   CornerRays rays;
   for (int i = 0; i < 4; ++i) {

@@ -15,6 +15,7 @@ uniform float param_area;     // 0: exact, 1: light as a circle, 2: light and re
 uniform float param_glossy;   // 1: the lobe extension; 0: every material shaded as a mirror (the paper)
 uniform float param_lobe;     // 0: the material's lobe; 1: widened by the normal map's slope
                               // covariance inside the pixel (LEAN), the variation the corners miss
+uniform float param_corner_lod;  // mip levels finer than the centre's at which corners read the map
 
 CornerRays gCorners;  // this pixel's corner rays, set by prepareSurface
 Lobe gLobe;           // this pixel's lobe, set by prepareSurface
@@ -22,18 +23,15 @@ Lobe gLobe;           // this pixel's lobe, set by prepareSurface
 void prepareSurface(inout Surface s) {
   // A branch on a uniform is uniform control flow, so the derivative variant may take its
   // derivatives inside it.
-  if (param_corners < 0.5) gCorners = interpolatedCornerRays(s);
-  else gCorners = derivativeCornerRays(s);
+  if (param_corners < 0.5) gCorners = interpolatedCornerRays(s, param_corner_lod);
+  else gCorners = derivativeCornerRays(s, param_corner_lod);
   if (param_origin > 0.5)
     for (int i = 0; i < 4; ++i) gCorners.origin[i] = s.position;
   gLobe = materialLobe(s);
 #if MATERIAL_NORMAL_MAP
-  // The corners read the normal map filtered over the pixel's footprint: normals that vary inside
-  // the footprint are invisible to them, but not to the footprint's slope moments.
-  if (param_lobe > 0.5) {
-    vec2 meanSlope;
-    gLobe.A += 2.0 * footprintSlopeCovariance(s, meanSlope);
-  }
+  // Normals that vary inside the footprint the corners read the map over are invisible to them,
+  // but not to the footprint's slope moments: LEAN's frame and covariance, as `lean`.
+  if (param_lobe > 0.5) gLobe.A += 2.0 * leanShadingFrame(s);
 #endif
 }
 

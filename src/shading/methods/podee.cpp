@@ -4,6 +4,9 @@
 
 namespace glintlab {
 
+/// Default of `corner_lod`, chosen by measurement against the reference (docs/methods.md#podee).
+constexpr float kPodeeCornerLodDefault = 0.0f;
+
 MethodDescriptor podee_method() {
   return {
       .id = "podee",
@@ -35,7 +38,11 @@ MethodDescriptor podee_method() {
                  {"lobe", 0, 0, 1,
                   "the lobe of the extension: the material's, or widened by the normal map's slope covariance "
                   "inside the pixel's footprint (LEAN), which the four filtered corner normals cannot see",
-                  {"material", "lean"}}},
+                  {"material", "lean"}},
+                 {"corner_lod", kPodeeCornerLodDefault, -16, 0,
+                  "mip levels finer than the pixel centre's at which the corners read the normal map: 0 "
+                  "the centre's footprint (bumps smaller than the pixel are averaged away), -1 half of it, "
+                  "..., -16 in effect the base level (bilinear)"}},
       .tables = {},
   };
 }

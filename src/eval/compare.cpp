@@ -147,6 +147,7 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
   json["reference_light_samples"] = session.reference_settings().effective_light_samples();
   json["reference_noise_rmse"] = noise;
   json["reference_energy_error"] = energy_error;
+  json["reference_mean_luminance"] = luminance(glm::vec3(reference.total.mean()));
   if (session.options().spp_auto) {
     json["reference_noise_target"] = reference_noise_target(reference, ranked, session.options().noise_fraction);
     json["reference_max_spp"] = session.options().max_spp;

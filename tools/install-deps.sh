@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages glintlab needs to build, test and run, if any are missing.
-# Usage: tools/install-deps.sh        (as root, or with sudo available)
+# Usage: tools/install-deps.sh          what building, testing and running need
+#        tools/install-deps.sh results  also what tools/make-results.sh uses (jq, ffmpeg)
+# (as root, or with sudo available)
 set -euo pipefail
 
 packages=(
@@ -10,6 +12,7 @@ packages=(
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
 )
+if [[ "${1:-}" == results ]]; then packages+=(jq ffmpeg); fi
 
 missing=()
 for p in "${packages[@]}"; do

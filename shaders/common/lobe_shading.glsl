@@ -1,6 +1,6 @@
 // Shading of one light with a given specular lobe: exact for delta lights, and for lights with
-// extent the approximations of the `conventional` baseline (docs/methods.md#conventional), so
-// that every NDF-filtering method differs from the baseline only in the lobe it passes in.
+// extent the lobe integrated over the light's image (below), so that every NDF-filtering method
+// differs from the `conventional` baseline only in the lobe it passes in.
 #include "common/brdf.glsl"
 #include "common/delta_lights.glsl"
 #include "common/lights.glsl"
@@ -41,10 +41,11 @@ vec3 closestOnPlanarLight(LightData L, vec3 p, vec3 r) {
 }
 
 // Solid angle of a light with extent seen from p (centreDir: unit direction to its centre);
-// 0 when p is behind a one-sided emitter.
+// 0 when p is behind a one-sided emitter. Spheres and suns: the projected disk, pi sin^2 theta
+// (their irradiance at normal incidence is L times it).
 float lightSolidAngle(LightData L, vec3 p, vec3 centreDir) {
   int type = lightType(L);
-  if (type == LIGHT_SUN) return PI * (1.0 - L.direction_cos.w * L.direction_cos.w);  // projected-disk
+  if (type == LIGHT_SUN) return PI * coneSin2(sunOneMinusCos(L));
   vec3 d = L.position_radius.xyz - p;
   float d2 = max(dot(d, d), 1e-12);
   if (type == LIGHT_SPHERE) {
@@ -55,8 +56,54 @@ float lightSolidAngle(LightData L, vec3 p, vec3 centreDir) {
   return cosL <= 0.0 ? 0.0 : lightArea(L) * cosL / d2;
 }
 
-// mirrorAlpha: lobes narrower than this (lobeWidth) see lights with extent as a mirror would.
-Radiance shadeLobe(Surface s, LightData L, Lobe lobe, float mirrorAlpha) {
+// dl1, dl2: conjugate semi-axes of the light's outline as seen from p, as changes of the unit
+// direction lc to its centre (perpendicular to lc; local frame).
+LightImage lightImage(vec3 wo, vec3 lc, vec3 dl1, vec3 dl2) {
+  vec3 sum = wo + lc;
+  float len = max(length(sum), 1e-6);
+  vec3 h = sum / len;
+  float hz = max(h.z, 1e-4);
+  LightImage image;
+  image.centre = -h.xy / hz;
+  vec3 d1 = (dl1 - h * dot(h, dl1)) / len, d2 = (dl2 - h * dot(h, dl2)) / len;
+  image.J = mat2(-(d1.xy + image.centre * d1.z) / hz, -(d2.xy + image.centre * d2.z) / hz);
+  return image;
+}
+
+// The outline's semi-axes (world space): a cone's circle of radius sin(theta); a disk's circle,
+// projected; a quad's half edges, projected and scaled by 2 / sqrt(pi) (the ellipse of equal area).
+void lightOutline(LightData L, vec3 p, vec3 lc, float sinHalf, out vec3 dl1, out vec3 dl2) {
+  int type = lightType(L);
+  if (type == LIGHT_SUN || type == LIGHT_SPHERE) {
+    basisAround(lc, dl1, dl2);
+    dl1 *= sinHalf;
+    dl2 *= sinHalf;
+    return;
+  }
+  vec3 a1, a2;
+  if (type == LIGHT_DISK) {
+    basisAround(L.direction_cos.xyz, a1, a2);
+    a1 *= L.position_radius.w;
+    a2 *= L.position_radius.w;
+  } else {
+    a1 = 1.1283792 * L.axisU.xyz;
+    a2 = 1.1283792 * L.axisV.xyz;
+  }
+  float dist = max(length(L.position_radius.xyz - p), 1e-12);
+  dl1 = (a1 - lc * dot(lc, a1)) / dist;
+  dl2 = (a2 - lc * dot(lc, a2)) / dist;
+}
+
+// One light with a given lobe: exact for delta lights. For lights with extent (docs/methods.md,
+// "Lobes"), the integral over the light of f cos = D G F (wo.h) / wo.z per unit half-vector solid
+// angle, which in slope space (d omega_h = h.z^3 ds, D = P22 / h.z^4) is
+//   L  integral over the light's image of  P22(s) G F (wo.h) / (h.z wo.z) ds.
+// The lobe's mass over the image (lobeMassOnImage) carries the integral; G, F and the factor
+// (wo.h) / (h.z wo.z) are taken at the representative point (Karis 2013: the light's point
+// closest to the reflected ray), where a narrow lobe's mass lies: there h = n and the factor is 1.
+// So a narrow lobe gives F L where the reflected ray meets the light (the mirror), a small light
+// gives the point light of irradiance L Omega, and every lobe in between is continuous.
+Radiance shadeLobe(Surface s, LightData L, Lobe lobe) {
   Radiance result = Radiance(vec3(0.0), vec3(0.0));
   vec3 wo = toLocal(s, s.view);
   if (wo.z <= 0.0) return result;
@@ -65,28 +112,28 @@ Radiance shadeLobe(Surface s, LightData L, Lobe lobe, float mirrorAlpha) {
   vec3 centreDir = lightCentreDirection(L, s.position);
   float solidAngle = lightSolidAngle(L, s.position, centreDir);
   if (solidAngle <= 0.0) return result;
-  float sinHalf = sqrt(min(solidAngle / PI, 1.0));  // sine of the cone of equal solid angle
-  float cosHalf = sqrt(1.0 - sinHalf * sinHalf);
+  int type = lightType(L);
+  float sinHalf = sqrt(min(solidAngle / PI, 1.0));  // sine of the cone of equal (projected) solid angle
+  float cosHalf = type == LIGHT_SUN ? 1.0 - sunOneMinusCos(L) : sqrt(1.0 - sinHalf * sinHalf);
   vec3 radiance = lightRadiance(L);
-  vec3 irradiance = radiance * solidAngle;  // at normal incidence
 
   // Diffuse: the light as a point at its centre.
-  result.diffuse = diffuseCos(s.diffuse, toLocal(s, centreDir)) * irradiance;
+  result.diffuse = diffuseCos(s.diffuse, toLocal(s, centreDir)) * radiance * solidAngle;
 
   vec3 r = reflect(-s.view, s.normal);
-  if (lobeWidth(lobe) < mirrorAlpha) {
-    // Mirror-like: the radiance seen along the reflected ray, all or nothing per pixel.
-    float dist;
-    if (lightHit(L, s.position, r, dist)) result.specular = fresnelSchlick(s.f0, wo.z) * radiance;
-    return result;
-  }
-  // Rough: representative point (Karis 2013) with the lobe widened by half the light's angular
-  // radius and renormalised so that the peak does not gain energy.
-  int type = lightType(L);
   vec3 l = type == LIGHT_SUN || type == LIGHT_SPHERE ? closestInCone(r, centreDir, cosHalf, sinHalf)
                                                      : normalize(closestOnPlanarLight(L, s.position, r) - s.position);
-  float normalisation;
-  Lobe widened = widenLobe(lobe, 0.5 * sinHalf, normalisation);
-  result.specular = lobeSpecularCos(widened, wo, toLocal(s, l), s.f0) * irradiance * normalisation;
+  vec3 wi = toLocal(s, l);
+  if (wi.z <= 0.0) return result;
+  vec3 h = normalize(wo + wi);
+  float g = 1.0 / (1.0 + lobeLambda(lobe, wo) + lobeLambda(lobe, wi));
+  vec3 dl1, dl2;
+  lightOutline(L, s.position, centreDir, sinHalf, dl1, dl2);
+  float mass = lobeMassOnImage(lobe, lightImage(wo, toLocal(s, centreDir), toLocal(s, dl1), toLocal(s, dl2)));
+  float jacobian = dot(wo, h) / (max(h.z, 1e-4) * wo.z);
+  result.specular = fresnelSchlick(s.f0, dot(wo, h)) * (g * mass * jacobian) * radiance;
   return result;
 }
+// The former mirror threshold is gone; this form stays until common/reflection_space_shading.glsl
+// calls the three-argument one.
+Radiance shadeLobe(Surface s, LightData L, Lobe lobe, float unused) { return shadeLobe(s, L, lobe); }

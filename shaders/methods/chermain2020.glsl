@@ -3,7 +3,6 @@
 // as by `conventional`. Descriptor: src/shading/methods/chermain2020.cpp; docs/methods.md#chermain2020.
 #include "common/glint_shading.glsl"
 
-uniform float param_mirror_alpha;
 uniform float param_lean;
 
 #if MATERIAL_GLINTS
@@ -22,6 +21,6 @@ Radiance shadeLight(Surface s, LightData L) {
   glintLightIncidence(L, s.position, l, irradiance);
   return shadeGlints(s, gGlint, l, irradiance, vec2(0.0), vec2(0.0), false);
 #else
-  return shadeLobe(s, L, materialLobe(s), param_mirror_alpha);
+  return shadeLobe(s, L, materialLobe(s));
 #endif
 }

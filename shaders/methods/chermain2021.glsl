@@ -4,7 +4,6 @@
 // Descriptor: src/shading/methods/chermain2021.cpp; docs/methods.md#chermain2021.
 #include "common/glint_shading.glsl"
 
-uniform float param_mirror_alpha;
 uniform float param_lean;
 uniform float param_kernel;       // s_K
 uniform float param_derivatives;  // 0: projected half vectors (eq. 21), 1: half slopes (eq. 20)
@@ -37,6 +36,6 @@ Radiance shadeLight(Surface s, LightData L) {
   halfVectorDerivatives(s, l, param_derivatives > 0.5, dx, dy);  // first: uniform control flow
   return shadeGlints(s, gGlint, l, irradiance, param_kernel * dx, param_kernel * dy, true);
 #else
-  return shadeLobe(s, L, materialLobe(s), param_mirror_alpha);
+  return shadeLobe(s, L, materialLobe(s));
 #endif
 }

@@ -3,8 +3,6 @@
 #include "common/lobe.glsl"
 #include "common/lobe_shading.glsl"
 
-uniform float param_mirror_alpha;
-
 void prepareSurface(inout Surface s) {}
 
-Radiance shadeLight(Surface s, LightData L) { return shadeLobe(s, L, materialLobe(s), param_mirror_alpha); }
+Radiance shadeLight(Surface s, LightData L) { return shadeLobe(s, L, materialLobe(s)); }

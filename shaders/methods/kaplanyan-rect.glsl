@@ -4,7 +4,6 @@
 #include "common/footprint_filtering.glsl"
 #include "common/lobe_shading.glsl"
 
-uniform float param_mirror_alpha;
 uniform float param_fp_max;
 
 void prepareSurface(inout Surface s) {}
@@ -14,5 +13,5 @@ Radiance shadeLight(Surface s, LightData L) {
   // centre, differenced across the pixel quad.
   vec2 h = slopeHalfVector(s, lightCentreDirection(L, s.position));
   Lobe lobe = kaplanyanRectLobe(materialLobe(s), dFdxFine(h), dFdyFine(h), param_fp_max);
-  return shadeLobe(s, L, lobe, param_mirror_alpha);
+  return shadeLobe(s, L, lobe);
 }

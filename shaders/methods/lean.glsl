@@ -4,8 +4,6 @@
 #include "common/lobe_shading.glsl"
 #include "common/slope_moments.glsl"
 
-uniform float param_mirror_alpha;
-
 Lobe gLeanLobe;  // this pixel's lobe, set by prepareSurface
 
 void prepareSurface(inout Surface s) {
@@ -15,4 +13,4 @@ void prepareSurface(inout Surface s) {
 #endif
 }
 
-Radiance shadeLight(Surface s, LightData L) { return shadeLobe(s, L, gLeanLobe, param_mirror_alpha); }
+Radiance shadeLight(Surface s, LightData L) { return shadeLobe(s, L, gLeanLobe); }

@@ -8,7 +8,6 @@
 #include "common/reflection_space_shading.glsl"
 #include "common/slope_moments.glsl"
 
-uniform float param_mirror_alpha;
 uniform float param_corners;  // 0: interpolated (exact), 1: from derivatives
 uniform float param_origin;   // 0: rays from the corners' surface points, 1: from the centre (the paper)
 uniform float param_area;     // 0: exact, 1: light as a circle, 2: light and reflection space as circles
@@ -39,5 +38,5 @@ Radiance shadeLight(Surface s, LightData L) {
   int type = lightType(L);
   if (type == LIGHT_DISK || type == LIGHT_SPHERE || type == LIGHT_SUN)
     return shadeReflectionSpace(s, L, gCorners, gLobe, ReflectionSpaceOptions(int(param_area + 0.5), param_glossy > 0.5));
-  return shadeLobe(s, L, gLobe, param_mirror_alpha);  // delta and quad lights: the baseline
+  return shadeLobe(s, L, gLobe);  // delta and quad lights: the baseline
 }

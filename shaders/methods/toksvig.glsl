@@ -3,11 +3,9 @@
 #include "common/lobe_shading.glsl"
 #include "common/roughness_filtering.glsl"
 
-uniform float param_mirror_alpha;
-
 void prepareSurface(inout Surface s) {
   // Without a normal map the filtered normal has length 1 and alpha is unchanged.
   s.alpha = toksvigAlpha(s.alpha, length(s.mappedNormal));
 }
 
-Radiance shadeLight(Surface s, LightData L) { return shadeLobe(s, L, materialLobe(s), param_mirror_alpha); }
+Radiance shadeLight(Surface s, LightData L) { return shadeLobe(s, L, materialLobe(s)); }

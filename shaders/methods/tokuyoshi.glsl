@@ -3,7 +3,6 @@
 #include "common/footprint_filtering.glsl"
 #include "common/lobe_shading.glsl"
 
-uniform float param_mirror_alpha;
 uniform float param_sigma2;
 uniform float param_kappa;
 
@@ -13,5 +12,5 @@ Radiance shadeLight(Surface s, LightData L) {
   // Derivatives first, in uniform control flow: the projected half vector towards the light's centre.
   vec2 h = projectedHalfVector(s, lightCentreDirection(L, s.position));
   Lobe lobe = tokuyoshiLobe(materialLobe(s), dFdxFine(h), dFdyFine(h), param_sigma2, param_kappa);
-  return shadeLobe(s, L, lobe, param_mirror_alpha);
+  return shadeLobe(s, L, lobe);
 }

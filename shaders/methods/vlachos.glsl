@@ -3,10 +3,9 @@
 #include "common/lobe_shading.glsl"
 #include "common/roughness_filtering.glsl"
 
-uniform float param_mirror_alpha;
 uniform float param_scale;
 uniform float param_exponent;
 
 void prepareSurface(inout Surface s) { s.alpha = vlachosAlpha(s.alpha, s.dNdx, s.dNdy, param_scale, param_exponent); }
 
-Radiance shadeLight(Surface s, LightData L) { return shadeLobe(s, L, materialLobe(s), param_mirror_alpha); }
+Radiance shadeLight(Surface s, LightData L) { return shadeLobe(s, L, materialLobe(s)); }

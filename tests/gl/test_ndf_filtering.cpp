@@ -306,7 +306,7 @@ TEST(NdfFiltering, FilteredNdfsIntegrateToOneOverTheProjectedHemisphere) {
 }
 
 TEST(NdfFiltering, AMillionRandomEvaluationsAreFinite) {
-  // Every filter, then the filtered BRDF and its area-light widening, for random inputs: alpha
+  // Every filter, then the filtered BRDF and its mass over a light's image, for random inputs: alpha
   // down to 1e-4, derivatives from 0 to 1e6, directions down to grazing and below the horizon.
   std::mt19937 rng(17);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
@@ -330,10 +330,10 @@ vec3 randomDirection(float z, float phi) {
                                  "  vec4 f = applyFilter(which, ndf, a.xy, b.xy, b.zw, b.xyz);\n"
                                  "  Lobe l = Lobe(ndf, mat2(f.x, f.z, f.z, f.y), vec2(f.w, f.w * 0.5));\n"
                                  "  vec3 wo = randomDirection(a.z, a.w), wi = randomDirection(fract(a.z * 13.7), fract(a.w * 5.3));\n"
-                                 "  float norm;\n"
-                                 "  Lobe wide = widenLobe(l, fract(a.x * 91.0) * 0.5, norm);\n"
-                                 "  vec3 s = lobeSpecularCos(l, wo, wi, vec3(0.04)) + norm * lobeSpecularCos(wide, wo, wi, vec3(1.0));\n"
-                                 "  return vec4(s, f.x + f.y + f.z + f.w + norm); }",
+                                 "  LightImage image = LightImage(b.xy * fract(a.x * 91.0), mat2(b.zw, b.wz * vec2(1.0, -1.0)) * fract(a.y * 37.0));\n"
+                                 "  float mass = lobeMassOnImage(l, image);\n"
+                                 "  vec3 s = lobeSpecularCos(l, wo, wi, vec3(0.04));\n"
+                                 "  return vec4(s, f.x + f.y + f.z + f.w + mass); }",
                                  a, b);
   int bad = 0;
   for (const auto& v : gpu)

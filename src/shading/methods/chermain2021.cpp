@@ -16,8 +16,7 @@ MethodDescriptor chermain2021_method() {
                  "marginals (textureGrad over the dictionary's mip chain, mirrored repeat); and the slope "
                  "correlation rho in the transform M, so that LEAN mapping's anisotropic, rotated covariance "
                  "can be combined with the glints. Equals chermain2020 when rho = 0 and kernel = 0.",
-      .params = {mirror_alpha_param(),
-                 glint_lean_param(true),
+      .params = {glint_lean_param(true),
                  {"kernel", 0.5f, 0.0f, 4.0f,
                   "s_K: the filter kernel's size in pixels of half-vector change (0.5: adjacent pixels' kernels "
                   "do not overlap; 1: less shimmering, more blur; 0: no anti-aliasing)"},

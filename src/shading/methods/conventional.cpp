@@ -8,12 +8,12 @@ MethodDescriptor conventional_method() {
       .id = "conventional",
       .title = "Conventional (pixel-centre shading)",
       .citation = "baseline: Cook-Torrance microfacet BRDF (GGX or Beckmann, height-correlated Smith, "
-                  "Schlick Fresnel) plus Lambert; representative-point area lights (Karis 2013)",
+                  "Schlick Fresnel) plus Lambert; lights with extent by the lobe's mass over the light",
       .summary = "Evaluates the BRDF once at the pixel centre with the interpolated (normal-mapped) normal. "
-                 "Mirror-like surfaces (max alpha below mirror_alpha) take the light's radiance where the "
-                 "reflected ray hits an area light; rougher ones use the representative point with a "
-                 "widened, energy-normalised lobe.",
-      .params = {mirror_alpha_param()},
+                 "Lights with extent: the lobe's mass over the light's image in slope space (closed form), "
+                 "with Fresnel and masking at the representative point (Karis 2013); a mirror sees the "
+                 "light's radiance where the reflected ray hits it, continuously in alpha.",
+      .params = {},
       .tables = {},
   };
 }

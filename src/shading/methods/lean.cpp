@@ -12,7 +12,7 @@ MethodDescriptor lean_method() {
                  "averaging, give per pixel the mean normal and the slope covariance Sigma = M - B B^T "
                  "(correlation included); the lobe's roughness matrix is diag(alpha^2) + 2 Sigma, an "
                  "anisotropic, rotated lobe about the mean normal. Without a normal map it equals conventional.",
-      .params = {mirror_alpha_param()},
+      .params = {},
       .tables = {"slope moments of the material's normal map (RGBA32F + R32F, full mip chain)"},
   };
 }

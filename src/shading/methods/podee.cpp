@@ -18,8 +18,7 @@ MethodDescriptor podee_method() {
                  "reflection space that the projected light covers. Disk lights (the paper), sphere lights and "
                  "suns; glossy lobes by convolving the light with the lobe in the light plane. Quad and delta "
                  "lights are shaded as by `conventional`.",
-      .params = {mirror_alpha_param(),
-                 {"corners", 0, 0, 1,
+      .params = {{"corners", 0, 0, 1,
                   "corner reflection vectors: attributes interpolated at the corners (exact) or first order "
                   "from screen-space derivatives",
                   {"interpolated", "derivatives"}},

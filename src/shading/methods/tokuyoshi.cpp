@@ -14,8 +14,7 @@ MethodDescriptor tokuyoshi_method() {
                  "projected half vector (towards the light's centre), scaled down to at most kappa, "
                  "P = diag(beta^2) + K, and back with A = (P + det(P) I) / (1 + tr(P) + det(P)). "
                  "Beckmann materials add K to alpha^2.",
-      .params = {mirror_alpha_param(),
-                 {"sigma2", 0.25f, 0.0f, 1.0f,
+      .params = {{"sigma2", 0.25f, 0.0f, 1.0f,
                   "variance of the Gaussian pixel filter in pixels^2 (0.25: I3D 2019; 1/(4 pi) reproduces "
                   "JCGT 2021's gain)"},
                  {"kappa", 0.18f, 0.0f, 1.0f, "clamp of the kernel's largest eigenvalue"}},

@@ -11,8 +11,7 @@ MethodDescriptor vlachos_method() {
       .summary = "Clamps perceptual roughness sqrt(alpha) from below by "
                  "scale * max(|dn/dx|^2, |dn/dy|^2)^exponent, n the interpolated vertex normal: "
                  "curvature aliasing only; normal maps are left as they are.",
-      .params = {mirror_alpha_param(),
-                 {"scale", 1.0f, 0.0f, 4.0f, "gain of the roughness floor"},
+      .params = {{"scale", 1.0f, 0.0f, 4.0f, "gain of the roughness floor"},
                  {"exponent", 1.0f / 3.0f, 0.05f, 1.0f, "exponent of max(|dn/dx|^2, |dn/dy|^2) (1/3 in the talk)"}},
       .tables = {},
   };

@@ -201,3 +201,28 @@ TEST(Podee, BeatsConventionalOnTheNearMirrorScenes) {
     EXPECT_LT(podee.flicker, base.flicker) << scene;
   }
 }
+
+TEST(Podee, CornersReadTheNormalMapAtTheBaseLevelByDefault) {
+  // builtin:mirror-bumps at 160x90, near (frame 0) and far (frame 23): corners that read the map at
+  // the pixel centre's mip level see the bumps flattened (docs/methods.md#podee, `corner_lod`); the
+  // default (base level) must be clearly closer to the 256-spp reference than the centre's level.
+  SceneFixture f(builtin_scene_toml("mirror-bumps"));
+  const int w = 160, h = 90;
+  const auto& method = find_method("podee");
+  EXPECT_EQ(resolve_params(method, {}).at("corner_lod"), -16.0f);
+  for (const int t : {0, f.scene.path.frames - 1}) {
+    const Camera camera = f.scene.path.at(f.scene.camera, t);
+    ReferenceSettings settings;
+    settings.spp = 256;
+    const Frame reference = f.renderer->render_reference(camera, w, h, settings).mean;
+    const auto error = [&](const std::map<std::string, std::string>& params) {
+      return rmse(f.renderer->render(method, resolve_params(method, params), camera, w, h).total, reference.total);
+    };
+    const double base = error({}), centre = error({{"corner_lod", "0"}});
+    EXPECT_LT(base, 0.7 * centre) << "frame " << t;
+    const auto& conventional = find_method("conventional");
+    EXPECT_LT(base, rmse(f.renderer->render(conventional, resolve_params(conventional, {}), camera, w, h).total,
+                         reference.total))
+        << "frame " << t;
+  }
+}

@@ -5,7 +5,7 @@
 namespace glintlab {
 
 /// Default of `corner_lod`, chosen by measurement against the reference (docs/methods.md#podee).
-constexpr float kPodeeCornerLodDefault = 0.0f;
+constexpr float kPodeeCornerLodDefault = -16.0f;
 
 MethodDescriptor podee_method() {
   return {

@@ -10,8 +10,8 @@ MethodDescriptor lean_method() {
       .citation = "M. Olano, D. Baker, LEAN Mapping, I3D 2010",
       .summary = "The normal map's slope moments B = E[n.xy / n.z] and M = E[B B^T], mipmapped by plain "
                  "averaging, give per pixel the mean normal and the slope covariance Sigma = M - B B^T "
-                 "(correlation included); the lobe's roughness matrix is diag(alpha^2) + 2 Sigma, an "
-                 "anisotropic, rotated lobe about the mean normal. Without a normal map it equals conventional.",
+                 "(correlation included); the lobe's roughness matrix is diag(alpha^2) + 2 J Sigma J^T, an "
+                 "anisotropic, rotated lobe about the mean normal (J: base slopes to the mean normal's slopes). Without a normal map it equals conventional.",
       .params = {},
       .tables = {"slope moments of the material's normal map (RGBA32F + R32F, full mip chain)"},
   };

@@ -244,9 +244,9 @@ struct LightImage {
 // narrow lobe crosses is the ellipse's own; geometric interpolation by the weight
 // 1 / (1 + |det K|) between them, and towards equal area as d -> 0 (where the direction is lost).
 // Box lobes (the box average of Kaplanyan et al.'s GGX filter, axis-aligned in alpha units):
-// the image, as the box of equal area and the aspect of its bounding box, and the footprint box
-// are combined into one box of the summed variances (half sides add in squares), which keeps
-// the limits: the box average as the light shrinks, the image's box as the footprint vanishes.
+// the image as the box of equal area and the aspect of its bounding box, convolved with the
+// footprint box; the limits are the box average as the light shrinks and the image's box as the
+// footprint vanishes.
 float lobeMassOnImage(Lobe lobe, LightImage image) {
   float detJ = abs(determinant(image.J));
   if (lobe.footprint != vec2(0.0)) {
@@ -255,9 +255,19 @@ float lobeMassOnImage(Lobe lobe, LightImage image) {
     float area = PI * detJ / (alpha.x * alpha.y);
     vec2 extent = sqrt(K[0] * K[0] + K[1] * K[1]) + 1e-20;  // bounding half sides
     vec2 imageHalf = extent * sqrt(0.25 * area / (extent.x * extent.y));
+    // The box-averaged density averaged again over the image's box: per axis the larger of the
+    // two boxes in closed form, the smaller by 2-point Gauss-Legendre (exact for cubics). The
+    // convolution of the footprint box with anything normalised keeps its partition of unity
+    // over neighbouring pixels, so the image's energy is kept however the boxes compare.
     vec2 b = lobe.footprint / alpha;
-    vec2 halfSide = sqrt(b * b + imageHalf * imageHalf);
-    return min(area * boxAveragedSlopeDensity(lobe.ndf, image.centre, halfSide * alpha, alpha) * alpha.x * alpha.y, 1.0);
+    vec2 large = max(b, imageHalf), small = min(b, imageHalf);
+    float sum = 0.0;
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) {
+        vec2 offset = small * vec2(i == 0 ? -0.5773503 : 0.5773503, j == 0 ? -0.5773503 : 0.5773503);
+        sum += 0.25 * boxAveragedSlopeDensity(lobe.ndf, image.centre + offset * alpha, large * alpha, alpha);
+      }
+    return min(area * sum * alpha.x * alpha.y, 1.0);
   }
   float sqrtDet;
   float d2 = inverseQuadratic(lobe.A, image.centre, sqrtDet);

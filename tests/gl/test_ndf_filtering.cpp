@@ -84,7 +84,8 @@ TEST(NdfFiltering, BoxAveragedSlopeDensityMatchesQuadrature) {
 
 TEST(NdfFiltering, BeckmannConvolutionMatchesNumericalConvolution) {
   // Kaplanyan et al.: the Beckmann slope density convolved with the footprint Gaussian of
-  // covariance C = U U^T is the Beckmann density of R' = R + 2C. Here the convolution is summed
+  // covariance C = sigma^2 U U^T (sigma = 0.5 px) is the Beckmann density of R' = R + 2C.
+  // Here the convolution is summed
   // on a grid, independently of that identity.
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -112,9 +113,9 @@ TEST(NdfFiltering, BeckmannConvolutionMatchesNumericalConvolution) {
                                  derivs, inputs);
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const Case& c = cases[i];
-    // C = dx dx^T + dy dy^T.
-    const double cxx = c.dx.x * c.dx.x + c.dy.x * c.dy.x, cyy = c.dx.y * c.dx.y + c.dy.y * c.dy.y;
-    const double cxy = c.dx.x * c.dx.y + c.dy.x * c.dy.y;
+    // C = sigma^2 (dx dx^T + dy dy^T), the talk's pixel filter of sigma = 0.5 px.
+    const double cxx = 0.25 * (c.dx.x * c.dx.x + c.dy.x * c.dy.x), cyy = 0.25 * (c.dx.y * c.dx.y + c.dy.y * c.dy.y);
+    const double cxy = 0.25 * (c.dx.x * c.dx.y + c.dy.x * c.dy.y);
     // t = L z with C = L L^T (Cholesky) and z standard normal, summed on a grid over |z| < 6.
     const double l11 = std::sqrt(cxx), l21 = cxy / l11, l22 = std::sqrt(std::max(cyy - l21 * l21, 0.0));
     const int n = 400;

@@ -178,9 +178,11 @@ TEST_P(GlossyPlaneUnderAreaLight, ReferenceAndConventionalMatchQuadrature) {
   EXPECT_LT(z2 / counted, 2.0) << "mean squared z-score of the reference against the quadrature";
 
   // `conventional`: the lobe's mass over the light's image with masking and Fresnel at the
-  // representative point (lobe_shading.glsl). Its approximations (the light as the ellipse of
-  // equal solid angle, linearised about its centre) shift energy inside the image but keep it:
-  // energy within 10%, relative RMSE under 25% (a quad's corners against an ellipse's rim).
+  // representative point (lobe_shading.glsl). Its approximations (the light's outline as an
+  // ellipse linearised about its centre, the image's mass on a disk in the lobe's whitened space)
+  // move energy within the highlight but keep it: energy within 6% (the double normalisation kept
+  // 39-75%); relative RMSE under 15% for the disk, under 35% for the quad, whose corners an
+  // ellipse of equal area cannot have (at alpha 0.05 the highlight is the quad's sharp image).
   const Comparison c = compare(f.method("conventional").specular, truth);
   RecordProperty("conventional_energy", std::to_string(c.energy_ratio));
   RecordProperty("conventional_relative_rmse", std::to_string(c.relative_rmse));
@@ -188,8 +190,8 @@ TEST_P(GlossyPlaneUnderAreaLight, ReferenceAndConventionalMatchQuadrature) {
   std::printf("%s alpha %.2f: reference energy %.4f (sigma %.4f, mean z^2 %.2f); conventional energy %.3f, relative RMSE %.3f\n",
               quad ? "quad" : "disk", alpha, sum_ref / sum_truth, energy_sigma / sum_truth, z2 / counted, c.energy_ratio,
               c.relative_rmse);
-  EXPECT_NEAR(c.energy_ratio, 1.0, 0.10);
-  EXPECT_LT(c.relative_rmse, 0.25);
+  EXPECT_NEAR(c.energy_ratio, 1.0, 0.06);
+  EXPECT_LT(c.relative_rmse, quad ? 0.35 : 0.15);
 }
 
 INSTANTIATE_TEST_SUITE_P(AreaLights, GlossyPlaneUnderAreaLight,

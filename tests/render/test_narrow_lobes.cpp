@@ -1,2 +1,147 @@
-// Narrow lobes under lights with extent: energy and continuity against the reference (placeholder, being written).
+// Narrow lobes under lights with extent (issue 11, item 7): a mirror sphere under a small sun
+// keeps its energy (closed form) with every footprint filter, and the shading of every lobe is
+// continuous as the lobe narrows to a mirror (there is no mirror switch any more).
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "gl_fixture.hpp"
+
+using namespace glintlab;
+using namespace glintlab::test;
+
+namespace {
+
+// Orthographic, so that the sphere's reflected directions cover the sphere of directions with
+// the constant Jacobian 4 / R^2 and the highlight's energy does not depend on where it falls.
+const char* kSphere = R"(
+[film]
+width = 96
+height = 96
+[camera]
+type = "orthographic"
+position = [0.0, 0.0, 5.0]
+target = [0.0, 0.0, 0.0]
+view_height = 2.2
+[[material]]
+name = "mirror"
+alpha = 0.002
+f0 = 1
+diffuse = 0
+[[shape]]
+type = "sphere"
+material = "mirror"
+radius = 1
+segments = 256
+[[light]]
+type = "directional"
+direction = [-0.35, -0.45, -1.0]
+irradiance = 1
+angular_radius = %ANGLE%
+)";
+
+/// Specular energy within 12 pixels of the mirror highlight (normal halfway between the viewer
+/// and the sun): filters that widen lobes towards the silhouette put light there that no
+/// mirror has, which is their own behaviour, not the light's integral.
+double highlight_energy(const Image& image) {
+  const glm::dvec3 n = glm::normalize(glm::dvec3(0, 0, 1) + glm::normalize(glm::dvec3(0.35, 0.45, 1.0)));
+  const double radius_px = 96 / 2.2, cx = 48 + n.x * radius_px, cy = 48 - n.y * radius_px;
+  double sum = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x)
+      if (std::pow(x + 0.5 - cx, 2) + std::pow(y + 0.5 - cy, 2) <= 144) sum += image.at(x, y).g;
+  return sum;
+}
+
+}  // namespace
+
+class MirrorSphereUnderSun : public ::testing::TestWithParam<double> {};
+
+TEST_P(MirrorSphereUnderSun, CurvatureFiltersKeepTheEnergy) {
+  // The truth in closed form: a mirror sphere (f0 = 1) seen orthographically reflects a sun of
+  // angular radius g and radiance L = E / (pi sin^2 g) over an image of area pi R^2 (1 - cos g) / 2
+  // (reflected directions have the Jacobian 4 / R^2), so its energy is L R^2 2 pi (1 - cos g) / 4.
+  // The footprint filters (Kaplanyan's three, Tokuyoshi's) keep it within 10% near the highlight:
+  // their kernels, about a pixel wide and sampled once per pixel, are not an exact partition of
+  // unity; under a delta light of the same direction (where the light's extent plays no part)
+  // they are off by up to 8% the same way.
+  // The former shading kept 49-50% at 2 degrees (double normalisation), and kaplanyan-ggx up
+  // to 149% (its lost box peak and the mirror path). `vlachos`' floor is narrower than a pixel's normal change on
+  // this sphere (0.48 of the energy under a delta light, aliasing): printed, not asserted.
+  // `toksvig` and `lean` filter normal maps only and equal `conventional` here.
+  std::string text = kSphere;
+  text.replace(text.find("%ANGLE%"), 7, std::to_string(GetParam()));
+  SceneFixture f(text);
+  const double g = GetParam() * M_PI / 180, pixel_area = std::pow(2.2 / 96, 2);
+  const double truth = (1.0 / (M_PI * std::sin(g) * std::sin(g))) * 2 * M_PI * (1 - std::cos(g)) / 4 / pixel_area;
+  for (const char* method : {"vlachos", "kaplanyan-beckmann", "kaplanyan-rect", "kaplanyan-ggx", "tokuyoshi"}) {
+    const double ratio = highlight_energy(f.method(method).specular) / truth;
+    std::printf("sun %.2f deg: %s energy %.4f of the closed form\n", GetParam(), method, ratio);
+    RecordProperty(std::string(method) + "_energy", std::to_string(ratio));
+    if (std::string(method) != "vlachos") EXPECT_NEAR(ratio, 1.0, 0.10) << method << " at " << GetParam() << " degrees";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Angles, MirrorSphereUnderSun, ::testing::Values(0.25, 0.5, 2.0), [](const auto& info) {
+  return "Degrees" + std::to_string(static_cast<int>(std::lround(info.param * 100)));
+});
+
+TEST(NarrowLobes, ShadingIsContinuousAsTheLobeNarrows) {
+  // shadeLobe for a sun of 0.5 degrees, at reflected directions inside, on the rim of and
+  // outside the sun's disk, as the lobe's alpha sweeps 1e-4 .. 0.1 (GGX and Beckmann, matrix
+  // and box lobes). A continuous function's largest step between neighbouring alphas halves when
+  // the grid is refined twice over; a switch (the former mirror_alpha) keeps its step.
+  const int coarse = 256;
+  std::vector<glm::vec4> a, b;
+  for (int refine : {1, 2})
+    for (int kind = 0; kind < 4; ++kind)
+      for (float offset : {0.0f, 0.8f, 1.0f, 1.3f})
+        for (int i = 0; i <= coarse * refine; ++i) {
+          const float alpha = std::pow(10.0f, -4.0f + 3.0f * float(i) / float(coarse * refine));
+          a.emplace_back(alpha, offset, kind, refine);
+          b.emplace_back(0.0f);
+        }
+  const auto gpu = evaluate_glsl("#include \"common/lobe_shading.glsl\"\n", R"(
+vec4 evaluate(vec4 a, vec4 b) {
+  float theta = radians(0.5);
+  vec3 l = normalize(vec3(0.3, 0.0, 1.0));  // towards the sun
+  // The viewer is placed so that the mirror direction is rotated from l by offset x theta.
+  float tilt = a.y * theta;
+  vec3 r = vec3(sin(atan(l.x, l.z) + tilt), 0.0, cos(atan(l.x, l.z) + tilt));
+  Surface s;
+  s.position = vec3(0.0);
+  s.normal = vec3(0.0, 0.0, 1.0); s.tangent = vec3(1.0, 0.0, 0.0); s.bitangent = vec3(0.0, 1.0, 0.0);
+  s.vertexNormal = s.normal;
+  s.view = reflect(-r, s.normal);
+  s.f0 = vec3(1.0); s.diffuse = vec3(0.0);
+  LightData L;
+  L.colour_type = vec4(1.0, 1.0, 1.0, float(LIGHT_SUN));
+  L.direction_cos = vec4(-l, cos(theta));
+  L.axisU = vec4(0.0, 0.0, 0.0, 2.0 * sin(0.5 * theta) * sin(0.5 * theta));
+  L.axisV = vec4(0.0);
+  L.position_radius = vec4(0.0);
+  int kind = int(a.z);
+  Lobe lobe = axisAlignedLobe(kind % 2, vec2(a.x, 0.7 * a.x));
+  if (kind >= 2) lobe.footprint = vec2(0.5 * a.x, 0.3 * a.x);
+  return vec4(shadeLobe(s, L, lobe).specular.g);
+})",
+                                 a, b);
+  std::map<std::pair<int, float>, double> step[3];
+  double radiance = 1.0 / (M_PI * std::pow(std::sin(0.5 * M_PI / 180), 2));
+  for (std::size_t i = 1; i < a.size(); ++i) {
+    if (a[i].w != a[i - 1].w || a[i].z != a[i - 1].z || a[i].y != a[i - 1].y) continue;
+    const auto key = std::make_pair(int(a[i].z), a[i].y);
+    double& s = step[int(a[i].w)][key];
+    s = std::max(s, std::abs(double(gpu[i].x) - double(gpu[i - 1].x)) / radiance);
+  }
+  for (const auto& [key, coarse_step] : step[1]) {
+    const double fine_step = step[2][key];
+    EXPECT_LT(fine_step, 0.7 * coarse_step + 1e-4)
+        << "lobe kind " << key.first << ", mirror direction at " << key.second << " sun radii: steps " << coarse_step
+        << " -> " << fine_step;
+    EXPECT_LT(coarse_step, 0.05) << "lobe kind " << key.first << " at " << key.second << " sun radii";
+  }
+}

@@ -85,8 +85,7 @@ TEST(NdfFiltering, BoxAveragedSlopeDensityMatchesQuadrature) {
 TEST(NdfFiltering, BeckmannConvolutionMatchesNumericalConvolution) {
   // Kaplanyan et al.: the Beckmann slope density convolved with the footprint Gaussian of
   // covariance C = sigma^2 U U^T (sigma = 0.5 px) is the Beckmann density of R' = R + 2C.
-  // Here the convolution is summed
-  // on a grid, independently of that identity.
+  // Here the convolution is summed on a grid, independently of that identity.
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<glm::vec4> derivs, inputs;

@@ -41,6 +41,10 @@ float sunOneMinusCos(LightData L) { return L.axisU.w; }
 // sin^2 of a cone's half-angle from 1 - cos, without cancellation: (1 - c)(1 + c).
 float coneSin2(float oneMinusCos) { return oneMinusCos * (2.0 - oneMinusCos); }
 
+// Smallest 1 - cos of a cone that densities and radiances use (below 1e-7 degrees): keeps a cone's
+// pdf under 2e17, so that MIS weights built from squared pdfs stay finite.
+const float MIN_CONE_ONE_MINUS_COS = 1e-18;
+
 // Is the direction dir inside the cone of half-angle acos(1 - oneMinusCos) (< 90 degrees) around
 // axis? Compares sin^2 from the cross product, exact near the axis, not cosines near 1.
 bool inCone(vec3 dir, vec3 axis, float oneMinusCos) {
@@ -53,7 +57,7 @@ bool inCone(vec3 dir, vec3 axis, float oneMinusCos) {
 // Radiance of lights with extent. A sun of angular radius theta with irradiance E at normal
 // incidence has radiance E / (pi sin^2 theta).
 vec3 lightRadiance(LightData L) {
-  if (lightType(L) == LIGHT_SUN) return L.colour_type.rgb / (PI * max(coneSin2(sunOneMinusCos(L)), 1e-30));
+  if (lightType(L) == LIGHT_SUN) return L.colour_type.rgb / (PI * coneSin2(max(sunOneMinusCos(L), MIN_CONE_ONE_MINUS_COS)));
   return L.colour_type.rgb;
 }
 
@@ -141,8 +145,8 @@ float sphereConeCos(LightData L, vec3 p) { return 1.0 - sphereConeOneMinusCos(L,
 // Solid-angle density with which sampleLightDirection picks `dir` (which hits at `dist`).
 float lightPdf(LightData L, vec3 p, vec3 dir, float dist) {
   int t = lightType(L);
-  if (t == LIGHT_SUN) return 1.0 / (TWO_PI * max(sunOneMinusCos(L), 1e-30));
-  if (t == LIGHT_SPHERE) return 1.0 / (TWO_PI * max(sphereConeOneMinusCos(L, p), 1e-30));
+  if (t == LIGHT_SUN) return 1.0 / (TWO_PI * max(sunOneMinusCos(L), MIN_CONE_ONE_MINUS_COS));
+  if (t == LIGHT_SPHERE) return 1.0 / (TWO_PI * max(sphereConeOneMinusCos(L, p), MIN_CONE_ONE_MINUS_COS));
   float cosL = abs(dot(dir, L.direction_cos.xyz));
   return dist * dist / max(lightArea(L) * cosL, 1e-20);
 }

@@ -503,6 +503,81 @@ irradiance = 2
 )";
 }
 
+std::string quad_light() {
+  return R"(# Glossy spheres and a normal-mapped plane under one wide rectangular (quad) light, high behind
+# them: its reflection is a long highlight on the plane and small bright bars on the spheres.
+[film]
+width = 640
+height = 360
+
+[camera]
+position = [0.0, 1.2, 4.5]
+target = [0.0, 0.2, -2.0]
+fov = 45
+
+[camera.path]
+type = "orbit"
+degrees = 8
+frames = 24
+
+[[material]]
+name = "brushed-floor"
+ndf = "ggx"
+alpha = 0.06
+f0 = [0.9, 0.9, 0.92]
+diffuse = 0.02
+normal_map = { generator = "bumps", resolution = 512, alpha = 0.15, waves = 96, max_frequency = 24, seed = 7 }
+normal_map_tiling = 1
+
+[[material]]
+name = "glossy-copper"
+ndf = "ggx"
+alpha = 0.02
+f0 = [0.95, 0.64, 0.54]
+
+[[material]]
+name = "satin"
+ndf = "beckmann"
+alpha = 0.15
+f0 = 0.04
+diffuse = [0.1, 0.2, 0.45]
+
+[[shape]]
+type = "plane"
+material = "brushed-floor"
+size = 30
+uv_scale = 30
+translate = [0, 0, -8]
+
+[[shape]]
+type = "sphere"
+material = "glossy-copper"
+radius = 0.5
+translate = [-0.9, 0.5, -0.5]
+
+[[shape]]
+type = "sphere"
+material = "satin"
+radius = 0.35
+translate = [0.8, 0.35, 0.2]
+
+[[shape]]
+type = "sphere"
+material = "glossy-copper"
+radius = 0.15
+translate = [0.1, 0.15, 1.0]
+
+[[light]]
+type = "quad"
+position = [0.0, 4.0, -5.0]
+direction = [0.0, -4.0, 6.0]
+size = [3.0, 0.5]
+up = [0, 1, 0]
+radiance = 6
+visible = false
+)";
+}
+
 }  // namespace
 
 const std::vector<BuiltinScene>& builtin_scenes() {
@@ -515,6 +590,7 @@ const std::vector<BuiltinScene>& builtin_scenes() {
       {"glint-tubes", "curved tubes of a glinty gold under point lights"},
       {"glint-sphere", "a glinty sphere with an anisotropic normal map (ridges at 45 degrees)"},
       {"glint-terrain", "glittery normal-mapped ground seen to the horizon under a low sun"},
+      {"quad-light", "glossy spheres and a normal-mapped plane under one rectangular (quad) light"},
   };
   return scenes;
 }
@@ -528,6 +604,7 @@ std::string builtin_scene_toml(const std::string& name) {
   if (name == "glint-tubes") return glint_tubes();
   if (name == "glint-sphere") return glint_sphere();
   if (name == "glint-terrain") return glint_terrain();
+  if (name == "quad-light") return quad_light();
   std::string known;
   for (const auto& s : builtin_scenes()) known += (known.empty() ? "" : ", ") + s.name;
   throw InputError("builtin:" + name + ": no such built-in scene; allowed: " + known);

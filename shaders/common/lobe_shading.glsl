@@ -134,6 +134,3 @@ Radiance shadeLobe(Surface s, LightData L, Lobe lobe) {
   result.specular = fresnelSchlick(s.f0, dot(wo, h)) * (g * mass * jacobian) * radiance;
   return result;
 }
-// The former mirror threshold is gone; this form stays until common/reflection_space_shading.glsl
-// calls the three-argument one.
-Radiance shadeLobe(Surface s, LightData L, Lobe lobe, float unused) { return shadeLobe(s, L, lobe); }

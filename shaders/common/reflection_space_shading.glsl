@@ -80,14 +80,15 @@ LightPlane lightPlane(LightData L, vec3 p, bool ownPlane) {
 // Probability that the lobe, aimed at the light's centre, reflects into the light: slope-space
 // mass within the light's image in half-vector slopes, a disk of radius tan(theta_L / 2) stretched
 // by 1 / cos(theta_d) across the plane of incidence (reflection halves in-plane angles and
-// compresses the others by cos theta_d), taken as the circle of equal area. Isotropic
-// GGX: t^2 / (alpha^2 + t^2); Beckmann: 1 - exp(-t^2 / alpha^2), with alpha^2 = sqrt(det A).
+// compresses the others by cos theta_d), taken as the circle of equal area. Isotropic, with
+// alpha^2 = sqrt(det A): GGX, the shared disk mass on the peak (ggxDiskMass(0, r) is the slope
+// CDF r^2 / (1 + r^2), r^2 = t^2 / alpha^2); Beckmann: 1 - exp(-t^2 / alpha^2).
 float lobeMassOnLight(Lobe lobe, float angularRadius, float cosThetaD) {
   float alpha2 = sqrt(max(determinant(lobe.A), 0.0));
   if (alpha2 <= 0.0) return 1.0;
   float t = tan(0.5 * angularRadius);
   float t2 = t * t / max(cosThetaD, 1e-4);
-  return lobe.ndf == NDF_BECKMANN ? 1.0 - exp(-t2 / alpha2) : t2 / (alpha2 + t2);
+  return lobe.ndf == NDF_BECKMANN ? 1.0 - exp(-t2 / alpha2) : ggxDiskMass(0.0, sqrt(t2 / alpha2));
 }
 
 // Reflected radiance of a disk light, sphere light or sun through the pixel whose corner rays are
@@ -102,7 +103,7 @@ Radiance shadeReflectionSpace(Surface s, LightData L, CornerRays corners, Lobe l
 
   // The smooth shading of `conventional` (never the mirror path): the diffuse term, and the
   // specular term where the lobe is wider than the reflection space.
-  Radiance result = shadeLobe(s, L, lobe, 0.0);
+  Radiance result = shadeLobe(s, L, lobe);
   if (dot(s.view, s.vertexNormal) <= 0.0) return result;
 
   // Lobe extension: the light convolved with the lobe is approximated by the light scaled by

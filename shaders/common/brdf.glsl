@@ -33,13 +33,10 @@ float smithLambdaOfT2(int kind, float t2) {
   return 0.5 * (-1.0 + sqrt(1.0 + t2));
 }
 
-// |w.z| Lambda(w) for direction w of the axis-aligned NDF, with s = alpha(w) |w.xy| (so that
-// t2 = s^2 / w.z^2), in forms without division by w.z: it stays finite and exact as w.z -> 0, where
-// Lambda itself diverges. G1 / w.z and G2 / wo.z, which the BRDF needs, are built from it.
-float smithLambdaCos(int kind, vec3 w, vec2 alpha) {
-  vec2 a = max(alpha, vec2(MIN_ALPHA));
-  float s2 = a.x * a.x * w.x * w.x + a.y * a.y * w.y * w.y;
-  float z = abs(w.z);
+// |w.z| Lambda(w) from s2 = alpha(w)^2 |w.xy|^2 (so that t2 = s2 / w.z^2; for a lobe with slope
+// covariance A, s2 = w.xy^T A w.xy) and z = |w.z|, in forms without division by z: finite and
+// exact as z -> 0, where Lambda itself diverges. G1 / w.z and G2 / wo.z are built from it.
+float smithLambdaCosOfS2(int kind, float s2, float z) {
   if (kind == 1) {
     // Beckmann, Walter's fit in b = z / s: z Lambda = s (1 - 1.259 b + 0.396 b^2) / (3.535 + 2.181 b).
     float s = sqrt(s2);
@@ -52,6 +49,12 @@ float smithLambdaCos(int kind, vec3 w, vec2 alpha) {
   return d > 0.0 ? 0.5 * s2 / d : 0.0;
 }
 
+// |w.z| Lambda(w) for direction w of the axis-aligned NDF.
+float smithLambdaCos(int kind, vec3 w, vec2 alpha) {
+  vec2 a = max(alpha, vec2(MIN_ALPHA));
+  return smithLambdaCosOfS2(kind, a.x * a.x * w.x * w.x + a.y * a.y * w.y * w.y, abs(w.z));
+}
+
 // Smith Lambda for direction w of the axis-aligned NDF (infinite at w.z = 0).
 float smithLambda(int kind, vec3 w, vec2 alpha) { return smithLambdaCos(kind, w, alpha) / abs(w.z); }
 
@@ -62,11 +65,12 @@ float smithG2(int kind, vec3 wo, vec3 wi, vec2 alpha) {
   return 1.0 / (1.0 + smithLambda(kind, wo, alpha) + smithLambda(kind, wi, alpha));
 }
 
-// G2(wo, wi) / wo.z for wo.z, wi.z > 0, finite as either tends to 0 (no 1/wo.z blow-up: it tends
-// to 1 / (z Lambda(wo)) ~ 2 / alpha, the true limit).
+// G2(wo, wi) / wo.z for wo.z, wi.z > 0 from lo = wo.z Lambda(wo) and li = wi.z Lambda(wi): finite
+// as either cosine tends to 0 (G2 / wo.z -> 1 / lo ~ 2 / alpha, the true limit, not 1 / wo.z).
+float smithG2OverCosOfLambdaCos(float woz, float wiz, float lo, float li) { return 1.0 / (woz + lo + li * woz / wiz); }
+
 float smithG2OverCos(int kind, vec3 wo, vec3 wi, vec2 alpha) {
-  float lo = smithLambdaCos(kind, wo, alpha), li = smithLambdaCos(kind, wi, alpha);
-  return 1.0 / (wo.z + lo + li * wo.z / wi.z);
+  return smithG2OverCosOfLambdaCos(wo.z, wi.z, smithLambdaCos(kind, wo, alpha), smithLambdaCos(kind, wi, alpha));
 }
 
 vec3 fresnelSchlick(vec3 f0, float cosTheta) {

@@ -201,13 +201,19 @@ float lobeNdf(Lobe lobe, vec3 h) {
 float lobeLambda(Lobe lobe, vec3 w) {
   return smithLambdaOfT2(lobe.ndf, dot(w.xy, lobe.A * w.xy) / max(w.z * w.z, 1e-12));
 }
+// |w.z| Lambda(w) of the lobe, finite as w.z -> 0 (common/brdf.glsl's smithLambdaCosOfS2).
+float lobeLambdaCos(Lobe lobe, vec3 w) { return smithLambdaCosOfS2(lobe.ndf, dot(w.xy, lobe.A * w.xy), abs(w.z)); }
+
+// G2(wo, wi) / wo.z of the lobe, bounded at grazing views (no 1 / wo.z blow-up).
+float lobeG2OverCos(Lobe lobe, vec3 wo, vec3 wi) {
+  return smithG2OverCosOfLambdaCos(wo.z, wi.z, lobeLambdaCos(lobe, wo), lobeLambdaCos(lobe, wi));
+}
 
 // f_s(wo, wi) cos(theta_i) with the lobe's NDF: D G2 F / (4 cos(theta_o)).
 vec3 lobeSpecularCos(Lobe lobe, vec3 wo, vec3 wi, vec3 f0) {
   if (wo.z <= 0.0 || wi.z <= 0.0) return vec3(0.0);
   vec3 h = normalize(wo + wi);
-  float g = 1.0 / (1.0 + lobeLambda(lobe, wo) + lobeLambda(lobe, wi));
-  return fresnelSchlick(f0, dot(wo, h)) * (lobeNdf(lobe, h) * g / (4.0 * wo.z));
+  return fresnelSchlick(f0, dot(wo, h)) * (0.25 * lobeNdf(lobe, h) * lobeG2OverCos(lobe, wo, wi));
 }
 
 // Mass of the unit GGX slope density p(u) = 1 / (pi (1 + |u|^2)^2) (alpha units) in the disk of

@@ -126,11 +126,11 @@ Radiance shadeLobe(Surface s, LightData L, Lobe lobe) {
   vec3 wi = toLocal(s, l);
   if (wi.z <= 0.0) return result;
   vec3 h = normalize(wo + wi);
-  float g = 1.0 / (1.0 + lobeLambda(lobe, wo) + lobeLambda(lobe, wi));
   vec3 dl1, dl2;
   lightOutline(L, s.position, centreDir, sinHalf, dl1, dl2);
   float mass = lobeMassOnImage(lobe, lightImage(wo, toLocal(s, centreDir), toLocal(s, dl1), toLocal(s, dl2)));
-  float jacobian = dot(wo, h) / (max(h.z, 1e-4) * wo.z);
-  result.specular = fresnelSchlick(s.f0, dot(wo, h)) * (g * mass * jacobian) * radiance;
+  // G2 (o.h) / (h_z o_z), with G2 / o_z in its bounded form.
+  float geometry = lobeG2OverCos(lobe, wo, wi) * dot(wo, h) / max(h.z, 1e-4);
+  result.specular = fresnelSchlick(s.f0, dot(wo, h)) * (mass * geometry) * radiance;
   return result;
 }

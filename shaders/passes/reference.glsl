@@ -35,11 +35,17 @@ vec3 materialSpecularCos(Surface s, vec3 wo, vec3 wi) {
 #endif
 }
 
-// Solid-angle density of the BRDF sampling strategy below.
+// Solid-angle density of the BRDF sampling strategy below (common/sampling.glsl, tested by
+// chi-square against the samplers in tests/gl/test_sampling.cpp).
 float brdfSamplePdf(Surface s, vec3 wo, vec3 wi) {
-  vec3 h = normalize(wo + wi);
-  if (s.ndf == NDF_BECKMANN) return ndfBeckmann(h, s.alpha) * h.z / (4.0 * max(dot(wo, h), 1e-9));
-  return smithG1(NDF_GGX, wo, s.alpha) * ndfGGX(h, s.alpha) / (4.0 * wo.z);
+  return s.ndf == NDF_BECKMANN ? beckmannReflectionPdf(wo, wi, s.alpha) : ggxVisibleReflectionPdf(wo, wi, s.alpha);
+}
+
+// Power-heuristic weight of a strategy of density `pdf` against one of density `other` (Veach
+// 1997), as 1 / (1 + r^2) with r = other / pdf, finite for any pair with pdf > 0.
+float powerHeuristic(float pdf, float other) {
+  float r = other / pdf;
+  return 1.0 / (1.0 + r * r);
 }
 
 vec3 sampleBrdfNormal(Surface s, vec3 wo, vec2 u) {
@@ -79,8 +85,7 @@ Radiance shadeLight(Surface s, LightData L) {
       if (wi.z > 0.0) {
         result.diffuse += diffuseCos(s.diffuse, wi) * radiance / pdfLight;
         if (!mirror) {
-          float pdfBrdf = brdfSamplePdf(s, wo, wi);
-          float w = pdfLight * pdfLight / (pdfLight * pdfLight + pdfBrdf * pdfBrdf);
+          float w = powerHeuristic(pdfLight, brdfSamplePdf(s, wo, wi));
           result.specular += materialSpecularCos(s, wo, wi) * radiance * (w / pdfLight);
         }
       }
@@ -92,10 +97,7 @@ Radiance shadeLight(Surface s, LightData L) {
       if (wi.z > 0.0 && lightHit(L, s.position, dirWorld, dist)) {
         float pdfBrdf = brdfSamplePdf(s, wo, wi);
         float pdfL = lightPdf(L, s.position, dirWorld, dist);
-        if (pdfBrdf > 0.0) {
-          float w = pdfBrdf * pdfBrdf / (pdfBrdf * pdfBrdf + pdfL * pdfL);
-          result.specular += materialSpecularCos(s, wo, wi) * radiance * (w / pdfBrdf);
-        }
+        if (pdfBrdf > 0.0) result.specular += materialSpecularCos(s, wo, wi) * radiance * (powerHeuristic(pdfBrdf, pdfL) / pdfBrdf);
       }
     }
   }

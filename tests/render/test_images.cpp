@@ -184,17 +184,33 @@ TEST(Images, ReferenceConvergesWithMoreSamples) {
   EXPECT_EQ(truth.mean.total.count_non_finite(), 0u);
 }
 
-TEST(Images, EveryMethodOnEveryBuiltinSceneIsFinite) {
-  for (const auto& b : builtin_scenes()) {
-    std::string toml = builtin_scene_toml(b.name);
-    toml.replace(toml.find("width = 640"), 11, "width = 96");
-    toml.replace(toml.find("height = 360"), 12, "height = 54");
-    SceneFixture f(toml);
-    for (const auto& m : all_methods()) {
-      const Frame img = f.method(m.id);
-      EXPECT_EQ(img.total.count_non_finite(), 0u) << m.id << " on " << b.name;
-      EXPECT_GT(luminance(glm::vec3(img.total.mean())), 0.0f) << m.id << " on " << b.name;
-    }
-    EXPECT_EQ(f.reference(4).total.count_non_finite(), 0u) << b.name;
+// One test per built-in scene, so that ctest runs them in parallel (most of their time is
+// compiling each scene's program variants on llvmpipe).
+class EveryMethodOnBuiltinScene : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(EveryMethodOnBuiltinScene, IsFinite) {
+  std::string toml = builtin_scene_toml(GetParam());
+  toml.replace(toml.find("width = 640"), 11, "width = 96");
+  toml.replace(toml.find("height = 360"), 12, "height = 54");
+  SceneFixture f(toml);
+  for (const auto& m : all_methods()) {
+    const Frame img = f.method(m.id);
+    EXPECT_EQ(img.total.count_non_finite(), 0u) << m.id << " on " << GetParam();
+    EXPECT_GT(luminance(glm::vec3(img.total.mean())), 0.0f) << m.id << " on " << GetParam();
   }
+  EXPECT_EQ(f.reference(4).total.count_non_finite(), 0u) << GetParam();
 }
+
+std::vector<std::string> builtin_scene_names() {
+  std::vector<std::string> names;
+  for (const auto& b : builtin_scenes()) names.push_back(b.name);
+  return names;
+}
+
+INSTANTIATE_TEST_SUITE_P(Images, EveryMethodOnBuiltinScene, ::testing::ValuesIn(builtin_scene_names()),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                           std::string name = info.param;
+                           for (char& c : name)
+                             if (c == '-') c = '_';
+                           return name;
+                         });

@@ -108,10 +108,10 @@ Session::Session(const CommonOptions& options)
   reference_.spp = options_.spp_auto ? kProgressivePassSpp * 4 : options_.spp;
   reference_.light_samples = options_.light_samples;
   context_ = GlContext::create_headless();
-  shaders_hash_ = shaders_.sources_hash();
   device_ = context_->info().renderer;
   gpu_scene_ = std::make_unique<GpuScene>(scene_);
   renderer_ = std::make_unique<Renderer>(shaders_, *gpu_scene_);
+  shaders_hash_ = renderer_->reference_program_hash();
 }
 
 Frame Session::render(const MethodChoice& choice, int frame) {

@@ -77,7 +77,7 @@ class Session {
   ReferenceCache cache_;
   ReferenceSettings reference_;
   int width_ = 0, height_ = 0, frames_ = 1;
-  std::uint64_t shaders_hash_ = 0;  ///< part of every reference cache key
+  std::uint64_t shaders_hash_ = 0;  ///< the reference's programs (Renderer::reference_program_hash), in every cache key
   std::string device_;
 };
 

@@ -5,7 +5,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/mat3x3.hpp>
 
+#include <set>
+
 #include "core/error.hpp"
+#include "core/hash.hpp"
 #include "gl/context.hpp"
 
 namespace glintlab {
@@ -178,6 +181,21 @@ ReferenceFrame Renderer::render_reference(const Camera& camera, int width, int h
         }));
   }
   return accumulator.result();
+}
+
+std::uint64_t Renderer::reference_program_hash() const {
+  Hasher h;
+  std::set<MaterialVariant> variants;
+  for (const auto& mesh : scene_.meshes())
+    variants.insert({scene_.normal_map(mesh.material) != 0, scene_.glinty(mesh.material)});
+  for (const MaterialVariant& v : variants) {
+    const ShaderDefines defines = forward_variant(kReferenceModule, scene_.light_ranges(), v);
+    h.text(shaders_.expand("passes/forward.vert", defines));
+    h.text(shaders_.expand("passes/forward.frag", defines));
+  }
+  h.text(shaders_.expand("passes/emitter.frag", {}));
+  h.text(shaders_.expand("passes/downsample.comp", {}));
+  return h.digest();
 }
 
 std::uint32_t reference_pass_seed(int frame_seed, int pass) {

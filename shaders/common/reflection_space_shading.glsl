@@ -91,6 +91,57 @@ float lobeMassOnLight(Lobe lobe, float angularRadius, float cosThetaD) {
   return lobe.ndf == NDF_BECKMANN ? 1.0 - exp(-t2 / alpha2) : ggxDiskMass(0.0, sqrt(t2 / alpha2));
 }
 
+// The light convolved with the pixel's reflection space, as a light: the pixel's average of the
+// profile the lobe makes of the light is the lobe's mass over this wider, dimmer light. In
+// directions about l (first order: plane offsets over the distance), the light's outline (as
+// `shadeLobe` takes it, lightOutline) and the hull q (unit-disk coordinates of the unscaled light)
+// add as uniform ellipses with their second moments: C = D D^T + 4 Sigma_Q, semi-axes sqrt(eig C).
+// It is a quad (the ellipse's area, lightOutline's 2/sqrt(pi) back) normal to l at the light's
+// distance, with the radiance scaled by area(light) / area(C). `spread` scales Sigma_Q.
+LightData reflectionSpaceLight(Surface s, LightData L, LightPlane plane, vec2 unitAxes, vec2 q[4], float spread) {
+  // Second moments of the hull (two triangles: integral of x x^T = A/12 (sum v v^T + s s^T)).
+  // Measured in units of the hull's size (clamped corners lie 1e4 plane distances away).
+  float size = max(max(length(q[0]), length(q[1])), max(length(q[2]), length(q[3])));
+  size = max(size, 1e-20);
+  float area = 0.0;
+  vec2 first = vec2(0.0);
+  mat2 second = mat2(0.0);
+  for (int k = 1; k < 3; ++k) {
+    vec2 a = q[0] / size, b = q[k] / size, c = q[k + 1] / size, sum = a + b + c;
+    float ar = 0.5 * cross2(b - a, c - a);
+    area += ar;
+    first += ar * sum / 3.0;
+    second += ar / 12.0 * (outerProduct(a, a) + outerProduct(b, b) + outerProduct(c, c) + outerProduct(sum, sum));
+  }
+  mat2 cov = mat2(0.0);
+  if (area > 1e-30) cov = second / area - outerProduct(first / area, first / area);
+  vec3 e1, e2;
+  basisAround(plane.l, e1, e2);
+  vec3 tu = unitAxes.x * plane.u, tw = unitAxes.y * plane.w;
+  tu = (tu - plane.l * dot(plane.l, tu)) / plane.distance;
+  tw = (tw - plane.l * dot(plane.l, tw)) / plane.distance;
+  mat2 T = mat2(dot(e1, tu), dot(e2, tu), dot(e1, tw), dot(e2, tw));
+  vec3 dl1, dl2;
+  lightOutline(L, s.position, plane.l, sqrt(min(lightSolidAngle(L, s.position, plane.l) / PI, 1.0)), dl1, dl2);
+  mat2 D = mat2(dot(e1, dl1), dot(e2, dl1), dot(e1, dl2), dot(e2, dl2));
+  // lightImage is linear in the outline: keep the widening within about 0.1 rad (trace <= 0.03).
+  mat2 spaceC = 4.0 * T * cov * transpose(T);
+  spaceC *= spread * 0.03 / max(spaceC[0][0] + spaceC[1][1], max(0.03 / (size * size), 1e-30));
+  mat2 C = D * transpose(D) + spaceC;
+  float halfTrace = 0.5 * (C[0][0] + C[1][1]), halfDiff = 0.5 * (C[0][0] - C[1][1]);
+  float root = sqrt(halfDiff * halfDiff + C[0][1] * C[0][1]);
+  float l1 = halfTrace + root, l2 = max(halfTrace - root, 0.0);
+  vec2 v1 = abs(C[0][1]) > 1e-30 ? normalize(vec2(C[0][1], l1 - C[0][0])) : (C[0][0] >= C[1][1] ? vec2(1.0, 0.0) : vec2(0.0, 1.0));
+  float k = 0.8862269 * plane.distance;  // sqrt(pi)/2: the quad of the ellipse's area
+  LightData wide;
+  wide.colour_type = vec4(lightRadiance(L) * abs(determinant(D)) / max(sqrt(l1 * l2), 1e-30), float(LIGHT_QUAD));
+  wide.position_radius = vec4(s.position + plane.distance * plane.l, 0.0);
+  wide.direction_cos = vec4(-plane.l, 0.0);
+  wide.axisU = vec4(k * sqrt(l1) * (v1.x * e1 + v1.y * e2), 0.0);
+  wide.axisV = vec4(k * sqrt(l2) * (v1.x * e2 - v1.y * e1), 0.0);
+  return wide;
+}
+
 // Reflected radiance of a disk light, sphere light or sun through the pixel whose corner rays are
 // `corners`. Other kinds of light are not handled here.
 Radiance shadeReflectionSpace(Surface s, LightData L, CornerRays corners, Lobe lobe, ReflectionSpaceOptions options) {
@@ -165,11 +216,23 @@ Radiance shadeReflectionSpace(Surface s, LightData L, CornerRays corners, Lobe l
   vec3 h = normalize(s.view + l);
   vec3 podee = fresnelSchlick(s.f0, max(dot(s.view, h), 0.0)) * masking * mass * coverage * lightRadiance(L);
 
-  // Where the lobe is wider than the reflection space the highlight is resolved and the smooth
-  // shading is right: weight by the solid angles of the reflection space and of the lobe's blur,
-  // Omega_L (1/P - 1). A mirror has no blur: podee alone.
+  // The equal-peak disk is right for the core of a lobe narrower than the light (P_c near 1) whose
+  // blur the reflection space does not resolve; elsewhere it moves the lobe's tails into the core.
+  // resolved = Omega(Q) / (Omega(Q) + Omega_L (1/P_c - 1)) compares the reflection space with the
+  // solid angle the lobe adds to the light; the disk's weight is resolved x P_c (1 for a mirror:
+  // the paper). The rest is the smooth shading of the pixel's average: the lobe's mass over the
+  // light widened by the reflection space (as far as its blur is unresolved, and not at grazing
+  // view, where the corners are extrapolated past the silhouette).
   float blurSolidAngle = lightSolidAngle(L, s.position, plane.l) * (scale * scale - 1.0);
-  float podeeWeight = blurSolidAngle > 0.0 ? spaceSolidAngle / (spaceSolidAngle + blurSolidAngle) : 1.0;
+  float resolved = blurSolidAngle > 0.0 ? spaceSolidAngle / (spaceSolidAngle + blurSolidAngle) : 1.0;
+  float podeeWeight = resolved * mass;
+  if (podeeWeight < 1.0) {
+    vec2 q1[4];
+    for (int i = 0; i < 4; ++i) q1[i] = q[i] * scale;
+    float grazing = clamp(2.0 * wo.z, 0.0, 1.0);
+    LightData wide = reflectionSpaceLight(s, L, plane, axes / scale, q1, resolved * grazing * grazing);
+    result.specular = shadeLobe(s, wide, lobe).specular;
+  }
   result.specular = mix(result.specular, podee, podeeWeight);
   return result;
 }

@@ -3,6 +3,7 @@
 // against the 1024-spp reference, and the glossy and sphere-light extensions.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -170,16 +171,46 @@ TEST(Podee, MirrorSphereKeepsTheHighlightsEnergy) {
   }
 }
 
+// Energy of `image` over the reference's tails (pixels between 1e-3 and 0.1 of its peak) over the
+// reference's: the part of a glossy highlight that an equal-peak disk model leaves out.
+double tail_energy_ratio(const Image& image, const Image& reference) {
+  double peak = 0;
+  for (const auto& p : reference.pixels()) peak = std::max(peak, double(luminance(p)));
+  double method = 0, truth = 0;
+  for (std::size_t i = 0; i < reference.pixels().size(); ++i) {
+    const double r = luminance(reference.pixels()[i]);
+    if (r < 1e-3 * peak || r >= 0.1 * peak) continue;
+    method += luminance(image.pixels()[i]);
+    truth += r;
+  }
+  return method / truth;
+}
+
 TEST(Podee, LobeExtensionHoldsOnAGlossySphereUnderASphereLight) {
-  // GGX alpha 0.03 under a sphere light (the paper covers neither): the extension must beat
-  // `conventional` and the paper's every-material-is-a-mirror shading (glossy = off), which puts
-  // the whole light's radiance into the covered fraction and ignores the lobe's spread.
-  SceneFixture f(sphere_scene("0.03", "type = \"sphere\""));
-  const Frame reference = f.reference(1024);
-  const double extension = rmse(f.method("podee").specular, reference.specular);
-  EXPECT_LT(extension, 0.3 * rmse(f.method("conventional").specular, reference.specular));
-  EXPECT_LT(extension, 0.5 * rmse(f.method("podee", {{"glossy", "off"}}).specular, reference.specular));
-  EXPECT_NEAR(luminance_sum(f.method("podee").specular) / luminance_sum(reference.specular), 1.0, 0.2);
+  // GGX under a sphere light (the paper covers neither). alpha 0.03: the highlight is about a
+  // pixel; the extension must beat `conventional` clearly and the paper's every-material-is-a-
+  // mirror shading (glossy = off), keep the energy, and keep the lobe's tails (the equal-peak disk
+  // alone put them into the core: 0.24 of the reference's there). alpha 0.1: the lobe's blur is
+  // about as wide as the reflection space; podee must be at least as good as `conventional`
+  // (formerly 2.2x its RMSE) and keep the tails (formerly 0.80).
+  {
+    SceneFixture f(sphere_scene("0.03", "type = \"sphere\""));
+    const Frame reference = f.reference(1024);
+    const Frame podee = f.method("podee");
+    const double extension = rmse(podee.specular, reference.specular);
+    EXPECT_LT(extension, 0.6 * rmse(f.method("conventional").specular, reference.specular));
+    EXPECT_LT(extension, rmse(f.method("podee", {{"glossy", "off"}}).specular, reference.specular));
+    EXPECT_NEAR(luminance_sum(podee.specular) / luminance_sum(reference.specular), 1.0, 0.1);
+    EXPECT_GT(tail_energy_ratio(podee.specular, reference.specular), 0.45);
+  }
+  {
+    SceneFixture f(sphere_scene("0.1", "type = \"sphere\""));
+    const Frame reference = f.reference(1024);
+    const Frame podee = f.method("podee");
+    EXPECT_LE(rmse(podee.specular, reference.specular), rmse(f.method("conventional").specular, reference.specular));
+    EXPECT_NEAR(tail_energy_ratio(podee.specular, reference.specular), 1.0, 0.15);
+    EXPECT_NEAR(luminance_sum(podee.specular) / luminance_sum(reference.specular), 1.0, 0.05);
+  }
 }
 
 TEST(Podee, EnumerationParametersTakeNamesOrIndices) {

@@ -269,6 +269,7 @@ vec4 evaluate(vec4 a, vec4 b) {
   setShadingNormal(s, normalize(s.vertexNormal + 0.3 * randomUnit(h)));
   s.ndf = int(i % 2u);
   s.alpha = vec2(i % 5u == 0u ? 0.0 : 0.5 * pow(random01(h), 3.0), 0.5 * pow(random01(h), 3.0));
+  s.rho = 0.0;  // every field the lobe reads is set: an unset one is undefined in GLSL
   s.f0 = vec3(0.9);
   s.diffuse = vec3(0.2);
 

@@ -221,12 +221,17 @@ vec3 lobeSpecularCos(Lobe lobe, vec3 wo, vec3 wi, vec3 f0) {
 // disk's centre is 2 q a / (a^2 - b^2)^(3/2), a = 1 + d^2 + q^2, b = 2 d q; with w = q^2 it
 // integrates to M = 1/2 + N / (2 S), N = r^2 - 1 - d^2, S = sqrt((r^2 + 1 - d^2)^2 + 4 d^2)
 // (d = 0: the GGX slope CDF r^2 / (1 + r^2)). Where N < 0 the sum cancels; there
-// M = 2 r^2 / (S (S - N)), from S^2 - N^2 = 4 r^2.
+// M = 2 r^2 / (S (S - N)), from S^2 - N^2 = 4 r^2. M is homogeneous of degree 0 in (1, d, r),
+// so it is evaluated in units of m = max(1, d, r), where nothing overflows (a huge light seen by
+// a mirror-like lobe has d and r near 1e15 in alpha units).
 float ggxDiskMass(float d, float r) {
-  float r2 = r * r, n = r2 - 1.0 - d * d;
-  float k = r2 + 1.0 - d * d;
-  float s = sqrt(k * k + 4.0 * d * d);
-  return n >= 0.0 ? (s + n) / (2.0 * s) : 2.0 * r2 / (s * (s - n));
+  float m = max(1.0, max(d, r));
+  float dm = d / m, rm = r / m, e = 1.0 / m;
+  float r2 = rm * rm, e2 = e * e, d2 = dm * dm;
+  float n = r2 - e2 - d2;
+  float k = r2 + e2 - d2;
+  float s = max(sqrt(k * k + 4.0 * d2 * e2), 1e-30);
+  return n >= 0.0 ? (s + n) / (2.0 * s) : 2.0 * r2 * e2 / (s * (s - n));
 }
 
 // The light's image in the lobe's slope space. A light whose outline, seen from p, is to first

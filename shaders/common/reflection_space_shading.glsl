@@ -115,6 +115,10 @@ LightData reflectionSpaceLight(Surface s, LightData L, LightPlane plane, vec2 un
   }
   mat2 cov = mat2(0.0);
   if (area > 1e-30) cov = second / area - outerProduct(first / area, first / area);
+  // A covariance is positive semi-definite; rounding in thin hulls can break that, so clamp it.
+  cov[0][0] = max(cov[0][0], 0.0);
+  cov[1][1] = max(cov[1][1], 0.0);
+  cov[0][1] = cov[1][0] = clamp(cov[0][1], -sqrt(cov[0][0] * cov[1][1]), sqrt(cov[0][0] * cov[1][1]));
   vec3 e1, e2;
   basisAround(plane.l, e1, e2);
   vec3 tu = unitAxes.x * plane.u, tw = unitAxes.y * plane.w;
@@ -130,11 +134,17 @@ LightData reflectionSpaceLight(Surface s, LightData L, LightPlane plane, vec2 un
   mat2 C = D * transpose(D) + spaceC;
   float halfTrace = 0.5 * (C[0][0] + C[1][1]), halfDiff = 0.5 * (C[0][0] - C[1][1]);
   float root = sqrt(halfDiff * halfDiff + C[0][1] * C[0][1]);
-  float l1 = halfTrace + root, l2 = max(halfTrace - root, 0.0);
-  vec2 v1 = abs(C[0][1]) > 1e-30 ? normalize(vec2(C[0][1], l1 - C[0][0])) : (C[0][0] >= C[1][1] ? vec2(1.0, 0.0) : vec2(0.0, 1.0));
+  float l1 = max(halfTrace + root, 0.0), l2 = max(halfTrace - root, 0.0);
+  // The major axis at angle atan2(2 C01, C00 - C11) / 2: no normalisation of a vector that can
+  // underflow (a nearly diagonal C of tiny entries).
+  float offDiagonal = 2.0 * C[0][1], diagonalGap = C[0][0] - C[1][1];
+  float angle = abs(offDiagonal) + abs(diagonalGap) > 0.0 ? 0.5 * atan(offDiagonal, diagonalGap) : 0.0;
+  vec2 v1 = vec2(cos(angle), sin(angle));
   float k = 0.8862269 * plane.distance;  // sqrt(pi)/2: the quad of the ellipse's area
   LightData wide;
-  wide.colour_type = vec4(lightRadiance(L) * abs(determinant(D)) / max(sqrt(l1 * l2), 1e-30), float(LIGHT_QUAD));
+  // Same energy over a wider outline: the radiance scaled by |det D| / sqrt(det C) <= 1 (C >= D D^T),
+  // bounded by 1 where rounding leaves l2 at 0.
+  wide.colour_type = vec4(lightRadiance(L) * min(abs(determinant(D)) / max(sqrt(l1 * l2), 1e-30), 1.0), float(LIGHT_QUAD));
   wide.position_radius = vec4(s.position + plane.distance * plane.l, 0.0);
   wide.direction_cos = vec4(-plane.l, 0.0);
   wide.axisU = vec4(k * sqrt(l1) * (v1.x * e1 + v1.y * e2), 0.0);

@@ -83,9 +83,11 @@ ground_truth_section() {
   echo
   echo "| sun angular radius | highlight radius (px) | spp (passes) | reference / closed form | own error |"
   echo "| --- | --- | --- | --- | --- |"
-  for deg in 0.25 0.5 2; do
+  # Smaller suns need more samples for the same relative error (the highlight has fewer of them).
+  for deg_spp in 0.25:16384 0.5:16384 2:4096; do
+    local deg=${deg_spp%:*} spp=${deg_spp#*:}
     sed "s/%DEGREES%/$deg/" tools/mirror-sphere-sun.toml > "$out/sun-$deg.toml"
-    for spp in 1024 65536; do
+    {
       $B compare -q --scene "$out/sun-$deg.toml" --methods conventional --spp $spp -o "$out/sun-$deg-$spp" > /dev/null
       local d="$out/sun-$deg-$spp" half r expected
       half=$(calc "$deg / 2 * 3.14159265358979 / 180")
@@ -94,7 +96,7 @@ ground_truth_section() {
       echo "| $deg deg | $(calc "$r * sin($half)" | xargs printf '%.3f') | $spp ($(field "$d" reference_passes)) |" \
         "$(calc "$(field "$d" reference_mean_luminance) / $expected" | xargs printf '%.4f') |" \
         "$(calc "100 * $(field "$d" reference_energy_error)" | xargs printf '%.2f%%') |"
-    done
+    }
   done
   echo
   echo "### How many samples: the reference's noise against its sample count"
@@ -193,16 +195,17 @@ podee_section() {
   echo "### Far away: many bumps inside a pixel"
   echo
   echo "builtin:mirror-bumps near (frame 0) and far (frame 23, the end of its dolly), 1024-spp"
-  echo "reference; RMSE and energy ratio. \`podee\` reads its corner normals at the level"
-  echo "\`corner_lod\` chooses (docs/methods.md, podee); \`lobe=lean\` widens its lobe by the map's"
-  echo "slope covariance inside the footprint."
+  echo "reference; RMSE and energy ratio. \`podee\` reads its corner normals at the footprint scaled by"
+  echo "2^corner_lod (0: the pixel centre's mip level, which flattens the bumps far away; the default,"
+  echo "-16, is the base level); \`lobe=lean\` widens its lobe by the map's slope covariance inside the"
+  echo "footprint, the variation the four corners cannot see (the paper's stated failure case)."
   echo
   local variants=(
     "conventional|conventional|"
     "lean|lean|"
-    "podee (default)|podee|"
-    "podee, corners at the centre's level|podee|--param podee.corner_lod=centre"
-    "podee, corners at level 0|podee|--param podee.corner_lod=base"
+    "podee (default: corners at level 0)|podee|"
+    "podee, corners at the centre's level (corner_lod=0)|podee|--param podee.corner_lod=0"
+    "podee, corners two levels finer (corner_lod=-2)|podee|--param podee.corner_lod=-2"
     "podee, lobe=lean|podee|--param podee.lobe=lean"
   )
   echo "| variant | RMSE near | energy near | RMSE far | energy far |"
@@ -228,9 +231,10 @@ podee_section() {
     "$(fmt '%.4f' "$(field "$out/podee-far-0-23" reference_noise_rmse)")"
   echo
   cp "$out/podee-far-5-23/podee.png" "$out/podee-far-0-23/podee-lobe-lean.png"
+  cp "$out/podee-far-3-23/podee.png" "$out/podee-far-0-23/podee-centre-level.png"
   cp "$out/podee-far-2-23/podee.png" "$out/podee-far-0-23/podee.png"
   cp "$out/podee-far-1-23/lean.png" "$out/podee-far-0-23/lean.png"
-  thumbnails mirror-bumps-far "$out/podee-far-0-23" conventional lean podee podee-lobe-lean
+  thumbnails mirror-bumps-far "$out/podee-far-0-23" conventional lean podee podee-centre-level podee-lobe-lean
   echo
   echo "### Variants of \`podee\`: error and cost"
   echo

@@ -78,6 +78,19 @@ vec3 lightCentreDirection(LightData L, vec3 p) {
   return d * inversesqrt(max(dot(d, d), 1e-24));
 }
 
+// Unit direction from p to a point or delta directional light, and its irradiance at normal incidence.
+void deltaLightIncidence(LightData L, vec3 p, out vec3 l, out vec3 irradiance) {
+  if (lightType(L) == LIGHT_POINT) {
+    vec3 d = L.position_radius.xyz - p;
+    float d2 = max(dot(d, d), 1e-12);
+    l = d * inversesqrt(d2);
+    irradiance = L.colour_type.rgb / d2;
+  } else {
+    l = -L.direction_cos.xyz;
+    irradiance = L.colour_type.rgb;
+  }
+}
+
 // Does the ray (origin, unit dir) reach the emitting side of the light? dist: hit distance.
 bool lightHit(LightData L, vec3 origin, vec3 dir, out float dist) {
   int t = lightType(L);

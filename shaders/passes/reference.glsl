@@ -3,7 +3,6 @@
 // Veach 1997) with low-discrepancy samples stratified over the pixel's k x k sub-pixels.
 // Never uses the approximations of any method. Included in place of a method module.
 #include "common/brdf.glsl"
-#include "common/delta_lights.glsl"
 #include "common/frame.glsl"
 #include "common/lights.glsl"
 #include "common/sampling.glsl"

@@ -82,54 +82,7 @@ TEST(NdfFiltering, BoxAveragedSlopeDensityMatchesQuadrature) {
   RecordProperty("worst_relative_error", std::to_string(worst));
 }
 
-TEST(NdfFiltering, BeckmannConvolutionMatchesNumericalConvolution) {
-  // Kaplanyan et al.: the Beckmann slope density convolved with the footprint Gaussian of
-  // covariance C = sigma^2 U U^T (sigma = 0.5 px) is the Beckmann density of R' = R + 2C.
-  // Here the convolution is summed on a grid, independently of that identity.
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<glm::vec4> derivs, inputs;
-  struct Case {
-    double ax, ay;
-    glm::dvec2 dx, dy, slope;
-  };
-  std::vector<Case> cases;
-  for (int i = 0; i < 12; ++i) {
-    Case c;
-    c.ax = 0.05 + 0.3 * u(rng);
-    c.ay = c.ax * (0.5 + u(rng));
-    c.dx = glm::dvec2(u(rng) - 0.5, u(rng) - 0.5) * (0.4 * c.ax);
-    c.dy = glm::dvec2(u(rng) - 0.5, u(rng) - 0.5) * (0.4 * c.ax);
-    c.slope = glm::dvec2(u(rng) - 0.5, u(rng) - 0.5) * (2 * c.ax);
-    cases.push_back(c);
-    derivs.emplace_back(c.dx.x, c.dx.y, c.dy.x, c.dy.y);
-    inputs.emplace_back(c.ax, c.ay, c.slope.x, c.slope.y);
-  }
-  const auto gpu = evaluate_glsl(kIncludes,
-                                 "vec4 evaluate(vec4 d, vec4 p) {\n"
-                                 "  Lobe l = kaplanyanBeckmannLobe(axisAlignedLobe(NDF_BECKMANN, p.xy), d.xy, d.zw, 100.0);\n"
-                                 "  return vec4(slopeDensityBeckmann(p.zw, l.A)); }",
-                                 derivs, inputs);
-  for (std::size_t i = 0; i < cases.size(); ++i) {
-    const Case& c = cases[i];
-    // C = sigma^2 (dx dx^T + dy dy^T), the talk's pixel filter of sigma = 0.5 px.
-    const double cxx = 0.25 * (c.dx.x * c.dx.x + c.dy.x * c.dy.x), cyy = 0.25 * (c.dx.y * c.dx.y + c.dy.y * c.dy.y);
-    const double cxy = 0.25 * (c.dx.x * c.dx.y + c.dy.x * c.dy.y);
-    // t = L z with C = L L^T (Cholesky) and z standard normal, summed on a grid over |z| < 6.
-    const double l11 = std::sqrt(cxx), l21 = cxy / l11, l22 = std::sqrt(std::max(cyy - l21 * l21, 0.0));
-    const int n = 400;
-    const double step = 12.0 / n;
-    double sum = 0;
-    for (int a = 0; a < n; ++a)
-      for (int b = 0; b < n; ++b) {
-        const double z1 = -6 + (a + 0.5) * step, z2 = -6 + (b + 0.5) * step;
-        const double tx = l11 * z1, ty = l21 * z1 + l22 * z2;
-        sum += std::exp(-0.5 * (z1 * z1 + z2 * z2)) / (2 * M_PI) * p22_beckmann(c.slope.x - tx, c.slope.y - ty, c.ax, c.ay);
-      }
-    const double expected = sum * step * step;
-    EXPECT_NEAR(gpu[i].x, expected, 2e-3 * expected) << "case " << i;
-  }
-}
+// Kaplanyan's Beckmann kernel against a numerical convolution: tests/gl/test_footprint_kernels.cpp.
 
 TEST(NdfFiltering, LeanCovarianceMatchesCpuMoments) {
   // The slope-moment textures, mipmapped by the GL, sampled at texel centres of level L, give

@@ -203,7 +203,7 @@ podee_section() {
   local variants=(
     "conventional|conventional|"
     "lean|lean|"
-    "podee (default: corners at level 0)|podee|"
+    "podee (default: corners at the base mip level)|podee|"
     "podee, corners at the centre's level (corner_lod=0)|podee|--param podee.corner_lod=0"
     "podee, corners two levels finer (corner_lod=-2)|podee|--param podee.corner_lod=-2"
     "podee, lobe=lean|podee|--param podee.lobe=lean"

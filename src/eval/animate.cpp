@@ -52,13 +52,10 @@ AnimateResult run_animate(Session& session, const std::vector<MethodChoice>& met
   std::filesystem::remove_all(staging);
   char name[32];
   for (int f = 0; f < frames; ++f) {
-    std::vector<Frame> rendered;
-    for (const auto& m : methods) rendered.push_back(session.render(m, f));
-    std::vector<const Frame*> ranked;
-    for (const auto& r : rendered) ranked.push_back(&r);
-    const ReferenceFrame estimate = session.reference(f, ranked);
-    const Frame& reference = estimate.mean;
-    floor.add_frame(estimate);
+    const Session::Rendered all = session.render_with_reference(methods, f);
+    const std::vector<Frame>& rendered = all.methods;
+    const Frame& reference = all.reference.mean;
+    floor.add_frame(all.reference);
     std::snprintf(name, sizeof name, "%04d.png", f);
     write_png(staging / "reference" / name, tonemap_for_display(reference.total, film.exposure, film.bloom));
     for (std::size_t i = 0; i < methods.size(); ++i) {

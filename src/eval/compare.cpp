@@ -82,13 +82,10 @@ std::string format_table(const std::vector<MethodMetrics>& rows, const Reference
 
 std::vector<MethodMetrics> run_compare(Session& session, const std::vector<MethodChoice>& methods,
                                        const std::filesystem::path& out, int frame) {
-  // Render everything first: a NaN anywhere fails the command before any file is written. The
-  // methods come first: --spp auto sizes the reference by the differences between them.
-  std::vector<Frame> frames;
-  for (const auto& m : methods) frames.push_back(session.render(m, frame));
-  std::vector<const Frame*> ranked;
-  for (const auto& f : frames) ranked.push_back(&f);
-  const ReferenceFrame reference_estimate = session.reference(frame, ranked);
+  // Render everything first: a NaN anywhere fails the command before any file is written.
+  const Session::Rendered all = session.render_with_reference(methods, frame);
+  const std::vector<Frame>& frames = all.methods;
+  const ReferenceFrame& reference_estimate = all.reference;
   const Frame& reference = reference_estimate.mean;
   const double noise = reference_estimate.noise_rmse();
   const double energy_error = reference_estimate.relative_energy_error();
@@ -149,6 +146,8 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
   json["reference_energy_error"] = energy_error;
   json["reference_mean_luminance"] = luminance(glm::vec3(reference.total.mean()));
   if (session.options().spp_auto) {
+    std::vector<const Frame*> ranked;
+    for (const auto& f : frames) ranked.push_back(&f);
     json["reference_noise_target"] = reference_noise_target(reference, ranked, session.options().noise_fraction);
     json["reference_max_spp"] = session.options().max_spp;
   }

@@ -120,6 +120,15 @@ Frame Session::render(const MethodChoice& choice, int frame) {
   return f;
 }
 
+Session::Rendered Session::render_with_reference(const std::vector<MethodChoice>& methods, int frame) {
+  Rendered r;
+  for (const auto& m : methods) r.methods.push_back(render(m, frame));
+  std::vector<const Frame*> ranked;
+  for (const auto& f : r.methods) ranked.push_back(&f);
+  r.reference = reference(frame, ranked);
+  return r;
+}
+
 ReferenceFrame Session::reference(int frame, const std::vector<const Frame*>& ranked) {
   ReferenceSettings settings = reference_;
   settings.seed = frame;

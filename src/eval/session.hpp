@@ -64,6 +64,13 @@ class Session {
   /// until the reference's noise RMSE is at most noise_fraction times the smallest of the
   /// `ranked` methods' RMSEs and of their nonzero pairwise differences, or max_spp is reached.
   ReferenceFrame reference(int frame, const std::vector<const Frame*>& ranked = {});
+  /// Every method's frame, then the reference ranked by them (methods first: --spp auto sizes the
+  /// reference by the differences between them; a NaN anywhere throws before anything is written).
+  struct Rendered {
+    std::vector<Frame> methods;
+    ReferenceFrame reference;
+  };
+  Rendered render_with_reference(const std::vector<MethodChoice>& methods, int frame);
   [[nodiscard]] const ReferenceSettings& reference_settings() const { return reference_; }
   [[nodiscard]] const CommonOptions& options() const { return options_; }
 

@@ -21,21 +21,10 @@ float ndfBeckmann(vec3 h, vec2 alpha) {
 
 float ndf(int kind, vec3 h, vec2 alpha) { return kind == 1 ? ndfBeckmann(h, alpha) : ndfGGX(h, alpha); }
 
-// Smith Lambda (Heitz 2014, eqs. 72 and 80) as a function of t2 = alpha(w)^2 tan^2(theta) = a^-2,
-// alpha(w) the roughness along w's azimuth.
-float smithLambdaOfT2(int kind, float t2) {
-  if (kind == 1) {
-    // Beckmann: Lambda(a) with a = 1 / (alpha tan); Walter et al. 2007's rational fit (eq. 27).
-    float b = inversesqrt(max(t2, 1e-12));
-    if (b >= 1.6) return 0.0;
-    return (1.0 - 1.259 * b + 0.396 * b * b) / (3.535 * b + 2.181 * b * b);
-  }
-  return 0.5 * (-1.0 + sqrt(1.0 + t2));
-}
-
-// |w.z| Lambda(w) from s2 = alpha(w)^2 |w.xy|^2 (so that t2 = s2 / w.z^2; for a lobe with slope
-// covariance A, s2 = w.xy^T A w.xy) and z = |w.z|, in forms without division by z: finite and
-// exact as z -> 0, where Lambda itself diverges. G1 / w.z and G2 / wo.z are built from it.
+// Smith Lambda (Heitz 2014, eqs. 72 and 80) times |w.z|, from s2 = alpha(w)^2 |w.xy|^2 (so that
+// alpha(w)^2 tan^2 = s2 / w.z^2; for a lobe with slope covariance A, s2 = w.xy^T A w.xy) and
+// z = |w.z|, in forms without division by z: finite and exact as z -> 0, where Lambda itself
+// diverges. G1 and G2 / wo.z are built from it.
 float smithLambdaCosOfS2(int kind, float s2, float z) {
   if (kind == 1) {
     // Beckmann, Walter's fit in b = z / s: z Lambda = s (1 - 1.259 b + 0.396 b^2) / (3.535 + 2.181 b).
@@ -55,17 +44,10 @@ float smithLambdaCos(int kind, vec3 w, vec2 alpha) {
   return smithLambdaCosOfS2(kind, a.x * a.x * w.x * w.x + a.y * a.y * w.y * w.y, abs(w.z));
 }
 
-// Smith Lambda for direction w of the axis-aligned NDF (infinite at w.z = 0).
-float smithLambda(int kind, vec3 w, vec2 alpha) { return smithLambdaCos(kind, w, alpha) / abs(w.z); }
-
 float smithG1(int kind, vec3 w, vec2 alpha) { return abs(w.z) / (abs(w.z) + smithLambdaCos(kind, w, alpha)); }
 
-// Height-correlated masking-shadowing (Heitz 2014, eq. 99).
-float smithG2(int kind, vec3 wo, vec3 wi, vec2 alpha) {
-  return 1.0 / (1.0 + smithLambda(kind, wo, alpha) + smithLambda(kind, wi, alpha));
-}
-
-// G2(wo, wi) / wo.z for wo.z, wi.z > 0 from lo = wo.z Lambda(wo) and li = wi.z Lambda(wi): finite
+// Height-correlated masking-shadowing (Heitz 2014, eq. 99), G2 = 1 / (1 + Lambda(wo) + Lambda(wi)),
+// divided by wo.z for wo.z, wi.z > 0 from lo = wo.z Lambda(wo) and li = wi.z Lambda(wi): finite
 // as either cosine tends to 0 (G2 / wo.z -> 1 / lo ~ 2 / alpha, the true limit, not 1 / wo.z).
 float smithG2OverCosOfLambdaCos(float woz, float wiz, float lo, float li) { return 1.0 / (woz + lo + li * woz / wiz); }
 

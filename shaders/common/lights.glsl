@@ -153,7 +153,6 @@ float sphereConeOneMinusCos(LightData L, vec3 p) {
   float sin2 = min(r * r / max(dot(d, d), 1e-30), 1.0);
   return sin2 / (1.0 + sqrt(1.0 - sin2));
 }
-float sphereConeCos(LightData L, vec3 p) { return 1.0 - sphereConeOneMinusCos(L, p); }
 
 // Solid-angle density with which sampleLightDirection picks `dir` (which hits at `dist`).
 float lightPdf(LightData L, vec3 p, vec3 dir, float dist) {

@@ -37,16 +37,6 @@ float maxEigenvalue(mat2 m) {
   return half_tr + sqrt(d * d + m[0][1] * m[0][1]);
 }
 
-// Square root of a symmetric positive definite 2x2 matrix: (A + sqrt(det A) I) / sqrt(tr A + 2 sqrt(det A)).
-mat2 sqrtSpd(mat2 m) {
-  float s = sqrt(max(determinant(m), 0.0));
-  float t = sqrt(max(m[0][0] + m[1][1] + 2.0 * s, 1e-30));
-  return (m + mat2(s)) / t;
-}
-
-// Width of the lobe in alpha units: sqrt of A's largest eigenvalue plus the box.
-float lobeWidth(Lobe lobe) { return sqrt(maxEigenvalue(lobe.A)) + max(lobe.footprint.x, lobe.footprint.y); }
-
 // Quadratic form s^T A^-1 s and sqrt(det A), with A's determinant kept positive.
 float inverseQuadratic(mat2 A, vec2 s, out float sqrtDet) {
   float det = max(determinant(A), 1e-36);
@@ -198,11 +188,9 @@ float lobeNdf(Lobe lobe, vec3 h) {
 
 // Smith Lambda of the lobe for direction w: the 1D roughness along w's azimuth is
 // alpha_w^2 = w_xy^T A w_xy / |w_xy|^2 (Heitz 2014, sec. 5.4, for a linearly transformed lobe).
-float lobeLambda(Lobe lobe, vec3 w) {
-  return smithLambdaOfT2(lobe.ndf, dot(w.xy, lobe.A * w.xy) / max(w.z * w.z, 1e-12));
-}
-// |w.z| Lambda(w) of the lobe, finite as w.z -> 0 (common/brdf.glsl's smithLambdaCosOfS2).
+// lobeLambdaCos is |w.z| Lambda(w), finite as w.z -> 0 (common/brdf.glsl's smithLambdaCosOfS2).
 float lobeLambdaCos(Lobe lobe, vec3 w) { return smithLambdaCosOfS2(lobe.ndf, dot(w.xy, lobe.A * w.xy), abs(w.z)); }
+float lobeLambda(Lobe lobe, vec3 w) { return lobeLambdaCos(lobe, w) / max(abs(w.z), 1e-6); }
 
 // G2(wo, wi) / wo.z of the lobe, bounded at grazing views (no 1 / wo.z blow-up).
 float lobeG2OverCos(Lobe lobe, vec3 wo, vec3 wi) {

@@ -155,10 +155,10 @@ ReferenceFrame Session::reference(int frame, const std::vector<const Frame*>& ra
                   !options_.quiet);
   bool grew = false;
   for (;;) {
+    if (acc.passes() >= max_passes) break;
     if (acc.passes() >= 4) {
       const ReferenceFrame now = acc.result();
-      const double target = reference_noise_target(now.mean, ranked, options_.noise_fraction);
-      if (acc.passes() >= max_passes || acc.noise_rmse() <= target) break;
+      if (now.noise_rmse() <= reference_noise_target(now.mean, ranked, options_.noise_fraction)) break;
     }
     const int p = acc.passes();
     acc.add_pass(renderer_->render_reference_pass(cam, width_, height_, k, settings.effective_light_samples(),

@@ -85,16 +85,6 @@ void ReferenceAccumulator::add_pass(const Frame& pass) {
   ++passes_;
 }
 
-double ReferenceAccumulator::noise_rmse() const {
-  if (passes_ < 2) return std::numeric_limits<double>::quiet_NaN();
-  double sum = 0.0;
-  for (std::size_t i = 0; i < sum_.size(); ++i) {
-    const glm::dvec3 v = variance_of_mean(sum_[i], sum_squares_[i], passes_);
-    sum += v.x + v.y + v.z;
-  }
-  return std::sqrt(sum / (3.0 * static_cast<double>(sum_.size())));
-}
-
 ReferenceFrame ReferenceAccumulator::result() const {
   ReferenceFrame r;
   r.passes = passes_;

@@ -44,8 +44,6 @@ class ReferenceAccumulator {
   void add_pass(const Frame& pass);
   [[nodiscard]] int passes() const { return passes_; }
   [[nodiscard]] ReferenceFrame result() const;
-  /// noise_rmse() of result(), without building it.
-  [[nodiscard]] double noise_rmse() const;
 
  private:
   int width_, height_, spp_per_pass_;

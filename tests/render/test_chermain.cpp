@@ -63,7 +63,9 @@ void expect_matches_smooth(const Image& glints, const Image& smooth, const std::
   for (int by = 0; by < 4; ++by)
     for (int bx = 0; bx < 4; ++bx) {
       const double gb = block_mean(glints, bx * n, by * n, n), cb = block_mean(smooth, bx * n, by * n, n);
-      if (cb > 0.05 * c) EXPECT_NEAR(gb, cb, 0.06 * cb) << what << " block " << bx << ", " << by;
+      if (cb > 0.05 * c) {
+        EXPECT_NEAR(gb, cb, 0.06 * cb) << what << " block " << bx << ", " << by;
+      }
     }
 }
 

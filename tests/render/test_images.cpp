@@ -154,7 +154,9 @@ visible = false
       // radiance inside the disk, nothing outside, a continuous step within a pixel of the rim.
       const double rim = std::abs(glm::distance(p, centre) - r);
       const float c = conv.specular.at(px, py).r;
-      if (rim > px_size) EXPECT_NEAR(c, glm::distance(p, centre) < r ? 1.0f : 0.0f, 1e-3) << px << "," << py;
+      if (rim > px_size) {
+        EXPECT_NEAR(c, glm::distance(p, centre) < r ? 1.0f : 0.0f, 1e-3) << px << "," << py;
+      }
       EXPECT_GE(c, 0.0f);
       EXPECT_LE(c, 1.0f + 1e-3f);
     }

@@ -333,8 +333,8 @@ glints_section() {
   echo
   echo
   cat <<'TEXT'
-Pixel RMSE favours the smooth limit that `conventional` draws: it is the glints' expected value,
-with no sparkle at all, so it is a reference for energy, not for appearance.
+Pixel RMSE does not reward sparkle: the smooth limit that `conventional` draws is the glints'
+expected value, with no sparkle at all, so it is a reference for energy, not for appearance.
 TEXT
   echo
   echo "Pictures (frame 0, with the scenes' star bloom; metrics never see it):"

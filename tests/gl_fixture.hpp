@@ -11,6 +11,7 @@
 #include "gl/context.hpp"
 #include "gl/shader_library.hpp"
 #include "render/gpu_scene.hpp"
+#include "render/reference_backend.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_loader.hpp"
 #include "shading/registry.hpp"
@@ -34,6 +35,7 @@ struct SceneFixture {
     context();
     gpu = std::make_unique<GpuScene>(scene);
     renderer = std::make_unique<Renderer>(shaders(), *gpu);
+    reference_backend = make_reference_backend("raster", {shaders(), *gpu, *renderer});
   }
   /// The scene's camera and film rendered by a method, parameters as `--param` gives them.
   Frame method(const std::string& id, const std::map<std::string, std::string>& params = {}) {
@@ -48,11 +50,16 @@ struct SceneFixture {
     s.spp = spp;
     s.light_samples = light_samples;
     s.seed = seed;
-    return renderer->render_reference(scene.camera, scene.film.width, scene.film.height, s);
+    return reference_at(scene.camera, scene.film.width, scene.film.height, s);
+  }
+  /// Ground truth of any view of the scene.
+  ReferenceFrame reference_at(const Camera& camera, int width, int height, const ReferenceSettings& settings) {
+    return render_reference(*reference_backend, camera, width, height, settings);
   }
   Scene scene;
   std::unique_ptr<GpuScene> gpu;
   std::unique_ptr<Renderer> renderer;
+  std::unique_ptr<ReferenceBackend> reference_backend;
 };
 
 /// Runs `body` (GLSL defining `vec4 evaluate(vec4 a, vec4 b)`, after `includes`) on every pair

@@ -40,6 +40,11 @@ void add_common(CLI::App* cmd, CommonOptions& o, bool many_methods) {
       ->default_str("0.1");
   cmd->add_option("--light-samples", o.light_samples,
                   "reference light samples per sub-pixel and area light (0: max(1, 256/spp))")->default_str("0");
+  std::string backends;
+  for (const auto& b : reference_backends()) backends += (backends.empty() ? "" : "|") + b.id;
+  cmd->add_option("--reference-backend", o.reference_backend,
+                  "how the ground truth is computed (" + backends + "; see 'glintlab info')")
+      ->default_str(o.reference_backend);
   cmd->add_option("--width", o.width, "film width in pixels (overrides the scene)");
   cmd->add_option("--height", o.height, "film height in pixels (overrides the scene)");
   cmd->add_option("--frames", o.frames, "frames of the camera path (overrides the scene)");

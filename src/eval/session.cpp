@@ -90,6 +90,7 @@ Session::Session(const CommonOptions& options)
       scene_(load_scene(options.scene.empty() ? kDefaultScene : options.scene)),
       cache_(options.no_cache ? std::filesystem::path() : ReferenceCache::default_directory()) {
   if (!options.spp_text.empty()) parse_spp(options.spp_text, "--spp", options_);
+  find_reference_backend(options.reference_backend);  // an unknown id fails before any GL work
   validate_spp(options_.spp);
   if (options.max_spp < 4 * kProgressivePassSpp || options.max_spp > kMaxReferenceSpp)
     throw InputError("--max-spp " + std::to_string(options.max_spp) + ": allowed: " +
@@ -111,7 +112,7 @@ Session::Session(const CommonOptions& options)
   device_ = context_->info().renderer;
   gpu_scene_ = std::make_unique<GpuScene>(scene_);
   renderer_ = std::make_unique<Renderer>(shaders_, *gpu_scene_);
-  shaders_hash_ = renderer_->reference_program_hash();
+  reference_backend_ = make_reference_backend(options.reference_backend, {shaders_, *gpu_scene_, *renderer_});
 }
 
 Frame Session::render(const MethodChoice& choice, int frame) {
@@ -134,11 +135,11 @@ ReferenceFrame Session::reference(int frame, const std::vector<const Frame*>& ra
   settings.seed = frame;
   const Camera cam = camera(frame);
   if (!options_.spp_auto) {
-    const auto key = ReferenceCache::key(scene_, cam, width_, height_, settings, shaders_hash_, device_);
+    const auto key = ReferenceCache::key(scene_, cam, width_, height_, settings, *reference_backend_, device_);
     if (auto cached = cache_.load(key)) return *cached;
     ProgressBar bar("reference " + std::to_string(settings.spp) + " spp, frame " + std::to_string(frame), !options_.quiet);
     ReferenceFrame r =
-        renderer_->render_reference(cam, width_, height_, settings, [&](int d, int t) { bar.update(d, t); });
+        render_reference(*reference_backend_, cam, width_, height_, settings, [&](int d, int t) { bar.update(d, t); });
     require_finite(r.mean, "reference");
     cache_.store(key, r);
     return r;
@@ -147,7 +148,7 @@ ReferenceFrame Session::reference(int frame, const std::vector<const Frame*>& ra
   // Progressive: continue from what the cache holds, one pass of k = 8 at a time.
   settings.spp = kProgressivePassSpp * 4;  // k = 8; light samples as for 256 spp
   const int k = settings.subpixels();
-  const auto key = ReferenceCache::key(scene_, cam, width_, height_, settings, shaders_hash_, device_, true);
+  const auto key = ReferenceCache::key(scene_, cam, width_, height_, settings, *reference_backend_, device_, true);
   const auto cached = cache_.load(key);
   ReferenceAccumulator acc = cached ? ReferenceAccumulator(*cached, k * k) : ReferenceAccumulator(width_, height_, k * k);
   const int max_passes = options_.max_spp / (k * k);
@@ -161,8 +162,7 @@ ReferenceFrame Session::reference(int frame, const std::vector<const Frame*>& ra
       if (now.noise_rmse() <= reference_noise_target(now.mean, ranked, options_.noise_fraction)) break;
     }
     const int p = acc.passes();
-    acc.add_pass(renderer_->render_reference_pass(cam, width_, height_, k, settings.effective_light_samples(),
-                                                  reference_pass_seed(frame, p), reference_pass_jitter(frame, p)));
+    acc.add_pass(reference_backend_->render_pass(cam, width_, height_, ReferencePass::of(settings, p)));
     grew = true;
     bar.update(std::min(acc.passes(), max_passes), max_passes);
   }

@@ -10,6 +10,7 @@
 #include "gl/context.hpp"
 #include "gl/shader_library.hpp"
 #include "render/gpu_scene.hpp"
+#include "render/reference_backend.hpp"
 #include "render/reference_cache.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
@@ -33,6 +34,7 @@ struct CommonOptions {
   int frames = 0;  ///< 0: the scene's camera path
   std::string out;
   bool no_cache = false;
+  std::string reference_backend = "raster";  ///< --reference-backend: an id of reference_backends()
   bool quiet = false;
 };
 
@@ -55,6 +57,7 @@ class Session {
   [[nodiscard]] int frames() const { return frames_; }
   [[nodiscard]] Camera camera(int frame) const { return scene_.path.at(scene_.camera, frame); }
   Renderer& renderer() { return *renderer_; }
+  ReferenceBackend& reference_backend() { return *reference_backend_; }
   GlContext& context() { return *context_; }
 
   /// Renders a method's frame; throws RuntimeFailure if it holds NaN or Inf.
@@ -84,7 +87,7 @@ class Session {
   ReferenceCache cache_;
   ReferenceSettings reference_;
   int width_ = 0, height_ = 0, frames_ = 1;
-  std::uint64_t shaders_hash_ = 0;  ///< the reference's programs (Renderer::reference_program_hash), in every cache key
+  std::unique_ptr<ReferenceBackend> reference_backend_;
   std::string device_;
 };
 

@@ -17,7 +17,7 @@ ReferenceCache::ReferenceCache(std::filesystem::path directory) : directory_(std
 std::filesystem::path ReferenceCache::default_directory() { return default_cache_directory(); }
 
 std::uint64_t ReferenceCache::key(const Scene& scene, const Camera& camera, int width, int height,
-                                  const ReferenceSettings& settings, std::uint64_t shaders_hash,
+                                  const ReferenceSettings& settings, const ReferenceBackend& backend,
                                   const std::string& renderer, bool progressive) {
   Hasher h;
   h.text(progressive ? "glintlab-reference-progressive-v2" : "glintlab-reference-v2");
@@ -29,7 +29,8 @@ std::uint64_t ReferenceCache::key(const Scene& scene, const Camera& camera, int 
   h.value(settings.subpixels());
   h.value(settings.effective_light_samples());
   h.value(settings.seed);
-  h.value(shaders_hash);
+  h.text(backend.id());
+  h.value(backend.estimator_hash());
   h.text(renderer);
   return h.digest();
 }

@@ -1,13 +1,14 @@
 #pragma once
 // On-disk cache of ground-truth frames, keyed by a hash of everything that affects them: scene
-// content, camera, film size, reference settings, shader sources and the GL renderer.
+// content, camera, film size, reference settings, the backend (its id and its estimator's code)
+// and the GL renderer.
 // Location: default_cache_directory() (core/cache_directory.hpp).
 #include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
 
-#include "render/renderer.hpp"
+#include "render/reference_backend.hpp"
 #include "scene/scene.hpp"
 
 namespace glintlab {
@@ -20,7 +21,7 @@ class ReferenceCache {
 
   /// `progressive`: a key for a reference that grows pass by pass (--spp auto), without the spp.
   [[nodiscard]] static std::uint64_t key(const Scene& scene, const Camera& camera, int width, int height,
-                                         const ReferenceSettings& settings, std::uint64_t shaders_hash,
+                                         const ReferenceSettings& settings, const ReferenceBackend& backend,
                                          const std::string& renderer, bool progressive = false);
   /// An entry is an EXR (mean, specular, standard error, even and odd passes) and a JSON of its
   /// passes, written last so that a half-written entry is never read.

@@ -27,7 +27,7 @@ inline std::map<std::string, Measured> measure_sequence(const std::string& built
     ReferenceSettings settings;
     settings.spp = 64;
     settings.seed = t;
-    const Frame reference = f.renderer->render_reference(camera, w, h, settings).mean;
+    const Frame reference = f.reference_at(camera, w, h, settings).mean;
     for (const auto& id : ids) {
       const auto& method = find_method(id);
       const Frame m = f.renderer->render(method, resolve_params(method, {}), camera, w, h);

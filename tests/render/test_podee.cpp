@@ -245,7 +245,7 @@ TEST(Podee, CornersReadTheNormalMapAtTheBaseLevelByDefault) {
     const Camera camera = f.scene.path.at(f.scene.camera, t);
     ReferenceSettings settings;
     settings.spp = 256;
-    const Frame reference = f.renderer->render_reference(camera, w, h, settings).mean;
+    const Frame reference = f.reference_at(camera, w, h, settings).mean;
     const auto error = [&](const std::map<std::string, std::string>& params) {
       return rmse(f.renderer->render(method, resolve_params(method, params), camera, w, h).total, reference.total);
     };

@@ -1,4 +1,4 @@
-// The reference estimator (shaders/passes/reference.glsl, Renderer::render_reference): jittered
+// The reference estimator (shaders/passes/reference.glsl, the `raster` backend): jittered
 // independent passes, surfaces evaluated unfiltered, and its own error. Each test compares it with
 // a value computed independently here, or checks that its error bars predict its actual error.
 #include <gtest/gtest.h>
@@ -225,9 +225,9 @@ irradiance = 1
 angular_radius = 1
 )");
   ReferenceSettings s{.spp = 256, .light_samples = 0, .seed = 1};  // 4 passes of 8 x 8
-  const ReferenceFrame a = f.renderer->render_reference(f.scene.camera, 64, 48, s);
+  const ReferenceFrame a = f.reference_at(f.scene.camera, 64, 48, s);
   s.seed = 2;
-  const ReferenceFrame b = f.renderer->render_reference(f.scene.camera, 64, 48, s);
+  const ReferenceFrame b = f.reference_at(f.scene.camera, 64, 48, s);
   ASSERT_EQ(a.passes, 4);
   const double measured = rmse(a.mean.total, b.mean.total);
   const double predicted = std::hypot(a.noise_rmse(), b.noise_rmse());

@@ -1,0 +1,83 @@
+#include "render/raster_reference.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <set>
+
+#include "core/error.hpp"
+#include "core/hash.hpp"
+#include "gl/context.hpp"
+#include "gl/shader_library.hpp"
+#include "render/gpu_scene.hpp"
+#include "render/render_target.hpp"
+#include "render/renderer.hpp"
+
+namespace glintlab {
+
+RasterReference::RasterReference(const ReferenceBackendContext& context)
+    : shaders_(context.shaders), scene_(context.scene), renderer_(context.renderer) {}
+
+std::uint64_t RasterReference::estimator_hash() const {
+  Hasher h;
+  std::set<MaterialVariant> variants;
+  for (const auto& mesh : scene_.meshes()) variants.insert(material_variant(scene_, mesh.material));
+  for (const MaterialVariant& v : variants) {
+    const ShaderDefines defines = forward_variant(kReferenceModule, scene_.light_ranges(), v);
+    h.text(shaders_.expand("passes/forward.vert", defines));
+    h.text(shaders_.expand("passes/forward.frag", defines));
+  }
+  h.text(shaders_.expand("passes/emitter.frag", {}));
+  h.text(shaders_.expand("passes/downsample.comp", {}));
+  return h.digest();
+}
+
+Frame RasterReference::render_pass(const Camera& camera, int width, int height, const ReferencePass& pass,
+                                   const ProgressFn& progress) {
+  const int k = pass.subpixels;
+  if (k < 1 || k > 32) throw InputError("reference sub-pixels per axis " + std::to_string(k) + ": allowed: 1 .. 32");
+  constexpr int kMaxTileSide = 2048;  // sub-pixels per side of one high-resolution tile
+  const int tile = std::max(1, kMaxTileSide / k);
+  const int tiles_x = (width + tile - 1) / tile, tiles_y = (height + tile - 1) / tile;
+
+  RenderTarget high(std::min(width, tile) * k, std::min(height, tile) * k);
+  gl::Texture out_total = gl::make_texture(GL_TEXTURE_2D), out_specular = gl::make_texture(GL_TEXTURE_2D);
+  glTextureStorage2D(out_total.id(), 1, GL_RGBA32F, width, height);
+  glTextureStorage2D(out_specular.id(), 1, GL_RGBA32F, width, height);
+
+  const GLuint downsample = shaders_.compute("passes/downsample.comp");
+  const glm::ivec2 film(width, height);
+  int done = 0;
+  for (int ty = 0; ty < tiles_y; ++ty)
+    for (int tx = 0; tx < tiles_x; ++tx) {
+      // Tile in output pixels, y down (film convention).
+      const glm::ivec2 origin(tx * tile, ty * tile);
+      const glm::ivec2 size(std::min(tile, width - origin.x), std::min(tile, height - origin.y));
+      const int gl_y = height - origin.y - size.y;  // the same tile in GL's y-up pixel rows
+      const glm::ivec2 high_size = size * k;
+      // The rasteriser samples each sub-pixel at its centre; moving the image by (0.5 - jitter)
+      // sub-pixels makes that centre see the point `jitter` from the cell's corner instead.
+      const glm::vec2 shift_ndc = 2.0f * (glm::vec2(0.5f) - pass.jitter) / glm::vec2(high_size);
+      const glm::mat4 projection = glm::translate(glm::mat4(1.0f), glm::vec3(shift_ndc, 0.0f)) *
+                                   camera.tile_projection_matrix(film, origin, size);
+      high.bind_and_clear(high_size.x, high_size.y);
+      renderer_.draw_view(kReferenceModule, {}, camera, projection, {high_size.x, high_size.y, k, 0},
+                          {origin.x * k, gl_y * k, pass.light_samples, static_cast<int>(pass.seed & 0x7fffffffu)});
+
+      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+      glUseProgram(downsample);
+      glBindImageTexture(0, high.total(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+      glBindImageTexture(1, high.specular(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+      glBindImageTexture(2, out_total.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+      glBindImageTexture(3, out_specular.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+      glProgramUniform1i(downsample, glGetUniformLocation(downsample, "uSubpixels"), k);
+      glProgramUniform2i(downsample, glGetUniformLocation(downsample, "uTileSize"), size.x, size.y);
+      glProgramUniform2i(downsample, glGetUniformLocation(downsample, "uOutOrigin"), origin.x, gl_y);
+      glDispatchCompute(static_cast<GLuint>((size.x + 7) / 8), static_cast<GLuint>((size.y + 7) / 8), 1);
+      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+      glFinish();  // one tile at a time keeps progress honest and the driver's queue short
+      check_gl("rendering a reference tile");
+      if (progress) progress(++done, tiles_x * tiles_y);
+    }
+  return {RenderTarget::read(out_total.id(), width, height), RenderTarget::read(out_specular.id(), width, height)};
+}
+
+}  // namespace glintlab

@@ -1,0 +1,27 @@
+#pragma once
+// The `raster` reference backend: the forward renderer with passes/reference.glsl in the method
+// slot, at k x k sub-pixels per pixel in tiles, box-filtered down to the film. Each sub-pixel
+// evaluates the surface itself (normal maps at their base level) and integrates every light with
+// extent by multiple importance sampling (docs/methods.md, "Ground truth").
+#include "render/reference_backend.hpp"
+
+namespace glintlab {
+
+class RasterReference final : public ReferenceBackend {
+ public:
+  explicit RasterReference(const ReferenceBackendContext& context);
+
+  [[nodiscard]] std::string id() const override { return "raster"; }
+  /// Hash of the full GLSL text of every program this backend runs on the scene (each material's
+  /// variant, the emitters, the downsampling): editing a method's module leaves it unchanged.
+  [[nodiscard]] std::uint64_t estimator_hash() const override;
+  Frame render_pass(const Camera& camera, int width, int height, const ReferencePass& pass,
+                    const ProgressFn& progress = {}) override;
+
+ private:
+  ShaderLibrary& shaders_;
+  const GpuScene& scene_;
+  Renderer& renderer_;
+};
+
+}  // namespace glintlab

@@ -1,0 +1,90 @@
+#include "render/reference_backend.hpp"
+
+#include <algorithm>
+
+#include "core/error.hpp"
+#include "render/raster_reference.hpp"
+
+namespace glintlab {
+
+int ReferenceSettings::subpixels() const {
+  for (int k = 32; k > 1; --k)
+    if (spp % (k * k) == 0 && 4 * k * k <= spp) return k;
+  return 1;
+}
+
+int ReferenceSettings::effective_light_samples() const {
+  return light_samples > 0 ? light_samples : std::max(1, (256 + spp - 1) / spp);
+}
+
+void validate_spp(int spp) {
+  if (spp < 1 || spp > kMaxReferenceSpp)
+    throw InputError("--spp " + std::to_string(spp) + ": allowed: 1 .. " + std::to_string(kMaxReferenceSpp) +
+                     " samples per pixel (best 4 k^2: 64, 256, 1024, 4096)");
+}
+
+namespace {
+
+/// A well-mixed 32-bit hash (the finaliser of MurmurHash3) for per-pass seeds and jitter.
+std::uint32_t mix32(std::uint32_t x) {
+  x ^= x >> 16;
+  x *= 0x85ebca6bu;
+  x ^= x >> 13;
+  x *= 0xc2b2ae35u;
+  x ^= x >> 16;
+  return x;
+}
+
+float unit_float(std::uint32_t x) { return static_cast<float>(x >> 8) * (1.0f / 16777216.0f); }
+
+}  // namespace
+
+std::uint32_t reference_pass_seed(int frame_seed, int pass) {
+  return mix32(static_cast<std::uint32_t>(frame_seed) * 0x9e3779b9u ^ mix32(static_cast<std::uint32_t>(pass) + 1u));
+}
+
+glm::vec2 reference_pass_jitter(int frame_seed, int pass) {
+  const std::uint32_t h = mix32(reference_pass_seed(frame_seed, pass) ^ 0x6a09e667u);
+  return {unit_float(h), unit_float(mix32(h))};
+}
+
+ReferencePass ReferencePass::of(const ReferenceSettings& settings, int index) {
+  return {settings.subpixels(), settings.effective_light_samples(), reference_pass_seed(settings.seed, index),
+          reference_pass_jitter(settings.seed, index)};
+}
+
+ReferenceFrame render_reference(ReferenceBackend& backend, const Camera& camera, int width, int height,
+                                const ReferenceSettings& settings, const ProgressFn& progress) {
+  validate_spp(settings.spp);
+  const int k = settings.subpixels(), passes = settings.passes();
+  ReferenceAccumulator accumulator(width, height, k * k);
+  for (int p = 0; p < passes; ++p)
+    accumulator.add_pass(backend.render_pass(camera, width, height, ReferencePass::of(settings, p), [&](int done, int total) {
+      if (progress) progress(p * total + done, passes * total);
+    }));
+  return accumulator.result();
+}
+
+const std::vector<ReferenceBackendEntry>& reference_backends() {
+  static const std::vector<ReferenceBackendEntry> entries = {
+      {"raster",
+       "the forward renderer at k x k jittered sub-pixels per pixel, unfiltered textures, lights with extent by MIS",
+       [](const ReferenceBackendContext& c) { return std::make_unique<RasterReference>(c); }},
+  };
+  return entries;
+}
+
+const ReferenceBackendEntry& find_reference_backend(const std::string& id) {
+  std::string known;
+  for (const auto& e : reference_backends()) {
+    if (e.id == id) return e;
+    known += (known.empty() ? "" : ", ") + e.id;
+  }
+  throw InputError("--reference-backend " + id + ": unknown backend; allowed: " + known);
+}
+
+std::unique_ptr<ReferenceBackend> make_reference_backend(const std::string& id, const ReferenceBackendContext& context) {
+  return find_reference_backend(id).create(context);
+}
+
+}  // namespace glintlab

@@ -1,0 +1,95 @@
+#pragma once
+// Ground truth behind one interface. A reference backend renders independent passes of jittered
+// sub-pixels of the scene as it is (no filtered textures); render_reference() averages them into a
+// ReferenceFrame with its own error. Backends are chosen by id (`--reference-backend`), and the id
+// is part of every reference cache key, so two backends never share a cached frame.
+// Adding a backend: docs/extending.md, "A ground-truth backend".
+#include <cstdint>
+#include <functional>
+#include <glm/vec2.hpp>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "render/reference_estimate.hpp"
+#include "scene/camera.hpp"
+
+namespace glintlab {
+
+class GpuScene;
+class Renderer;
+class ShaderLibrary;
+
+/// How a reference is sampled: `spp` samples per pixel in all, rendered as passes() independent
+/// passes of k x k jittered sub-pixels (k = subpixels()).
+struct ReferenceSettings {
+  int spp = 64;            ///< passes x k x k; see subpixels()
+  int light_samples = 0;   ///< per sub-pixel and light with extent; 0: max(1, ceil(256 / spp))
+  int seed = 0;            ///< decorrelates frames of an animation
+  /// k: the largest k <= 32 with k * k dividing spp and at most spp / 4 (so that there are at
+  /// least four passes to estimate the reference's own error from), or 1.
+  [[nodiscard]] int subpixels() const;
+  [[nodiscard]] int passes() const { return spp / (subpixels() * subpixels()); }
+  [[nodiscard]] int effective_light_samples() const;
+};
+
+constexpr int kMaxReferenceSpp = 65536;
+/// Throws InputError unless spp is in 1 .. kMaxReferenceSpp.
+void validate_spp(int spp);
+/// The sample seed and the sub-pixel jitter in [0, 1)^2 of one pass of a frame's reference.
+std::uint32_t reference_pass_seed(int frame_seed, int pass);
+glm::vec2 reference_pass_jitter(int frame_seed, int pass);
+
+/// One pass: k x k sub-pixels per pixel, every sub-pixel moved by the same `jitter` in [0, 1)^2
+/// sub-pixels from its cell's corner; `seed` selects the pass's light and BRDF samples.
+struct ReferencePass {
+  int subpixels = 1;
+  int light_samples = 1;
+  std::uint32_t seed = 0;
+  glm::vec2 jitter{0.5f};
+
+  /// Pass `index` of a frame's reference sampled with `settings`.
+  static ReferencePass of(const ReferenceSettings& settings, int index);
+};
+
+/// Called as work is done: (units done, units total).
+using ProgressFn = std::function<void(int, int)>;
+
+class ReferenceBackend {
+ public:
+  virtual ~ReferenceBackend() = default;
+  /// The backend's id, as `--reference-backend` takes it; part of every reference cache key.
+  [[nodiscard]] virtual std::string id() const = 0;
+  /// Hash of the estimator's own code on this scene (its programs' full text, or a version):
+  /// a cached reference is reused only while it is unchanged.
+  [[nodiscard]] virtual std::uint64_t estimator_hash() const = 0;
+  /// One pass of the scene seen by `camera` on a width x height film; i.i.d. across seeds.
+  virtual Frame render_pass(const Camera& camera, int width, int height, const ReferencePass& pass,
+                            const ProgressFn& progress = {}) = 0;
+};
+
+/// Ground truth (docs/methods.md, "Ground truth"): settings.passes() passes of `backend`, their
+/// mean and standard error.
+ReferenceFrame render_reference(ReferenceBackend& backend, const Camera& camera, int width, int height,
+                                const ReferenceSettings& settings, const ProgressFn& progress = {});
+
+/// What a backend is built from: the scene on the GPU and the renderer sharing its programs.
+struct ReferenceBackendContext {
+  ShaderLibrary& shaders;
+  const GpuScene& scene;
+  Renderer& renderer;
+};
+
+/// The registered backends, in the order `glintlab` lists them (the first is the default).
+struct ReferenceBackendEntry {
+  std::string id;
+  std::string description;
+  std::function<std::unique_ptr<ReferenceBackend>(const ReferenceBackendContext&)> create;
+};
+const std::vector<ReferenceBackendEntry>& reference_backends();
+/// The entry of backend `id`; throws InputError naming the id and the registered ones.
+const ReferenceBackendEntry& find_reference_backend(const std::string& id);
+/// find_reference_backend(id).create(context).
+std::unique_ptr<ReferenceBackend> make_reference_backend(const std::string& id, const ReferenceBackendContext& context);
+
+}  // namespace glintlab

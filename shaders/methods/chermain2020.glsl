@@ -3,8 +3,6 @@
 // as by `conventional`. Descriptor: src/shading/methods/chermain2020.cpp; docs/methods.md#chermain2020.
 #include "common/glint_shading.glsl"
 
-uniform float param_lean;
-
 #if MATERIAL_GLINTS
 GlintSurface gGlint;
 #endif

@@ -4,10 +4,6 @@
 // Descriptor: src/shading/methods/chermain2021.cpp; docs/methods.md#chermain2021.
 #include "common/glint_shading.glsl"
 
-uniform float param_lean;
-uniform float param_kernel;       // s_K
-uniform float param_derivatives;  // 0: projected half vectors (eq. 21), 1: half slopes (eq. 20)
-
 #if MATERIAL_GLINTS
 GlintSurface gGlint;
 #endif

@@ -4,8 +4,6 @@
 #include "common/footprint_filtering.glsl"
 #include "common/lobe_shading.glsl"
 
-uniform float param_fp_max;
-
 void prepareSurface(inout Surface s) {}
 
 Radiance shadeLight(Surface s, LightData L) {

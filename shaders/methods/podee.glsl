@@ -8,14 +8,6 @@
 #include "common/reflection_space_shading.glsl"
 #include "common/slope_moments.glsl"
 
-uniform float param_corners;  // 0: interpolated (exact), 1: from derivatives
-uniform float param_origin;   // 0: rays from the corners' surface points, 1: from the centre (the paper)
-uniform float param_area;     // 0: exact, 1: light as a circle, 2: light and reflection space as circles
-uniform float param_glossy;   // 1: the lobe extension; 0: every material shaded as a mirror (the paper)
-uniform float param_lobe;     // 0: the material's lobe; 1: widened by the normal map's slope
-                              // covariance inside the pixel (LEAN), the variation the corners miss
-uniform float param_corner_lod;  // mip levels finer than the centre's at which corners read the map
-
 CornerRays gCorners;  // this pixel's corner rays, set by prepareSurface
 Lobe gLobe;           // this pixel's lobe, set by prepareSurface
 

@@ -3,9 +3,6 @@
 #include "common/footprint_filtering.glsl"
 #include "common/lobe_shading.glsl"
 
-uniform float param_sigma2;
-uniform float param_kappa;
-
 void prepareSurface(inout Surface s) {}
 
 Radiance shadeLight(Surface s, LightData L) {

@@ -3,9 +3,6 @@
 #include "common/lobe_shading.glsl"
 #include "common/roughness_filtering.glsl"
 
-uniform float param_scale;
-uniform float param_exponent;
-
 void prepareSurface(inout Surface s) { s.alpha = vlachosAlpha(s.alpha, s.dNdx, s.dNdy, param_scale, param_exponent); }
 
 Radiance shadeLight(Surface s, LightData L) { return shadeLobe(s, L, materialLobe(s)); }

@@ -12,6 +12,7 @@
 #include "eval/session.hpp"
 #include "scene/scene_loader.hpp"
 #include "render/reference_cache.hpp"
+#include "shading/method_reference.hpp"
 #include "shading/registry.hpp"
 
 namespace glintlab {
@@ -161,7 +162,10 @@ int run_cli(int argc, char** argv) {
   bench->add_option("--warmup", bench_warmup, "untimed frames first")->default_str("3")->check(CLI::Range(0, 1000));
   bench->add_option("-o,--out", bench_o.out, "also write bench.json into this directory");
 
-  app.add_subcommand("methods", "list every method with its parameters, defaults and ranges");
+  auto* methods_cmd = app.add_subcommand("methods", "list every method with its parameters, defaults and ranges");
+  bool methods_markdown = false;
+  methods_cmd->add_flag("--markdown", methods_markdown,
+                        "print the method reference of docs/methods.md (see tools/update-method-reference.sh)");
   auto* scenes = app.add_subcommand("scenes", "list the built-in scenes");
   std::string print_scene;
   scenes->add_option("--print", print_scene, "print a built-in scene's TOML (a template for your own)");
@@ -176,7 +180,8 @@ int run_cli(int argc, char** argv) {
 
   try {
     if (app.got_subcommand("methods")) {
-      print_methods();
+      if (methods_markdown) std::cout << method_reference_markdown(all_methods());
+      else print_methods();
     } else if (app.got_subcommand("scenes")) {
       if (!print_scene.empty()) {
         std::cout << builtin_scene_toml(print_scene);

@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "gl/context.hpp"
+#include "shading/method_module.hpp"
 
 namespace glintlab {
 
@@ -44,6 +45,13 @@ MaterialVariant material_variant(const GpuScene& scene, int material) {
   return {scene.normal_map(material) != 0, scene.glinty(material)};
 }
 
+std::string method_program_module(ShaderLibrary& shaders, const MethodDescriptor& method) {
+  const std::string path = generated_module_path(method);
+  if (!shaders.exists(path))
+    shaders.add_source(path, generated_module_source(method, shaders.source(method.module_path())));
+  return path;
+}
+
 GLuint Renderer::forward_program(const std::string& module, int material) {
   const MaterialVariant variant = material_variant(scene_, material);
   GLuint& program = forward_programs_[{module, variant}];
@@ -69,6 +77,8 @@ void Renderer::draw_scene(const std::string& module, const ParamValues& params, 
       program = variant;
       glUseProgram(program);
       for (const auto& [name, value] : params) {
+        // Every parameter is read by the module (method_program_module checked), but a variant
+        // may not use it (a glint parameter on a material without glints): then it has no location.
         const GLint loc = glGetUniformLocation(program, ("param_" + name).c_str());
         if (loc >= 0) glProgramUniform1f(program, loc, value);
       }
@@ -112,7 +122,7 @@ Renderer::FrameUniforms Renderer::frame_uniforms(const Camera& camera, const glm
 }
 
 void Renderer::draw(const MethodDescriptor& method, const ParamValues& params, const Camera& camera, int width, int height) {
-  draw_module(method.module_path(), params, camera, width, height);
+  draw_module(method_program_module(shaders_, method), params, camera, width, height);
 }
 
 void Renderer::draw_module(const std::string& module, const ParamValues& params, const Camera& camera, int width,
@@ -130,7 +140,7 @@ void Renderer::draw_view(const std::string& module, const ParamValues& params, c
 }
 
 Frame Renderer::render(const MethodDescriptor& method, const ParamValues& params, const Camera& camera, int width, int height) {
-  return render_module(method.module_path(), params, camera, width, height);
+  return render_module(method_program_module(shaders_, method), params, camera, width, height);
 }
 
 Frame Renderer::render_module(const std::string& module, const ParamValues& params, const Camera& camera, int width,

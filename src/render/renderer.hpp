@@ -31,6 +31,12 @@ inline constexpr const char* kReferenceModule = "passes/reference.glsl";
 /// the material's variant.
 ShaderDefines forward_variant(const std::string& module, const LightRanges& light_ranges, MaterialVariant material);
 
+/// The module a method's forward program includes in the $METHOD slot: its parameter uniforms,
+/// generated from the descriptor, then shaders/methods/<id>.glsl (shading/method_module.hpp).
+/// Checks the module's parameters and adds the generated source to `shaders` on first use; throws
+/// RuntimeFailure naming the method, the parameter and the module's file.
+std::string method_program_module(ShaderLibrary& shaders, const MethodDescriptor& method);
+
 class Renderer {
  public:
   Renderer(ShaderLibrary& shaders, const GpuScene& scene);

@@ -7,7 +7,8 @@
 
 namespace glintlab {
 
-/// A float parameter of a method; set in GLSL as the uniform `param_<name>`. A parameter with
+/// A float parameter of a method; the module reads it as the uniform `param_<name>`, declared for
+/// it from this declaration (shading/method_module.hpp). A parameter with
 /// `choices` is an enumeration: it takes a choice's name (or its index), and the shader sees the
 /// index; min and max are then 0 and choices.size() - 1.
 struct ParamDecl {

@@ -1,31 +1,91 @@
 #include "shading/registry.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/error.hpp"
 
 namespace glintlab {
 
-MethodDescriptor conventional_method();
-MethodDescriptor toksvig_method();
-MethodDescriptor vlachos_method();
-MethodDescriptor kaplanyan_beckmann_method();
-MethodDescriptor kaplanyan_rect_method();
-MethodDescriptor kaplanyan_ggx_method();
-MethodDescriptor tokuyoshi_method();
-MethodDescriptor lean_method();
-MethodDescriptor podee_method();
-MethodDescriptor chermain2020_method();
-MethodDescriptor chermain2021_method();
+namespace {
+
+std::vector<MethodRegistration>& registrations() {
+  static std::vector<MethodRegistration> list;  // function-local: filled during static initialisation
+  return list;
+}
+
+bool registry_read = false;  // set by all_methods(); its vector must not change once handed out
+
+std::string file_name(const char* path) { return std::filesystem::path(path).filename().string(); }
+
+bool lower_alnum(char c) {
+  return std::islower(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c));
+}
+bool identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+bool is_identifier(const std::string& name) {
+  if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0]))) return false;
+  return std::all_of(name.begin(), name.end(), identifier_char);
+}
+
+/// The id names the module's file and is the key of `--param id.name`; a parameter becomes the
+/// GLSL uniform `param_<name>`.
+void check_declaration(const MethodDescriptor& m, const char* file) {
+  const std::string where = "method '" + m.id + "' (" + file_name(file) + ")";
+  const auto id_char = [](char c) { return lower_alnum(c) || c == '-' || c == '_'; };
+  if (m.id.empty() || !std::all_of(m.id.begin(), m.id.end(), id_char))
+    throw std::logic_error(where + ": a method id is one or more of a-z, 0-9, '-' and '_'");
+  for (std::size_t i = 0; i < m.params.size(); ++i) {
+    const ParamDecl& p = m.params[i];
+    if (!is_identifier(p.name))
+      throw std::logic_error(where + ": parameter name '" + p.name +
+                             "' is not a GLSL identifier ([A-Za-z_][A-Za-z0-9_]*)");
+    for (std::size_t j = 0; j < i; ++j)
+      if (m.params[j].name == p.name) throw std::logic_error(where + ": parameter '" + p.name + "' is declared twice");
+    if (!(p.min <= p.default_value && p.default_value <= p.max))
+      throw std::logic_error(where + ": parameter '" + p.name + "' has its default outside " + p.allowed());
+  }
+}
+
+}  // namespace
+
+bool register_method(const MethodRegistration& registration) {
+  if (registry_read)
+    throw std::logic_error(std::string("method registered by ") + file_name(registration.source_file) +
+                           " after the registry was read; register at namespace scope with GLINTLAB_REGISTER_METHOD");
+  registrations().push_back(registration);
+  return true;
+}
+
+std::vector<MethodDescriptor> ordered_methods(const std::vector<MethodRegistration>& registrations) {
+  std::vector<MethodRegistration> sorted = registrations;
+  std::stable_sort(sorted.begin(), sorted.end(),
+                   [](const auto& a, const auto& b) { return a.listing_key < b.listing_key; });
+  std::vector<MethodDescriptor> methods;
+  for (std::size_t i = 0; i < sorted.size(); ++i) {
+    methods.push_back(sorted[i].make());
+    const MethodDescriptor& m = methods.back();
+    check_declaration(m, sorted[i].source_file);
+    for (std::size_t j = 0; j < i; ++j) {
+      const std::string both = file_name(sorted[j].source_file) + " and " + file_name(sorted[i].source_file);
+      if (methods[j].id == m.id) throw std::logic_error("method id '" + m.id + "' is registered twice, by " + both);
+      if (sorted[j].listing_key == sorted[i].listing_key)
+        throw std::logic_error("methods '" + methods[j].id + "' and '" + m.id + "' share the listing key " +
+                               std::to_string(sorted[i].listing_key) + " (" + both + "); give each its own");
+    }
+  }
+  return methods;
+}
 
 const std::vector<MethodDescriptor>& all_methods() {
-  static const std::vector<MethodDescriptor> methods = {
-      conventional_method(),       toksvig_method(),     vlachos_method(),   kaplanyan_beckmann_method(),
-      kaplanyan_rect_method(),     kaplanyan_ggx_method(), tokuyoshi_method(), lean_method(),
-      podee_method(),              chermain2020_method(), chermain2021_method(),
-  };
+  static const std::vector<MethodDescriptor> methods = [] {
+    registry_read = true;
+    return ordered_methods(registrations());
+  }();
   return methods;
 }
 

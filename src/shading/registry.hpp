@@ -1,6 +1,10 @@
 #pragma once
-// The method registry, by id. Adding a method: write shaders/methods/<id>.glsl, a descriptor in
-// src/shading/methods/<id>.cpp, and one line in registry.cpp.
+// The method registry, by id. Adding a method is two files, its module and its descriptor:
+//   shaders/methods/<id>.glsl        prepareSurface and shadeLight, reading its `param_<name>`s;
+//   src/shading/methods/<id>.cpp     the MethodDescriptor, ending in GLINTLAB_REGISTER_METHOD.
+// CMake collects src/shading/methods/*.cpp and links them whole (nothing else refers to them);
+// the `uniform float param_<name>;` lines are generated from the descriptor's ParamDecls when the
+// method's program is built (shading/method_module.hpp). How-to: docs/extending.md.
 #include <string>
 #include <vector>
 
@@ -8,7 +12,26 @@
 
 namespace glintlab {
 
-/// All methods, in the order they are listed and compared.
+/// One registered descriptor: how to make it, where it is listed, where it was registered.
+struct MethodRegistration {
+  MethodDescriptor (*make)();
+  /// all_methods() lists methods by ascending key (a declared order, never link order); keys are
+  /// spaced so that a method can join its family: see the table in docs/extending.md.
+  int listing_key;
+  const char* source_file;  ///< the descriptor's file, for error messages
+};
+
+/// Adds a method to the registry; GLINTLAB_REGISTER_METHOD calls it during static initialisation.
+/// Throws std::logic_error once the registry has been read.
+bool register_method(const MethodRegistration& registration);
+
+/// The descriptors of `registrations` by ascending listing key. Throws std::logic_error naming
+/// both files for a repeated id or listing key, and naming the method for an invalid declaration:
+/// an id other than a-z, 0-9, '-' and '_'; a parameter name that is not a GLSL identifier, is
+/// repeated, or whose default is outside its range.
+std::vector<MethodDescriptor> ordered_methods(const std::vector<MethodRegistration>& registrations);
+
+/// All methods, in the order they are listed and compared (by listing key).
 const std::vector<MethodDescriptor>& all_methods();
 /// Throws InputError for an unknown id, listing the known ones.
 const MethodDescriptor& find_method(const std::string& id);
@@ -16,3 +39,8 @@ const MethodDescriptor& find_method(const std::string& id);
 std::vector<const MethodDescriptor*> parse_method_list(const std::string& list);
 
 }  // namespace glintlab
+
+/// Registers the descriptor that `make` (a function returning a MethodDescriptor) builds, listed
+/// at `listing_key`. Write it once, at namespace scope after `make`, in the descriptor's file.
+#define GLINTLAB_REGISTER_METHOD(make, listing_key) \
+  [[maybe_unused]] static const bool registered_##make = ::glintlab::register_method({&make, listing_key, __FILE__})

@@ -24,7 +24,7 @@ TEST(Shaders, EveryMethodAndPassCompiles) {
   std::vector<std::string> modules{"passes/reference.glsl", "passes/unshaded.glsl"};
   for (const auto& m : all_methods()) {
     EXPECT_TRUE(shaders().exists(m.module_path())) << m.id;
-    modules.push_back(m.module_path());
+    modules.push_back(method_program_module(shaders(), m));
   }
   for (const auto& module : modules)
     for (bool normal_map : {false, true})

@@ -1,5 +1,6 @@
 // Descriptor of `chermain2020`: the procedural glinty BRDF (Chermain et al. 2020).
 #include "shading/methods/shared_params.hpp"
+#include "shading/registry.hpp"
 
 namespace glintlab {
 
@@ -18,5 +19,7 @@ MethodDescriptor chermain2020_method() {
       .tables = {"glint dictionary: 192 marginals x 16 levels x 64 texels, RGB16F 1D array (generated, cached)"},
   };
 }
+
+GLINTLAB_REGISTER_METHOD(chermain2020_method, 800);
 
 }  // namespace glintlab

@@ -1,6 +1,7 @@
 // Descriptor of `chermain2021`: geometric glint anti-aliasing and slope correlation
 // (Chermain et al. 2021) on the glinty BRDF of 2020.
 #include "shading/methods/shared_params.hpp"
+#include "shading/registry.hpp"
 
 namespace glintlab {
 
@@ -28,5 +29,7 @@ MethodDescriptor chermain2021_method() {
                  "(generated, cached)"},
   };
 }
+
+GLINTLAB_REGISTER_METHOD(chermain2021_method, 810);
 
 }  // namespace glintlab

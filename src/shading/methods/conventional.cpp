@@ -1,5 +1,6 @@
 // Descriptor of `conventional`: shading evaluated once at the pixel centre (the baseline).
 #include "shading/methods/shared_params.hpp"
+#include "shading/registry.hpp"
 
 namespace glintlab {
 
@@ -17,5 +18,7 @@ MethodDescriptor conventional_method() {
       .tables = {},
   };
 }
+
+GLINTLAB_REGISTER_METHOD(conventional_method, 100);
 
 }  // namespace glintlab

@@ -1,5 +1,6 @@
 // Descriptor of `kaplanyan-beckmann` (Kaplanyan, Hill, Patney, Lefohn 2016).
 #include "shading/methods/shared_params.hpp"
+#include "shading/registry.hpp"
 
 namespace glintlab {
 
@@ -13,5 +14,7 @@ MethodDescriptor kaplanyan_beckmann_method() {
       .tables = {},
   };
 }
+
+GLINTLAB_REGISTER_METHOD(kaplanyan_beckmann_method, 400);
 
 }  // namespace glintlab

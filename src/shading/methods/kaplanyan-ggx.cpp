@@ -1,5 +1,6 @@
 // Descriptor of `kaplanyan-ggx` (Kaplanyan, Hill, Patney, Lefohn 2016).
 #include "shading/methods/shared_params.hpp"
+#include "shading/registry.hpp"
 
 namespace glintlab {
 
@@ -13,5 +14,7 @@ MethodDescriptor kaplanyan_ggx_method() {
       .tables = {},
   };
 }
+
+GLINTLAB_REGISTER_METHOD(kaplanyan_ggx_method, 420);
 
 }  // namespace glintlab

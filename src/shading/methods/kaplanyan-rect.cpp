@@ -1,5 +1,6 @@
 // Descriptor of `kaplanyan-rect` (Kaplanyan, Hill, Patney, Lefohn 2016).
 #include "shading/methods/shared_params.hpp"
+#include "shading/registry.hpp"
 
 namespace glintlab {
 
@@ -13,5 +14,7 @@ MethodDescriptor kaplanyan_rect_method() {
       .tables = {},
   };
 }
+
+GLINTLAB_REGISTER_METHOD(kaplanyan_rect_method, 410);
 
 }  // namespace glintlab

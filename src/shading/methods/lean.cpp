@@ -1,5 +1,6 @@
 // Descriptor of `lean`: LEAN mapping (Olano & Baker 2010).
 #include "shading/methods/shared_params.hpp"
+#include "shading/registry.hpp"
 
 namespace glintlab {
 
@@ -16,5 +17,7 @@ MethodDescriptor lean_method() {
       .tables = {"slope moments of the material's normal map (RGBA32F + R32F, full mip chain)"},
   };
 }
+
+GLINTLAB_REGISTER_METHOD(lean_method, 600);
 
 }  // namespace glintlab

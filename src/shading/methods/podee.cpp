@@ -1,6 +1,7 @@
 // Descriptor of `podee`: micro-specular highlights by reflection-vector selection and
 // area-fraction weighting (Podee, Max, Iwasaki, Dobashi), with glintlab's extensions.
 #include "shading/methods/shared_params.hpp"
+#include "shading/registry.hpp"
 
 namespace glintlab {
 
@@ -45,5 +46,7 @@ MethodDescriptor podee_method() {
       .tables = {},
   };
 }
+
+GLINTLAB_REGISTER_METHOD(podee_method, 700);
 
 }  // namespace glintlab

@@ -1,5 +1,6 @@
 // Descriptor of `toksvig`: roughness from the length of the mip-filtered normal (Toksvig 2005).
 #include "shading/methods/shared_params.hpp"
+#include "shading/registry.hpp"
 
 namespace glintlab {
 
@@ -16,5 +17,7 @@ MethodDescriptor toksvig_method() {
       .tables = {"the material's normal map, mipmapped without renormalisation"},
   };
 }
+
+GLINTLAB_REGISTER_METHOD(toksvig_method, 200);
 
 }  // namespace glintlab

@@ -1,5 +1,6 @@
 // Descriptor of `tokuyoshi`: projected-space NDF filtering (Tokuyoshi & Kaplanyan 2019, 2021).
 #include "shading/methods/shared_params.hpp"
+#include "shading/registry.hpp"
 
 namespace glintlab {
 
@@ -21,5 +22,7 @@ MethodDescriptor tokuyoshi_method() {
       .tables = {},
   };
 }
+
+GLINTLAB_REGISTER_METHOD(tokuyoshi_method, 500);
 
 }  // namespace glintlab

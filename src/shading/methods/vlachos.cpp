@@ -1,5 +1,6 @@
 // Descriptor of `vlachos`: roughness floor from the normal's screen-space change (Vlachos 2015).
 #include "shading/methods/shared_params.hpp"
+#include "shading/registry.hpp"
 
 namespace glintlab {
 
@@ -16,5 +17,7 @@ MethodDescriptor vlachos_method() {
       .tables = {},
   };
 }
+
+GLINTLAB_REGISTER_METHOD(vlachos_method, 300);
 
 }  // namespace glintlab

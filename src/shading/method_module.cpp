@@ -1,0 +1,94 @@
+#include "shading/method_module.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <set>
+
+#include "core/error.hpp"
+
+namespace glintlab {
+
+namespace {
+
+constexpr const char* kParamPrefix = "param_";
+
+/// The text with // and /* */ comments blanked, so that a parameter named only in a comment does
+/// not count as read.
+std::string without_comments(const std::string& text) {
+  std::string out = text;
+  for (std::size_t i = 0; i + 1 < out.size(); ++i) {
+    if (out[i] == '/' && out[i + 1] == '/') {
+      while (i < out.size() && out[i] != '\n') out[i++] = ' ';
+    } else if (out[i] == '/' && out[i + 1] == '*') {
+      const std::size_t end = out.find("*/", i + 2);
+      const std::size_t stop = end == std::string::npos ? out.size() : end + 2;
+      for (; i < stop; ++i)
+        if (out[i] != '\n') out[i] = ' ';
+      --i;
+    }
+  }
+  return out;
+}
+
+bool identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+struct ParamUses {
+  std::set<std::string> read;      ///< names of every `param_<name>` in the text
+  std::set<std::string> declared;  ///< names the text declares itself (`uniform <type> param_<name>`)
+};
+
+ParamUses param_uses(const std::string& source) {
+  const std::string text = without_comments(source);
+  ParamUses uses;
+  std::string previous[2];  // the two identifiers before the current one
+  for (std::size_t i = 0; i < text.size();) {
+    if (!identifier_char(text[i])) {
+      if (!std::isspace(static_cast<unsigned char>(text[i]))) previous[0] = previous[1] = "";
+      ++i;
+      continue;
+    }
+    std::size_t end = i;
+    while (end < text.size() && identifier_char(text[end])) ++end;
+    const std::string word = text.substr(i, end - i);
+    if (word.starts_with(kParamPrefix) && word.size() > std::string(kParamPrefix).size()) {
+      const std::string name = word.substr(std::string(kParamPrefix).size());
+      uses.read.insert(name);
+      if (previous[0] == "uniform") uses.declared.insert(name);
+    }
+    previous[0] = previous[1];
+    previous[1] = word;
+    i = end;
+  }
+  return uses;
+}
+
+}  // namespace
+
+std::string generated_module_path(const MethodDescriptor& method) { return "generated/methods/" + method.id + ".glsl"; }
+
+std::string generated_module_source(const MethodDescriptor& method, const std::string& module_source) {
+  const std::string where = "method '" + method.id + "': shaders/" + method.module_path();
+  const ParamUses uses = param_uses(module_source);
+  if (!uses.declared.empty())
+    throw RuntimeFailure(where + " declares the uniform param_" + *uses.declared.begin() +
+                         " itself; parameter uniforms are generated from the descriptor's ParamDecls: remove the "
+                         "declaration");
+  for (const ParamDecl& p : method.params)
+    if (!uses.read.contains(p.name))
+      throw RuntimeFailure(where + " never reads parameter '" + p.name + "' (param_" + p.name +
+                           ") that its descriptor declares; use it in the module or remove the declaration");
+  for (const std::string& name : uses.read)
+    if (!method.find_param(name)) {
+      std::string known;
+      for (const ParamDecl& p : method.params) known += (known.empty() ? "" : ", ") + p.name;
+      throw RuntimeFailure(where + " reads param_" + name + ", but its descriptor declares no parameter '" + name +
+                           "' (declared: " + (known.empty() ? "none" : known) + ")");
+    }
+
+  std::string out = "// Generated from the descriptor of method '" + method.id +
+                    "' (shading/method_module.hpp): its parameters, then its module.\n";
+  for (const ParamDecl& p : method.params) out += "uniform float " + std::string(kParamPrefix) + p.name + ";\n";
+  return out + "#include \"" + method.module_path() + "\"\n";
+}
+
+}  // namespace glintlab

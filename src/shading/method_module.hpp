@@ -1,0 +1,21 @@
+#pragma once
+// A method's parameter uniforms, generated from its descriptor: the forward program includes
+// generated/methods/<id>.glsl, which declares `uniform float param_<name>;` for every ParamDecl
+// and then includes the module, shaders/methods/<id>.glsl. Modules never declare them.
+#include <string>
+
+#include "shading/method.hpp"
+
+namespace glintlab {
+
+/// "generated/methods/<id>.glsl": the path the generated source is known by in the shader library.
+std::string generated_module_path(const MethodDescriptor& method);
+
+/// The generated source: one `uniform float param_<name>;` per declared parameter, then
+/// `#include` of the module. `module_source` is the module's own text (not its includes), checked
+/// first; throws RuntimeFailure naming the method, the parameter and the module's file when the
+/// module never reads a declared parameter (whatever the optimiser keeps of it in a variant),
+/// reads a `param_` identifier its descriptor does not declare, or declares one itself.
+std::string generated_module_source(const MethodDescriptor& method, const std::string& module_source);
+
+}  // namespace glintlab

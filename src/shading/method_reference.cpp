@@ -1,0 +1,46 @@
+#include "shading/method_reference.hpp"
+
+namespace glintlab {
+
+namespace {
+
+/// A table cell: '|' would end it.
+std::string cell(const std::string& text) {
+  std::string out;
+  for (char c : text) out += c == '|' ? std::string("\\|") : std::string(1, c);
+  return out;
+}
+
+std::string parameters_markdown(const MethodDescriptor& m) {
+  if (m.params.empty()) return "Parameters: none.\n";
+  std::string out = "| parameter | default | allowed | description |\n| --- | --- | --- | --- |\n";
+  for (const ParamDecl& p : m.params)
+    out += "| `" + p.name + "` | `" + cell(p.default_text()) + "` | `" + cell(p.allowed()) + "` | " +
+           cell(p.description) + " |\n";
+  return out;
+}
+
+std::string tables_markdown(const MethodDescriptor& m) {
+  if (m.tables.empty()) return "Precomputed tables: none.\n";
+  std::string out = "Precomputed tables:\n\n";
+  for (const std::string& table : m.tables) out += "- " + table + "\n";
+  return out;
+}
+
+}  // namespace
+
+std::string method_reference_markdown(const std::vector<MethodDescriptor>& methods) {
+  std::string out = "\n";
+  for (const MethodDescriptor& m : methods) {
+    out += "### `" + m.id + "`: " + m.title + "\n\n";
+    out += m.summary + "\n\n";
+    out += "Source: " + m.citation + ".\n\n";
+    out += "Module `shaders/" + m.module_path() + "`, descriptor `src/shading/methods/" + m.id +
+           ".cpp`; derivation and tests: [" + m.id + "](#" + m.id + ").\n\n";
+    out += parameters_markdown(m) + "\n";
+    out += tables_markdown(m) + "\n";
+  }
+  return out;
+}
+
+}  // namespace glintlab

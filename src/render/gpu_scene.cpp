@@ -158,7 +158,12 @@ GpuScene::GpuScene(const Scene& scene, TableCache tables) : tables_(std::move(ta
     normal_maps_.push_back(m.normal_map ? upload_normal_map(*m.normal_map) : NormalMapTextures{});
     glinty_.push_back(m.glints.has_value());
   }
-  for (const auto& m : scene.materials) tables_.require(material_tables(m));
+  for (const auto& m : scene.materials)
+    for (const auto& id : material_tables(m))
+      if (std::find(material_table_ids_.begin(), material_table_ids_.end(), id) == material_table_ids_.end())
+        material_table_ids_.push_back(id);
+  std::sort(material_table_ids_.begin(), material_table_ids_.end());
+  tables_.require(material_table_ids_);
   materials.resize(kMaxMaterials);  // the uniform block's declared size
   materials_ = gl::make_buffer(static_cast<GLsizeiptr>(materials.size() * sizeof(MaterialGpu)), materials.data());
 

@@ -62,6 +62,9 @@ class GpuScene {
   /// (MethodDescriptor::tables) are added by require_tables, which the renderer calls before
   /// drawing with it. Residency is a cache of the scene's data, hence const.
   [[nodiscard]] const GpuTables& tables() const { return tables_; }
+  /// The ids of the tables the materials read (material_tables of each), sorted: what the
+  /// reference reads, so its cache key includes these tables' keys.
+  [[nodiscard]] const std::vector<std::string>& material_table_ids() const { return material_table_ids_; }
   void require_tables(std::span<const std::string> ids) const { tables_.require(ids); }
   /// The light buffer is sorted by kind; [x, y) is the index range of each kind.
   [[nodiscard]] const LightRanges& light_ranges() const { return light_ranges_; }
@@ -80,6 +83,7 @@ class GpuScene {
   std::vector<NormalMapTextures> normal_maps_;
   std::vector<bool> glinty_;
   mutable GpuTables tables_;
+  std::vector<std::string> material_table_ids_;
   gl::Buffer materials_;
   gl::Buffer lights_;
   LightRanges light_ranges_{};

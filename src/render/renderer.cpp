@@ -198,6 +198,8 @@ std::uint64_t Renderer::reference_program_hash() const {
   }
   h.text(shaders_.expand("passes/emitter.frag", {}));
   h.text(shaders_.expand("passes/downsample.comp", {}));
+  // The tables the reference reads: a new generator version or settings is a new reference.
+  for (const auto& id : scene_.material_table_ids()) h.value(table_key(find_table(id).source));
   return h.digest();
 }
 

@@ -68,8 +68,9 @@ class Renderer {
   ReferenceFrame render_reference(const Camera& camera, int width, int height, const ReferenceSettings& settings,
                                   const ProgressFn& progress = {});
   /// Hash of the full GLSL text of every program the reference runs on this scene (each material's
-  /// variant, the emitters, the downsampling): what reference cache keys depend on, so that editing
-  /// a method's module does not invalidate cached references.
+  /// variant, the emitters, the downsampling) and of the keys of the tables it reads: what
+  /// reference cache keys depend on, so that editing a method's module does not invalidate cached
+  /// references.
   [[nodiscard]] std::uint64_t reference_program_hash() const;
   /// One pass of the reference: k x k sub-pixels per pixel, rendered in tiles and box-filtered,
   /// every sub-pixel moved by the same `jitter` in [0, 1)^2 sub-pixels from its cell's corner;

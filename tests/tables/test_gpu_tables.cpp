@@ -134,8 +134,11 @@ position = [0, 2, 3]
 TEST(Tables, AGlintySceneHasTheDictionaryForEveryMethodAndTheReference) {
   SceneFixture glinty(kGlintyScene);
   EXPECT_NE(glinty.gpu->tables().texture("glint-dictionary"), 0u) << "glinty materials read it in any method";
+  EXPECT_EQ(glinty.gpu->material_table_ids(), std::vector<std::string>{"glint-dictionary"})
+      << "what the reference reads, in its cache key";
   SceneFixture plain(kPlainScene);
   EXPECT_EQ(plain.gpu->tables().texture("glint-dictionary"), 0u) << "nothing reads it: not built";
+  EXPECT_TRUE(plain.gpu->material_table_ids().empty());
 }
 
 TEST(Tables, AMethodsDeclaredTablesAreResidentWhenItDraws) {

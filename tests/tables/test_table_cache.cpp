@@ -108,7 +108,8 @@ void expect_regenerated_after(const std::function<void(const std::filesystem::pa
   TemporaryDirectory dir;
   CountingTable table;
   std::vector<std::string> warnings;
-  const TableCache cache(dir.path(), {.warning = [&](const TableSource&, const std::string& m) { warnings.push_back(m); }});
+  const TableCache cache(dir.path(),
+                         {.warning = [&](const TableSource&, const std::string& m) { warnings.push_back(m); }});
   const BuiltTable first = cache.load_or_generate(table.source());
   damage(cache.path(table.source()));
   const BuiltTable again = cache.load_or_generate(table.source());
@@ -122,8 +123,9 @@ void expect_regenerated_after(const std::function<void(const std::filesystem::pa
 }
 
 TEST(TableCache, ATruncatedOrCorruptEntryIsRegeneratedNotTrusted) {
-  expect_regenerated_after([](const auto& file) { std::filesystem::resize_file(file, std::filesystem::file_size(file) - 4); },
-                           "truncated by one value");
+  expect_regenerated_after(
+      [](const auto& file) { std::filesystem::resize_file(file, std::filesystem::file_size(file) - 4); },
+      "truncated by one value");
   expect_regenerated_after([](const auto& file) { std::filesystem::resize_file(file, 20); }, "truncated in the header");
   expect_regenerated_after(
       [](const auto& file) {

@@ -1,7 +1,8 @@
 # glintlab: the two set-up commands (README) and a few conveniences.
 #   make demo   install missing Debian packages, build (Release), compare every method on the default scene
 #   make test   install missing Debian packages, build (Release), run the whole suite through ctest
-.PHONY: all deps build demo test bench clean
+#   make bench-tables  time generating and loading each precomputed table (Google Benchmark; not in test)
+.PHONY: all deps build demo test bench bench-tables clean
 
 BUILD := build/release
 JOBS ?= $(shell nproc)
@@ -23,6 +24,9 @@ test: build
 
 bench: build
 	$(BUILD)/glintlab bench --scene builtin:spheres --methods all --width 1920 --height 1080
+
+bench-tables: build
+	$(BUILD)/benchmarks/bench_tables
 
 clean:
 	rm -rf build out

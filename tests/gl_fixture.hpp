@@ -13,6 +13,7 @@
 #include "render/gpu_scene.hpp"
 #include "render/reference_backend.hpp"
 #include "render/renderer.hpp"
+#include "render/tables/registry.hpp"
 #include "scene/scene_loader.hpp"
 #include "shading/registry.hpp"
 
@@ -29,11 +30,15 @@ inline ShaderLibrary& shaders() {
   return lib;
 }
 
+/// The precomputed tables' cache of the test binaries: in the build tree (never the user's cache
+/// directory), shared by the test processes (entries are written atomically).
+inline TableCache test_table_cache() { return TableCache(GLINTLAB_TEST_TABLE_CACHE); }
+
 /// A scene on the GPU with its renderer.
 struct SceneFixture {
   explicit SceneFixture(const std::string& toml) : scene(parse_scene(toml, "test.toml", ".")) {
     context();
-    gpu = std::make_unique<GpuScene>(scene);
+    gpu = std::make_unique<GpuScene>(scene, test_table_cache());
     renderer = std::make_unique<Renderer>(shaders(), *gpu);
     reference_backend = make_reference_backend("raster", {shaders(), *gpu, *renderer});
   }
@@ -63,7 +68,8 @@ struct SceneFixture {
 };
 
 /// Runs `body` (GLSL defining `vec4 evaluate(vec4 a, vec4 b)`, after `includes`) on every pair
-/// of inputs on the GL device and returns the results.
+/// of inputs on the GL device and returns the results. The program sees the tables' units
+/// (table_defines()), so `includes` may read a table bound with GpuTables::bind.
 inline std::vector<glm::vec4> evaluate_glsl(const std::string& includes, const std::string& body,
                                             const std::vector<glm::vec4>& a, const std::vector<glm::vec4>& b) {
   static int counter = 0;
@@ -78,7 +84,7 @@ void main() {
   if (i < uCount) outV[i] = evaluate(inA[i], inB[i]);
 }
 )");
-  const GLuint program = shaders().compute(path);
+  const GLuint program = shaders().compute(path, table_defines());
   const auto bytes = static_cast<GLsizeiptr>(a.size() * sizeof(glm::vec4));
   gl::Buffer ba = gl::make_buffer(bytes, a.data()), bb = gl::make_buffer(bytes, b.data());
   gl::Buffer out = gl::make_buffer(bytes, nullptr, GL_MAP_READ_BIT);

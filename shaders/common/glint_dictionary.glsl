@@ -1,5 +1,6 @@
-// The dictionary of multiscale 1D slope marginals (src/glints/glint_dictionary.hpp), uploaded by
-// src/render/glint_dictionary_texture.cpp: marginal k of level l lives in channel k % 3 of layer
+// The dictionary of multiscale 1D slope marginals (src/glints/glint_dictionary.hpp), the table
+// glint-dictionary (src/render/tables/glint_dictionary_table.cpp; its unit TABLE_UNIT_GLINT_DICTIONARY
+// comes from the table registry): marginal k of level l lives in channel k % 3 of layer
 // l * GLINT_MARGINALS / 3 + k / 3; texel x holds the density at |slope| = (x + 1/2) / texels *
 // GLINT_SLOPE_RANGE, so the texture coordinate of a slope s is |s| / GLINT_SLOPE_RANGE. The
 // constants mirror GlintDictionarySettings' defaults (checked by tests/gl/test_glints.cpp).
@@ -10,7 +11,7 @@ const float GLINT_DICT_ALPHA = 0.5;
 const float GLINT_DICT_SIGMA = 0.35355339;  // alpha_dict / sqrt(2)
 const float GLINT_SLOPE_RANGE = 4.0 * GLINT_DICT_SIGMA;
 
-layout(binding = 3) uniform sampler1DArray uGlintDictionary;
+layout(binding = TABLE_UNIT_GLINT_DICTIONARY) uniform sampler1DArray uGlintDictionary;
 
 vec2 glintTexel(int level, int marginal, float slope) {
   return vec2(abs(slope) / GLINT_SLOPE_RANGE, float(level * (GLINT_MARGINALS / 3) + marginal / 3));

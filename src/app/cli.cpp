@@ -1,14 +1,15 @@
 #include "app/cli.hpp"
 
 #include <CLI/CLI.hpp>
-#include <chrono>
+#include <cstdio>
 #include <iostream>
 
 #include "core/error.hpp"
 #include "eval/commands.hpp"
 #include "core/cache_directory.hpp"
 #include "eval/outputs.hpp"
-#include "render/glint_dictionary_texture.hpp"
+#include "eval/progress.hpp"
+#include "render/tables/gpu_tables.hpp"
 #include "eval/session.hpp"
 #include "scene/scene_loader.hpp"
 #include "render/reference_cache.hpp"
@@ -60,12 +61,32 @@ std::string default_out(const std::string& command, const CommonOptions& o) {
   return "out/" + command + "/" + scene;
 }
 
+/// "393216 bytes (384 KiB), 780288 bytes (762 KiB) with mips"; one size when there is no mip chain.
+std::string table_size_text(const TableBytes& bytes) {
+  const auto one = [](std::size_t b) { return std::to_string(b) + " bytes (" + std::to_string(b / 1024) + " KiB)"; };
+  return bytes.with_mips == bytes.base ? one(bytes.base) : one(bytes.base) + ", " + one(bytes.with_mips) + " with mips";
+}
+
+std::string ms_text(double ms) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.0f ms", ms);
+  return text;
+}
+
 void print_methods() {
+  const TableCache tables(default_cache_directory());
   for (const auto& m : all_methods()) {
     std::cout << m.id << " — " << m.title << "\n  " << m.summary << "\n  source: " << m.citation << "\n";
     for (const auto& p : m.params)
       std::cout << "  --param " << p.name << "=" << p.default_text() << "  (" << p.allowed() << ") "
                 << p.description << "\n";
+    for (const auto& id : m.tables) {
+      const TableSummary t = summarise_table(id, tables);
+      std::cout << "  table " << id << ": " << table_size_text(t.table->gpu_bytes) << " on the GPU; "
+                << (t.cached_generation_ms ? "cached (generating took " + ms_text(*t.cached_generation_ms) + ")"
+                                           : std::string("not cached yet (generated on first use)"))
+                << "\n";
+    }
     std::cout << "\n";
   }
 }
@@ -86,15 +107,18 @@ void print_info() {
             << "  max draw buffers          " << i.max_draw_buffers << "\n"
             << "  timer queries             " << (i.timer_query ? "yes" : "no") << "\n"
             << "reference cache: " << ReferenceCache::default_directory().string() << "\n";
-  // The glint dictionary: loaded from the cache, or generated (and cached) on first use.
-  const auto start = std::chrono::steady_clock::now();
-  const GlintDictionary dict = GlintDictionary::load_or_generate({}, default_cache_directory());
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  const GlintDictionaryTexture texture = upload_glint_dictionary(dict);
-  const auto& st = dict.settings();
-  std::cout << "glint dictionary: " << st.marginals << " marginals x " << st.levels << " levels x " << st.texels
-            << " texels, " << texture.bytes_base / 1024 << " KiB, " << texture.bytes_with_mips / 1024
-            << " KiB with mips (RGB16F); ready in " << static_cast<int>(ms) << " ms\n";
+  // Every precomputed table, loaded from the cache or generated (and cached) now.
+  std::cout << "precomputed tables (cache: " << default_cache_directory().string() << "):\n";
+  for (const TableReport& r : build_every_table(TableCache(default_cache_directory(), terminal_table_observer(true)))) {
+    const TableSource& source = r.table->source;
+    std::cout << "  " << source.id << ": " << source.title << "; " << table_size_text(r.table->gpu_bytes) << "; "
+              << (r.build.generated ? "generated now in " + ms_text(r.build.milliseconds)
+                                    : "loaded from the cache in " + ms_text(r.build.milliseconds) +
+                                          " (generating took " + ms_text(r.build.generation_ms) + ")")
+              << ", uploaded in " << ms_text(r.upload_ms) << "\n"
+              << "    settings: " << source.settings << " (generator v" << source.version << "); GLSL: "
+              << r.table->sampler << " at unit " << r.table->unit << "\n";
+  }
 }
 
 int render_command(const CommonOptions& o, const std::string& reference_arg, bool reference_given, int frame) {

@@ -1,6 +1,7 @@
 #pragma once
-// Where glintlab keeps what it can recompute (reference frames, the glint dictionary):
+// Where glintlab keeps what it can recompute (reference frames, precomputed tables):
 // $GLINTLAB_CACHE_DIR, else $XDG_CACHE_HOME/glintlab, else ~/.cache/glintlab; empty if none is set.
+// Read only at the top (Session, the CLI) and handed down.
 #include <cstdlib>
 #include <filesystem>
 

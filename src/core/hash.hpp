@@ -1,5 +1,5 @@
 #pragma once
-// 64-bit FNV-1a, used for cache keys (reference cache, dictionary cache).
+// 64-bit FNV-1a, used for cache keys (reference cache, table cache) and table checksums.
 #include <cstdint>
 #include <cstring>
 #include <span>

@@ -3,11 +3,16 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <iostream>
+#include <memory>
 
 namespace glintlab {
 
-ProgressBar::ProgressBar(std::string label, bool enabled)
-    : label_(std::move(label)), enabled_(enabled && ::isatty(STDERR_FILENO)), start_(std::chrono::steady_clock::now()) {}
+ProgressBar::ProgressBar(std::string label, bool enabled, std::string unit)
+    : label_(std::move(label)),
+      unit_(std::move(unit)),
+      enabled_(enabled && ::isatty(STDERR_FILENO)),
+      start_(std::chrono::steady_clock::now()) {}
 
 void ProgressBar::update(int done, int total) {
   if (!enabled_ || total <= 0) return;
@@ -15,14 +20,30 @@ void ProgressBar::update(int done, int total) {
   const double left = done > 0 ? elapsed * (total - done) / done : 0.0;
   constexpr int kWidth = 30;
   const int filled = kWidth * done / total;
-  std::fprintf(stderr, "\r%s [%.*s%*s] %d/%d tiles, %.0f s elapsed, %.0f s left ", label_.c_str(), filled,
-               "##############################", kWidth - filled, "", done, total, elapsed, left);
+  std::fprintf(stderr, "\r%s [%.*s%*s] %d/%d %s, %.0f s elapsed, %.0f s left ", label_.c_str(), filled,
+               "##############################", kWidth - filled, "", done, total, unit_.c_str(), elapsed, left);
   std::fflush(stderr);
   drawn_ = true;
 }
 
 ProgressBar::~ProgressBar() {
   if (drawn_) std::fprintf(stderr, "\n");
+}
+
+TableObserver terminal_table_observer(bool show_progress) {
+  // One bar per table generated, ended when the table is done.
+  auto bar = std::make_shared<std::unique_ptr<ProgressBar>>();
+  return {
+      .progress =
+          [bar, show_progress](const TableSource& table, int done, int total) {
+            if (!*bar) *bar = std::make_unique<ProgressBar>("generating table " + table.id, show_progress, "steps");
+            (*bar)->update(done, total);
+            if (done >= total) bar->reset();
+          },
+      .warning = [](const TableSource& table, const std::string& message) {
+        std::cerr << "glintlab: table " << table.id << ": " << message << "\n";
+      },
+  };
 }
 
 }  // namespace glintlab

@@ -3,19 +3,26 @@
 #include <chrono>
 #include <string>
 
+#include "tables/table_cache.hpp"
+
 namespace glintlab {
 
 class ProgressBar {
  public:
-  ProgressBar(std::string label, bool enabled);
+  /// `unit`: what done/total count ("tiles", "marginals").
+  ProgressBar(std::string label, bool enabled, std::string unit = "tiles");
   void update(int done, int total);
   ~ProgressBar();
 
  private:
   std::string label_;
+  std::string unit_;
   bool enabled_;
   bool drawn_ = false;
   std::chrono::steady_clock::time_point start_;
 };
+
+/// Table generation shown as a progress bar per table (when `show_progress`), warnings on stderr.
+TableObserver terminal_table_observer(bool show_progress);
 
 }  // namespace glintlab

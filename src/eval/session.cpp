@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/cache_directory.hpp"
 #include "core/error.hpp"
 #include "core/metrics.hpp"
 #include "eval/progress.hpp"
@@ -110,7 +111,10 @@ Session::Session(const CommonOptions& options)
   reference_.light_samples = options_.light_samples;
   context_ = GlContext::create_headless();
   device_ = context_->info().renderer;
-  gpu_scene_ = std::make_unique<GpuScene>(scene_);
+  gpu_scene_ = std::make_unique<GpuScene>(
+      scene_, TableCache(default_cache_directory(), terminal_table_observer(!options.quiet)));
+  // The chosen methods' tables now, rather than inside their first (perhaps timed) frame.
+  for (const MethodDescriptor* m : parse_method_list(options_.methods)) gpu_scene_->require_tables(m->tables);
   renderer_ = std::make_unique<Renderer>(shaders_, *gpu_scene_);
   reference_backend_ = make_reference_backend(options.reference_backend, {shaders_, *gpu_scene_, *renderer_});
 }

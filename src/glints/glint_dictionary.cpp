@@ -2,23 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
-#include <fstream>
-#include <iostream>
+#include <mutex>
 #include <numbers>
 #include <random>
+#include <stdexcept>
 #include <thread>
 
-#include "core/atomic_file.hpp"
 #include "core/error.hpp"
-#include "core/hash.hpp"
 
 namespace glintlab {
 namespace {
 
 // Lobes are summed over +-kLobeReach standard deviations (the rest is below 1e-7 of the peak).
 constexpr double kLobeReach = 6.0;
-constexpr char kCacheMagic[8] = {'G', 'L', 'D', 'I', 'C', 'T', '0', '1'};
 
 // Adds the even pair of lobes at +-mean (unnormalised Gaussians) to a table over |s|. Texels
 // outside |mean| +- reach get nothing from either lobe (the mirror lobe at -|mean| only reaches
@@ -98,11 +94,25 @@ std::vector<float> GlintDictionary::tabulate(const GlintDictionarySettings& sett
   return table;
 }
 
-GlintDictionary GlintDictionary::generate(const GlintDictionarySettings& settings) {
+std::size_t GlintDictionary::value_count(const GlintDictionarySettings& settings) {
+  return static_cast<std::size_t>(settings.levels) * settings.marginals * settings.texels;
+}
+
+GlintDictionary GlintDictionary::from_data(const GlintDictionarySettings& settings, std::vector<float> data) {
+  settings.validate();
+  if (data.size() != value_count(settings))
+    throw std::invalid_argument("glint dictionary: " + std::to_string(data.size()) + " values; the settings need " +
+                                std::to_string(value_count(settings)));
+  GlintDictionary dict(settings);
+  dict.data_ = std::move(data);
+  return dict;
+}
+
+GlintDictionary GlintDictionary::generate(const GlintDictionarySettings& settings, const ProgressFn& progress) {
   settings.validate();
   GlintDictionary dict(settings);
   const auto texels = static_cast<std::size_t>(settings.texels);
-  dict.data_.assign(static_cast<std::size_t>(settings.levels) * settings.marginals * texels, 0.0f);
+  dict.data_.assign(value_count(settings), 0.0f);
 
   // One marginal at a time per thread: its means are accumulated once, and level l is a snapshot
   // after the first 2^l of them (the nesting makes the whole pyramid cost one pass).
@@ -118,65 +128,19 @@ GlintDictionary GlintDictionary::generate(const GlintDictionarySettings& setting
     }
   };
   const unsigned workers = std::max(1u, std::thread::hardware_concurrency());
+  std::mutex progress_mutex;
+  int marginals_done = 0;
   std::vector<std::jthread> threads;
   for (unsigned w = 0; w < workers; ++w)
     threads.emplace_back([&, w] {
-      for (int k = static_cast<int>(w); k < settings.marginals; k += static_cast<int>(workers)) build(k);
+      for (int k = static_cast<int>(w); k < settings.marginals; k += static_cast<int>(workers)) {
+        build(k);
+        if (!progress) continue;
+        const std::lock_guard lock(progress_mutex);
+        progress(++marginals_done, settings.marginals);
+      }
     });
   threads.clear();  // joins
-  return dict;
-}
-
-std::string GlintDictionary::cache_file_name() const {
-  Hasher h;
-  h.bytes(kCacheMagic, sizeof kCacheMagic);
-  h.value(settings_.marginals);
-  h.value(settings_.levels);
-  h.value(settings_.texels);
-  h.value(settings_.alpha);
-  h.value(settings_.lobe_sigma);
-  h.value(settings_.seed);
-  char name[48];
-  std::snprintf(name, sizeof name, "glint-dictionary-%016llx.bin", static_cast<unsigned long long>(h.digest()));
-  return name;
-}
-
-GlintDictionary GlintDictionary::load_or_generate(const GlintDictionarySettings& settings,
-                                                  const std::filesystem::path& cache_dir) {
-  settings.validate();
-  GlintDictionary probe(settings);
-  const std::size_t count = static_cast<std::size_t>(settings.levels) * settings.marginals * settings.texels;
-  const auto path = cache_dir.empty() ? std::filesystem::path() : cache_dir / probe.cache_file_name();
-  if (!path.empty()) {
-    std::ifstream in(path, std::ios::binary);
-    char magic[sizeof kCacheMagic] = {};
-    GlintDictionarySettings stored;
-    std::vector<float> data(count);
-    if (in && in.read(magic, sizeof magic) && in.read(reinterpret_cast<char*>(&stored), sizeof stored) &&
-        std::memcmp(magic, kCacheMagic, sizeof magic) == 0 && stored == settings &&
-        in.read(reinterpret_cast<char*>(data.data()), static_cast<std::streamsize>(count * sizeof(float))) &&
-        in.peek() == std::char_traits<char>::eof() &&
-        std::all_of(data.begin(), data.end(), [](float v) { return std::isfinite(v) && v >= 0.0f; })) {
-      probe.data_ = std::move(data);
-      return probe;
-    }
-  }
-  GlintDictionary dict = generate(settings);
-  if (!path.empty()) {
-    try {
-      AtomicFile file(path);
-      {
-        std::ofstream out(file.temp_path(), std::ios::binary);
-        out.write(kCacheMagic, sizeof kCacheMagic);
-        out.write(reinterpret_cast<const char*>(&settings), sizeof settings);
-        out.write(reinterpret_cast<const char*>(dict.data_.data()), static_cast<std::streamsize>(count * sizeof(float)));
-        if (!out) throw RuntimeFailure(path.string() + ": cannot write");
-      }
-      file.commit();
-    } catch (const std::exception& e) {
-      std::cerr << "glintlab: cannot store the glint dictionary in the cache: " << e.what() << "\n";
-    }
-  }
   return dict;
 }
 

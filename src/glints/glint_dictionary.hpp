@@ -12,7 +12,7 @@
 // Each marginal is even and tabulated for |s| at texel centres s_x = (x + 1/2) / texels * 4 sigma_dict,
 // then renormalised so that the table integrates to 1 over the whole line (2 * ds * sum = 1).
 #include <cstdint>
-#include <filesystem>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -36,12 +36,16 @@ struct GlintDictionarySettings {
 
 class GlintDictionary {
  public:
-  /// Generates the tables on every hardware thread.
-  static GlintDictionary generate(const GlintDictionarySettings& settings);
-  /// The cached dictionary in `cache_dir` if one with these settings is there and intact, else a
-  /// freshly generated one (stored there; failures to store are reported and ignored). An empty
-  /// directory disables the cache.
-  static GlintDictionary load_or_generate(const GlintDictionarySettings& settings, const std::filesystem::path& cache_dir);
+  /// (marginals done, marginals): called after each marginal, one call at a time.
+  using ProgressFn = std::function<void(int, int)>;
+  /// Generates the tables on every hardware thread. Cached by the table framework
+  /// (render/tables/glint_dictionary_table.cpp), not here.
+  static GlintDictionary generate(const GlintDictionarySettings& settings, const ProgressFn& progress = {});
+  /// Wraps tables generate() made (e.g. read back from a cache): data() of a dictionary with these
+  /// settings. Throws std::invalid_argument if their count does not match the settings.
+  static GlintDictionary from_data(const GlintDictionarySettings& settings, std::vector<float> data);
+  /// Floats in data(): levels x marginals x texels.
+  [[nodiscard]] static std::size_t value_count(const GlintDictionarySettings& settings);
 
   [[nodiscard]] const GlintDictionarySettings& settings() const { return settings_; }
   /// The means of marginal k (2^(levels-1) of them, nested: level l uses the first 2^l).
@@ -52,8 +56,8 @@ class GlintDictionary {
   [[nodiscard]] static std::vector<float> tabulate(const GlintDictionarySettings& settings, std::span<const float> means);
   /// Every table, level-major then marginal: table(l, k) starts at (l * marginals + k) * texels.
   [[nodiscard]] std::span<const float> data() const { return data_; }
-
-  [[nodiscard]] std::string cache_file_name() const;
+  /// Moves the tables out (what the cache stores).
+  [[nodiscard]] std::vector<float> release() && { return std::move(data_); }
 
  private:
   explicit GlintDictionary(GlintDictionarySettings settings);

@@ -5,7 +5,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/vec4.hpp>
 
-#include "core/cache_directory.hpp"
 #include "gl/context.hpp"
 
 namespace glintlab {
@@ -20,6 +19,11 @@ GpuLightKind gpu_light_kind(const Light& light) {
     case LightType::Quad: return GpuLightKind::Quad;
   }
   return GpuLightKind::Point;
+}
+
+std::vector<std::string> material_tables(const Material& material) {
+  if (material.glints) return {"glint-dictionary"};
+  return {};
 }
 
 namespace {
@@ -142,7 +146,7 @@ GpuScene::NormalMapTextures GpuScene::upload_normal_map(const NormalMap& map) {
   return t;
 }
 
-GpuScene::GpuScene(const Scene& scene) {
+GpuScene::GpuScene(const Scene& scene, TableCache tables) : tables_(std::move(tables)) {
   for (const auto& shape : scene.shapes) meshes_.push_back(upload(*shape.mesh, shape.transform, shape.material));
 
   std::vector<MaterialGpu> materials;
@@ -154,8 +158,12 @@ GpuScene::GpuScene(const Scene& scene) {
     normal_maps_.push_back(m.normal_map ? upload_normal_map(*m.normal_map) : NormalMapTextures{});
     glinty_.push_back(m.glints.has_value());
   }
-  if (std::find(glinty_.begin(), glinty_.end(), true) != glinty_.end())
-    glint_dictionary_ = upload_glint_dictionary(GlintDictionary::load_or_generate({}, default_cache_directory()));
+  for (const auto& m : scene.materials)
+    for (const auto& id : material_tables(m))
+      if (std::find(material_table_ids_.begin(), material_table_ids_.end(), id) == material_table_ids_.end())
+        material_table_ids_.push_back(id);
+  std::sort(material_table_ids_.begin(), material_table_ids_.end());
+  tables_.require(material_table_ids_);
   materials.resize(kMaxMaterials);  // the uniform block's declared size
   materials_ = gl::make_buffer(static_cast<GLsizeiptr>(materials.size() * sizeof(MaterialGpu)), materials.data());
 

@@ -1,14 +1,14 @@
 #pragma once
 // The scene on the GPU: one vertex array per shape, material and light buffers, normal-map
 // textures (mipmapped, unnormalised averages kept for methods that need the normals' spread),
-// and the meshes of visible area lights.
+// the meshes of visible area lights, and the precomputed tables its materials and methods read.
 #include <array>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <vector>
 
 #include "gl/objects.hpp"
-#include "render/glint_dictionary_texture.hpp"
+#include "render/tables/gpu_tables.hpp"
 #include "scene/scene.hpp"
 
 namespace glintlab {
@@ -21,6 +21,10 @@ inline constexpr int kLightKindCount = 6;
 using LightRanges = std::array<glm::ivec2, kLightKindCount>;
 
 GpuLightKind gpu_light_kind(const Light& light);
+
+/// Tables a material's program variant reads in every method and in the reference: a glinty
+/// material's BRDF (shaders/common/glint_shading.glsl) reads the glint dictionary.
+std::vector<std::string> material_tables(const Material& material);
 
 struct GpuMesh {
   gl::VertexArray vao;
@@ -39,7 +43,8 @@ struct GpuEmitter {
 
 class GpuScene {
  public:
-  explicit GpuScene(const Scene& scene);
+  /// `tables`: where precomputed tables are cached (handed down from the top: Session, a test).
+  GpuScene(const Scene& scene, TableCache tables);
 
   [[nodiscard]] const std::vector<GpuMesh>& meshes() const { return meshes_; }
   [[nodiscard]] const std::vector<GpuEmitter>& emitters() const { return emitters_; }
@@ -52,9 +57,15 @@ class GpuScene {
     return normal_maps_[index(material)].slope_cross_moment.id();
   }
   [[nodiscard]] bool glinty(int material) const { return glinty_[index(material)]; }
-  /// The glint dictionary (shaders/common/glint_dictionary.glsl), uploaded when a material is
-  /// glinty; texture 0 otherwise.
-  [[nodiscard]] const GlintDictionaryTexture& glint_dictionary() const { return glint_dictionary_; }
+  /// The precomputed tables on the GPU. Those the materials' program variants read whatever the
+  /// method (material_tables) are made resident on construction; a method's own
+  /// (MethodDescriptor::tables) are added by require_tables, which the renderer calls before
+  /// drawing with it. Residency is a cache of the scene's data, hence const.
+  [[nodiscard]] const GpuTables& tables() const { return tables_; }
+  /// The ids of the tables the materials read (material_tables of each), sorted: what the
+  /// reference reads, so its cache key includes these tables' keys.
+  [[nodiscard]] const std::vector<std::string>& material_table_ids() const { return material_table_ids_; }
+  void require_tables(std::span<const std::string> ids) const { tables_.require(ids); }
   /// The light buffer is sorted by kind; [x, y) is the index range of each kind.
   [[nodiscard]] const LightRanges& light_ranges() const { return light_ranges_; }
   /// Binds the material (binding 2) and light (binding 1) uniform buffers.
@@ -71,7 +82,8 @@ class GpuScene {
   std::vector<GpuEmitter> emitters_;
   std::vector<NormalMapTextures> normal_maps_;
   std::vector<bool> glinty_;
-  GlintDictionaryTexture glint_dictionary_;
+  mutable GpuTables tables_;
+  std::vector<std::string> material_table_ids_;
   gl::Buffer materials_;
   gl::Buffer lights_;
   LightRanges light_ranges_{};

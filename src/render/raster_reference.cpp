@@ -10,6 +10,7 @@
 #include "render/gpu_scene.hpp"
 #include "render/render_target.hpp"
 #include "render/renderer.hpp"
+#include "render/tables/registry.hpp"
 
 namespace glintlab {
 
@@ -27,6 +28,8 @@ std::uint64_t RasterReference::estimator_hash() const {
   }
   h.text(shaders_.expand("passes/emitter.frag", {}));
   h.text(shaders_.expand("passes/downsample.comp", {}));
+  // The tables the reference reads: a new generator version or settings is a new reference.
+  for (const auto& id : scene_.material_table_ids()) h.value(table_key(find_table(id).source));
   return h.digest();
 }
 

@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "gl/context.hpp"
 #include "shading/method_module.hpp"
+#include "render/tables/registry.hpp"
 
 namespace glintlab {
 
@@ -34,11 +35,11 @@ ShaderDefines forward_variant(const std::string& module, const LightRanges& ligh
   std::string ranges = "ivec2[](";
   for (std::size_t k = 0; k < light_ranges.size(); ++k)
     ranges += (k ? ", ivec2(" : "ivec2(") + std::to_string(light_ranges[k].x) + ", " + std::to_string(light_ranges[k].y) + ")";
-  return {{"$METHOD", module},
+  return with_table_defines({{"$METHOD", module},
           {"LIGHT_RANGES", ranges + ")"},
           {"MATERIAL_NORMAL_MAP", material.normal_map ? "1" : "0"},
           {"MATERIAL_GLINTS", material.glints ? "1" : "0"},
-          {"REFERENCE_PASS", module == kReferenceModule ? "1" : "0"}};
+          {"REFERENCE_PASS", module == kReferenceModule ? "1" : "0"}});
 }
 
 MaterialVariant material_variant(const GpuScene& scene, int material) {
@@ -90,7 +91,7 @@ void Renderer::draw_scene(const std::string& module, const ParamValues& params, 
     glBindTextureUnit(0, scene_.normal_map(mesh.material));
     glBindTextureUnit(1, scene_.slope_moments(mesh.material));
     glBindTextureUnit(2, scene_.slope_cross_moment(mesh.material));
-    glBindTextureUnit(3, scene_.glint_dictionary().texture.id());
+    scene_.tables().bind();
     glBindVertexArray(mesh.vao.id());
     glDrawElements(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr);
   }
@@ -122,6 +123,7 @@ Renderer::FrameUniforms Renderer::frame_uniforms(const Camera& camera, const glm
 }
 
 void Renderer::draw(const MethodDescriptor& method, const ParamValues& params, const Camera& camera, int width, int height) {
+  scene_.require_tables(method.tables);
   draw_module(method_program_module(shaders_, method), params, camera, width, height);
 }
 
@@ -140,6 +142,7 @@ void Renderer::draw_view(const std::string& module, const ParamValues& params, c
 }
 
 Frame Renderer::render(const MethodDescriptor& method, const ParamValues& params, const Camera& camera, int width, int height) {
+  scene_.require_tables(method.tables);
   return render_module(method_program_module(shaders_, method), params, camera, width, height);
 }
 

@@ -50,6 +50,7 @@ class Renderer {
   /// draw_module, read back (e.g. the diagnostics of passes/glint_cells.glsl).
   Frame render_module(const std::string& module, const ParamValues& params, const Camera& camera, int width,
                       int height);
+
   /// Draws every shape with `module` into the bound target, seen through `projection` (which may
   /// select a jittered tile of the film, as the raster reference does); `target` and `tile` fill
   /// the frame block (shaders/common/frame.glsl).

@@ -31,7 +31,9 @@ struct MethodDescriptor {
   std::string citation;  ///< the paper (or "baseline")
   std::string summary;   ///< one paragraph, shown by `glintlab methods`
   std::vector<ParamDecl> params;
-  std::vector<std::string> tables;  ///< precomputed tables the module reads (none yet)
+  /// Ids of the precomputed tables the module reads (src/render/tables/registry.cpp): made
+  /// resident and bound before the renderer draws with it.
+  std::vector<std::string> tables;
 
   [[nodiscard]] std::string module_path() const { return "methods/" + id + ".glsl"; }
   [[nodiscard]] const ParamDecl* find_param(const std::string& name) const;

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <random>
 
-#include "core/cache_directory.hpp"
 #include "gl_fixture.hpp"
-#include "render/glint_dictionary_texture.hpp"
+#include "glints/glint_dictionary.hpp"
+#include "render/tables/gpu_tables.hpp"
 
 using namespace glintlab;
 using namespace glintlab::test;
@@ -23,11 +23,15 @@ mat2 roughnessMatrix(vec2 sigma, float rho) {
   return 2.0 * mat2(sigma.x * sigma.x, c, c, sigma.y * sigma.y);
 })";
 
-/// The default dictionary bound where the shaders read it (texture unit 3).
+/// The default dictionary bound where the shaders read it (TABLE_UNIT_GLINT_DICTIONARY).
 void bind_dictionary() {
-  static const GlintDictionaryTexture texture =
-      (context(), upload_glint_dictionary(GlintDictionary::load_or_generate({}, default_cache_directory())));
-  glBindTextureUnit(3, texture.texture.id());
+  static const GpuTables tables = [] {
+    context();
+    GpuTables t(test_table_cache());
+    t.require(std::vector<std::string>{"glint-dictionary"});
+    return t;
+  }();
+  tables.bind();
 }
 
 TEST(Glints, ShaderConstantsMirrorTheGeneratorsDefaults) {

@@ -16,7 +16,7 @@ MethodDescriptor chermain2020_method() {
                  "anisotropic Beckmann NDF at large footprints. No slope correlation, no filtering of the half "
                  "vector: curved surfaces alias. Materials without glints are shaded as by conventional.",
       .params = {glint_lean_param(false)},
-      .tables = {"glint dictionary: 192 marginals x 16 levels x 64 texels, RGB16F 1D array (generated, cached)"},
+      .tables = {"glint-dictionary"},
   };
 }
 

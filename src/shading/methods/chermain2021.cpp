@@ -25,8 +25,7 @@ MethodDescriptor chermain2021_method() {
                   "what is differentiated per pixel: the projected half vector h.xy (eq. 21, better at grazing "
                   "angles) or the half slope -h.xy / h.z (eq. 20)",
                   {"projected", "slopes"}}},
-      .tables = {"glint dictionary with its mip chain: 192 marginals x 16 levels x 64 texels, RGB16F 1D array "
-                 "(generated, cached)"},
+      .tables = {"glint-dictionary"},
   };
 }
 

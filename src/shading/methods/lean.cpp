@@ -14,7 +14,7 @@ MethodDescriptor lean_method() {
                  "(correlation included); the lobe's roughness matrix is diag(alpha^2) + 2 J Sigma J^T, an "
                  "anisotropic, rotated lobe about the mean normal (J: base slopes to the mean normal's slopes). Without a normal map it equals conventional.",
       .params = {},
-      .tables = {"slope moments of the material's normal map (RGBA32F + R32F, full mip chain)"},
+      .tables = {},
   };
 }
 

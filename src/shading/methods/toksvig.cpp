@@ -14,7 +14,7 @@ MethodDescriptor toksvig_method() {
                  "beta'^2 = beta^2 + 2 (1 - N) / N with beta^2 = alpha^2 / (1 - alpha^2). "
                  "Without a normal map it equals conventional.",
       .params = {},
-      .tables = {"the material's normal map, mipmapped without renormalisation"},
+      .tables = {},
   };
 }
 

@@ -1,0 +1,48 @@
+#include "render/tables/registry.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+#include "core/error.hpp"
+
+namespace glintlab {
+
+Table glint_dictionary_table();
+
+const std::vector<Table>& all_tables() {
+  static const std::vector<Table> tables = [] {
+    std::vector<Table> list = {
+        glint_dictionary_table(),
+    };
+    for (std::size_t i = 0; i < list.size(); ++i) list[i].unit = kFirstTableUnit + static_cast<int>(i);
+    return list;
+  }();
+  return tables;
+}
+
+const Table& find_table(const std::string& id) {
+  for (const auto& t : all_tables())
+    if (t.source.id == id) return t;
+  std::string known;
+  for (const auto& t : all_tables()) known += (known.empty() ? "" : ", ") + t.source.id;
+  throw InputError("unknown precomputed table '" + id + "'; allowed: " + known);
+}
+
+std::string table_define(const std::string& id) {
+  std::string name = "TABLE_UNIT_";
+  for (char c : id) name += std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::toupper(c)) : '_';
+  return name;
+}
+
+ShaderDefines table_defines() {
+  ShaderDefines defines;
+  for (const auto& t : all_tables()) defines.emplace_back(table_define(t.source.id), std::to_string(t.unit));
+  return defines;
+}
+
+ShaderDefines with_table_defines(ShaderDefines defines) {
+  for (auto& d : table_defines()) defines.push_back(std::move(d));
+  return defines;
+}
+
+}  // namespace glintlab

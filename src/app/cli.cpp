@@ -106,7 +106,9 @@ void print_info() {
             << "  max compute invocations   " << i.max_compute_invocations << "\n"
             << "  max draw buffers          " << i.max_draw_buffers << "\n"
             << "  timer queries             " << (i.timer_query ? "yes" : "no") << "\n"
-            << "reference cache: " << ReferenceCache::default_directory().string() << "\n";
+            << "reference cache: " << ReferenceCache::default_directory().string() << "\n"
+            << "reference backends (--reference-backend; the first is the default):\n";
+  for (const auto& b : reference_backends()) std::cout << "  " << b.id << ": " << b.description << "\n";
   // Every precomputed table, loaded from the cache or generated (and cached) now.
   std::cout << "precomputed tables (cache: " << default_cache_directory().string() << "):\n";
   for (const TableReport& r : build_every_table(TableCache(default_cache_directory(), terminal_table_observer(true)))) {

@@ -12,6 +12,7 @@
 #include "gl/shader_library.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/renderer.hpp"
+#include "render/shader_contract.hpp"
 #include "scene/scene_loader.hpp"
 #include "shading/registry.hpp"
 
@@ -25,6 +26,8 @@ inline GlContext& context() {
 inline ShaderLibrary& shaders() {
   context();
   static ShaderLibrary lib;
+  static const bool generated = (add_contract_sources(lib), true);  // generated/*.glsl (shader_contract.hpp)
+  (void)generated;
   return lib;
 }
 

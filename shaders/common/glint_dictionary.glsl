@@ -3,6 +3,7 @@
 // l * GLINT_MARGINALS / 3 + k / 3; texel x holds the density at |slope| = (x + 1/2) / texels *
 // GLINT_SLOPE_RANGE, so the texture coordinate of a slope s is |s| / GLINT_SLOPE_RANGE. The
 // constants mirror GlintDictionarySettings' defaults (checked by tests/gl/test_glints.cpp).
+#include "generated/gpu_contract.glsl"
 
 const int GLINT_MARGINALS = 192;
 const int GLINT_LEVELS = 16;
@@ -10,7 +11,7 @@ const float GLINT_DICT_ALPHA = 0.5;
 const float GLINT_DICT_SIGMA = 0.35355339;  // alpha_dict / sqrt(2)
 const float GLINT_SLOPE_RANGE = 4.0 * GLINT_DICT_SIGMA;
 
-layout(binding = 3) uniform sampler1DArray uGlintDictionary;
+layout(binding = GLINT_DICTIONARY_UNIT) uniform sampler1DArray uGlintDictionary;
 
 vec2 glintTexel(int level, int marginal, float slope) {
   return vec2(abs(slope) / GLINT_SLOPE_RANGE, float(level * (GLINT_MARGINALS / 3) + marginal / 3));

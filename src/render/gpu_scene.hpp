@@ -2,9 +2,9 @@
 // The scene on the GPU: one vertex array per shape, material and light buffers, normal-map
 // textures (mipmapped, unnormalised averages kept for methods that need the normals' spread),
 // and the meshes of visible area lights.
-#include <array>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <vector>
 
 #include "gl/objects.hpp"
@@ -13,14 +13,9 @@
 
 namespace glintlab {
 
-/// Light kinds on the GPU (shaders/common/lights.glsl): the scene's light types, with directional
-/// lights split into delta lights and suns (angular radius > 0), which shade by different code.
-enum class GpuLightKind : int { Point = 0, Directional = 1, Disk = 2, Sphere = 3, Quad = 4, Sun = 5 };
-inline constexpr int kLightKindCount = 6;
-/// Index range [x, y) of each kind in the kind-sorted light buffer.
-using LightRanges = std::array<glm::ivec2, kLightKindCount>;
-
-GpuLightKind gpu_light_kind(const Light& light);
+/// Index range [x, y) of each light kind (by code, src/scene/light_kind.hpp) in the kind-sorted
+/// light buffer.
+using LightRanges = std::vector<glm::ivec2>;
 
 struct GpuMesh {
   gl::VertexArray vao;
@@ -57,7 +52,7 @@ class GpuScene {
   [[nodiscard]] const GlintDictionaryTexture& glint_dictionary() const { return glint_dictionary_; }
   /// The light buffer is sorted by kind; [x, y) is the index range of each kind.
   [[nodiscard]] const LightRanges& light_ranges() const { return light_ranges_; }
-  /// Binds the material (binding 2) and light (binding 1) uniform buffers.
+  /// Binds the material and light uniform buffers (kMaterialBlockBinding, kLightBlockBinding).
   void bind_buffers() const;
 
  private:
@@ -74,7 +69,7 @@ class GpuScene {
   GlintDictionaryTexture glint_dictionary_;
   gl::Buffer materials_;
   gl::Buffer lights_;
-  LightRanges light_ranges_{};
+  LightRanges light_ranges_;
 };
 
 }  // namespace glintlab

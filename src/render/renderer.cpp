@@ -10,17 +10,9 @@
 #include "core/error.hpp"
 #include "core/hash.hpp"
 #include "gl/context.hpp"
+#include "render/shader_contract.hpp"
 
 namespace glintlab {
-
-// Mirrors FrameBlock in shaders/common/frame.glsl (std140).
-struct Renderer::FrameUniforms {
-  glm::mat4 view_proj;
-  glm::vec4 camera_pos;
-  glm::vec4 camera_forward;
-  glm::ivec4 target;
-  glm::ivec4 tile;
-};
 
 int ReferenceSettings::subpixels() const {
   for (int k = 32; k > 1; --k)
@@ -39,6 +31,7 @@ void validate_spp(int spp) {
 }
 
 Renderer::Renderer(ShaderLibrary& shaders, const GpuScene& scene) : shaders_(shaders), scene_(scene) {
+  add_contract_sources(shaders_);
   frame_ubo_ = gl::make_buffer(sizeof(FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
@@ -89,7 +82,7 @@ GLuint Renderer::forward_program(const std::string& module, int material) {
 
 void Renderer::draw_scene(const std::string& module, const ParamValues& params, const FrameUniforms& frame) {
   glNamedBufferSubData(frame_ubo_.id(), 0, sizeof(FrameUniforms), &frame);
-  glBindBufferBase(GL_UNIFORM_BUFFER, 0, frame_ubo_.id());
+  glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frame_ubo_.id());
   scene_.bind_buffers();
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -111,10 +104,10 @@ void Renderer::draw_scene(const std::string& module, const ParamValues& params, 
     glProgramUniformMatrix4fv(program, glGetUniformLocation(program, "uModel"), 1, GL_FALSE, &mesh.transform[0][0]);
     glProgramUniformMatrix3fv(program, glGetUniformLocation(program, "uNormalMatrix"), 1, GL_FALSE, &normal_matrix[0][0]);
     glProgramUniform1i(program, glGetUniformLocation(program, "uMaterial"), mesh.material);
-    glBindTextureUnit(0, scene_.normal_map(mesh.material));
-    glBindTextureUnit(1, scene_.slope_moments(mesh.material));
-    glBindTextureUnit(2, scene_.slope_cross_moment(mesh.material));
-    glBindTextureUnit(3, scene_.glint_dictionary().texture.id());
+    glBindTextureUnit(kNormalMapUnit, scene_.normal_map(mesh.material));
+    glBindTextureUnit(kSlopeMomentsUnit, scene_.slope_moments(mesh.material));
+    glBindTextureUnit(kSlopeCrossMomentUnit, scene_.slope_cross_moment(mesh.material));
+    glBindTextureUnit(kGlintDictionaryUnit, scene_.glint_dictionary().texture.id());
     glBindVertexArray(mesh.vao.id());
     glDrawElements(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr);
   }

@@ -93,8 +93,8 @@ GpuScene::GpuScene(const Scene& scene) {
   std::vector<MaterialGpu> materials;
   for (const auto& m : scene.materials) {
     const GlintParams g = m.glints.value_or(GlintParams{});
-    materials.push_back({glm::vec4(m.f0, static_cast<float>(m.ndf == Ndf::Beckmann ? kNdfBeckmann : kNdfGgx)), glm::vec4(m.diffuse, m.normal_map_tiling),
-                         glm::vec4(m.alpha, m.rho, 0.0f),
+    const float ndf = static_cast<float>(m.ndf == Ndf::Beckmann ? kNdfBeckmann : kNdfGgx);
+    materials.push_back({glm::vec4(m.f0, ndf), glm::vec4(m.diffuse, m.normal_map_tiling), glm::vec4(m.alpha, m.rho, 0.0f),
                          glm::vec4(g.log_density, g.relative_area, g.max_anisotropy, 0.0f)});
     normal_maps_.push_back(m.normal_map ? upload_normal_map(*m.normal_map) : NormalMapTextures{});
     glinty_.push_back(m.glints.has_value());

@@ -34,7 +34,6 @@ struct LightEmitter {
 
 struct LightKind {
   std::string id;       ///< the scene file's `type`; GLSL: shaders/lights/<id>.glsl, functions <id>Light*
-  std::string summary;  ///< one line: what it is and its keys (`glintlab info`, docs)
   bool has_extent = false;  ///< integrated over a solid angle; false: a delta light (incidence only)
   bool distant = false;     ///< at infinity: the same directions from every point
   LightForm form = LightForm::None;

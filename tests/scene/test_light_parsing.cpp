@@ -2,7 +2,10 @@
 // a directional light with an angular radius is the same sun; an unknown type lists the kinds.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <set>
+#include <sstream>
 
 #include "core/error.hpp"
 #include "scene/light_kind.hpp"
@@ -83,4 +86,18 @@ TEST(SceneParser, LightHashSeesTheParametersItsKindReads) {
   EXPECT_NE(with_light(quad + "visible = false\n").content_hash(), base);
   const std::string sun = "type = \"sun\"\ndirection = [0, -1, 0]\n";
   EXPECT_NE(with_light(sun + "angular_radius = 1\n").content_hash(), with_light(sun).content_hash());
+}
+
+TEST(LightKinds, SceneFormatDocumentsEveryKind) {
+  // docs/scene-format.md has a row of keys for each registered kind.
+  std::ifstream in(std::filesystem::path(GLINTLAB_TEST_DATA).parent_path().parent_path() / "docs" / "scene-format.md");
+  ASSERT_TRUE(in) << "docs/scene-format.md";
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string doc = text.str();
+  const auto begin = doc.find("## `[[light]]`");
+  ASSERT_NE(begin, std::string::npos);
+  const std::string section = doc.substr(begin, doc.find("\n## ", begin + 1) - begin);
+  for (const auto& id : light_kind_ids())
+    EXPECT_NE(section.find("| `" + id + "` |"), std::string::npos) << "no row for the light kind " << id;
 }

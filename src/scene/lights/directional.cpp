@@ -9,8 +9,6 @@ namespace glintlab {
 LightKind directional_light_kind() {
   return {
       .id = "directional",
-      .summary = "a delta light from one direction: `direction` (required, the direction light travels), "
-                 "`irradiance` (1) [W/m^2]; `angular_radius` > 0 makes it a sun",
       .has_extent = false,
       .distant = true,
       .form = LightForm::None,

@@ -9,8 +9,6 @@ namespace glintlab {
 LightKind disk_light_kind() {
   return {
       .id = "disk",
-      .summary = "a one-sided disk: `position`, `direction` (the side it emits towards), `radius` (all required), "
-                 "`radiance` (1) [W/(m^2 sr)], `visible` (true)",
       .has_extent = true,
       .distant = false,
       .form = LightForm::Disk,

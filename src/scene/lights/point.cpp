@@ -7,7 +7,6 @@ namespace glintlab {
 LightKind point_light_kind() {
   return {
       .id = "point",
-      .summary = "a point: `position` (required), `intensity` (1) [W/sr]",
       .has_extent = false,
       .distant = false,
       .form = LightForm::None,

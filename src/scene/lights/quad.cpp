@@ -9,8 +9,6 @@ namespace glintlab {
 LightKind quad_light_kind() {
   return {
       .id = "quad",
-      .summary = "a one-sided rectangle: `position`, `direction` (required), `size` ([w, h], 1), `up` (orients the "
-                 "quad, [0, 0, 1]), `radiance` (1) [W/(m^2 sr)], `visible` (true)",
       .has_extent = true,
       .distant = false,
       .form = LightForm::Polygon,

@@ -9,7 +9,6 @@ namespace glintlab {
 LightKind sphere_light_kind() {
   return {
       .id = "sphere",
-      .summary = "a sphere: `position`, `radius` (required), `radiance` (1) [W/(m^2 sr)], `visible` (true)",
       .has_extent = true,
       .distant = false,
       .form = LightForm::Disk,

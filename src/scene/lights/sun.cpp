@@ -10,8 +10,6 @@ namespace glintlab {
 LightKind sun_light_kind() {
   return {
       .id = "sun",
-      .summary = "a distant disk: `direction` (required, the direction light travels), `irradiance` (1) [W/m^2], "
-                 "`angular_radius` (0.27 degrees, up to 45)",
       .has_extent = true,
       .distant = true,
       .form = LightForm::Disk,

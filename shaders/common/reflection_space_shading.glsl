@@ -127,7 +127,7 @@ LightData reflectionSpaceLight(Surface s, LightData L, LightPlane plane, vec2 un
   float angle = abs(offDiagonal) + abs(diagonalGap) > 0.0 ? 0.5 * atan(offDiagonal, diagonalGap) : 0.0;
   vec2 v1 = vec2(cos(angle), sin(angle));
   float k = 0.8862269 * plane.distance;  // sqrt(pi)/2: the quad of the ellipse's area
-  LightData wide;  // a quad: the shape lobe shading takes an ellipse's outline from (lightOutline)
+  LightData wide;  // a quad light whose ellipse of equal area (its lightOutline) is C's
   // Same energy over a wider outline: the radiance scaled by |det D| / sqrt(det C) <= 1 (C >= D D^T),
   // bounded by 1 where rounding leaves l2 at 0.
   wide.colour_type = vec4(lightRadiance(L) * min(abs(determinant(D)) / max(sqrt(l1 * l2), 1e-30), 1.0), float(LIGHT_QUAD));

@@ -14,6 +14,7 @@
 #include "render/reference_backend.hpp"
 #include "render/renderer.hpp"
 #include "render/tables/registry.hpp"
+#include "render/shader_contract.hpp"
 #include "scene/scene_loader.hpp"
 #include "shading/registry.hpp"
 
@@ -27,6 +28,8 @@ inline GlContext& context() {
 inline ShaderLibrary& shaders() {
   context();
   static ShaderLibrary lib;
+  static const bool generated = (add_contract_sources(lib), true);  // generated/*.glsl (shader_contract.hpp)
+  (void)generated;
   return lib;
 }
 
@@ -68,8 +71,8 @@ struct SceneFixture {
 };
 
 /// Runs `body` (GLSL defining `vec4 evaluate(vec4 a, vec4 b)`, after `includes`) on every pair
-/// of inputs on the GL device and returns the results. The program sees the tables' units
-/// (table_defines()), so `includes` may read a table bound with GpuTables::bind.
+/// of inputs on the GL device and returns the results. `includes` may read a table bound with
+/// GpuTables::bind (its unit comes from generated/gpu_contract.glsl).
 inline std::vector<glm::vec4> evaluate_glsl(const std::string& includes, const std::string& body,
                                             const std::vector<glm::vec4>& a, const std::vector<glm::vec4>& b) {
   static int counter = 0;
@@ -84,7 +87,7 @@ void main() {
   if (i < uCount) outV[i] = evaluate(inA[i], inB[i]);
 }
 )");
-  const GLuint program = shaders().compute(path, table_defines());
+  const GLuint program = shaders().compute(path);
   const auto bytes = static_cast<GLsizeiptr>(a.size() * sizeof(glm::vec4));
   gl::Buffer ba = gl::make_buffer(bytes, a.data()), bb = gl::make_buffer(bytes, b.data());
   gl::Buffer out = gl::make_buffer(bytes, nullptr, GL_MAP_READ_BIT);

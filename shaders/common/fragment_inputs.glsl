@@ -2,13 +2,14 @@
 // and the draw's material. Declared before the method module, so that a method may re-evaluate
 // the attributes elsewhere in the pixel (attributesAtOffset; see common/pixel_corners.glsl).
 #include "common/material.glsl"
+#include "generated/gpu_contract.glsl"
 
 in vec3 vPosition;
 in vec3 vNormal;
 in vec4 vTangent;
 in vec2 vUV;
 
-layout(binding = 0) uniform sampler2D uNormalMap;
+layout(binding = NORMAL_MAP_UNIT) uniform sampler2D uNormalMap;
 uniform int uMaterial;
 
 // Normal-map coordinates of a uv (the material's tiling applied).

@@ -1,6 +1,7 @@
-// Per-frame data, the same for every draw (std140, binding 0; Renderer::FrameUniforms in
-// src/render/renderer.cpp).
-layout(std140, binding = 0) uniform FrameBlock {
+// Per-frame data, the same for every draw (std140; FrameUniforms in src/core/gpu_contract.hpp).
+#include "generated/gpu_contract.glsl"
+
+layout(std140, binding = FRAME_BLOCK_BINDING) uniform FrameBlock {
   mat4 uViewProj;
   vec4 uCameraPos;     // xyz: camera position (world); w: 1 perspective, 0 orthographic
   vec4 uCameraForward; // xyz: view direction for orthographic cameras

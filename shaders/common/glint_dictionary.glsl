@@ -4,6 +4,7 @@
 // l * GLINT_MARGINALS / 3 + k / 3; texel x holds the density at |slope| = (x + 1/2) / texels *
 // GLINT_SLOPE_RANGE, so the texture coordinate of a slope s is |s| / GLINT_SLOPE_RANGE. The
 // constants mirror GlintDictionarySettings' defaults (checked by tests/gl/test_glints.cpp).
+#include "generated/gpu_contract.glsl"
 
 const int GLINT_MARGINALS = 192;
 const int GLINT_LEVELS = 16;

@@ -1,11 +1,13 @@
 // The sum of a shading module's shadeLight over every light of the scene, specialised on the
 // scene's lights. The light buffer is sorted by kind (src/render/gpu_scene.cpp) and the program
 // variant defines LIGHT_RANGES, the constant initialiser of each kind's index range [x, y).
-// With constant ranges every loop has a constant trip count and a constant kind: the compiler
-// drops absent kinds, unrolls short loops, folds lightType(L) to the kind's code and loads each
-// light from a constant offset. This matters on SIMD CPU drivers: Mesa's llvmpipe runs both
-// sides of every branch and each loop iteration is costly, so an unspecialised loop costs the
-// code of every kind for every light (measured in docs/results.md, "Speed").
+// shadeAllLights (generated from the kinds' registry) calls shadeLightsOfKind once per kind with
+// the kind's code as a constant: with constant ranges every loop has a constant trip count and a
+// constant kind, so the compiler drops absent kinds, unrolls short loops, folds the dispatch of
+// common/lights.glsl to the kind's functions and loads each light from a constant offset. This
+// matters on SIMD CPU drivers: Mesa's llvmpipe runs both sides of every branch and each loop
+// iteration is costly, so an unspecialised loop costs the code of every kind for every light
+// (measured in docs/results.md, "Speed").
 #include "common/lights.glsl"
 #include "common/surface.glsl"
 
@@ -26,13 +28,4 @@ Radiance shadeLightsOfKind(Surface s, const int kind) {
   return sum;
 }
 
-Radiance shadeAllLights(Surface s) {
-  Radiance sum = Radiance(vec3(0.0), vec3(0.0));
-  addRadiance(sum, shadeLightsOfKind(s, LIGHT_POINT));
-  addRadiance(sum, shadeLightsOfKind(s, LIGHT_DIRECTIONAL));
-  addRadiance(sum, shadeLightsOfKind(s, LIGHT_DISK));
-  addRadiance(sum, shadeLightsOfKind(s, LIGHT_SPHERE));
-  addRadiance(sum, shadeLightsOfKind(s, LIGHT_QUAD));
-  addRadiance(sum, shadeLightsOfKind(s, LIGHT_SUN));
-  return sum;
-}
+#include "generated/shade_all_lights.glsl"

@@ -31,40 +31,27 @@ struct LightPlane {
   bool valid;
 };
 
-// ownPlane: a disk is measured in its own plane, where it is exactly a circle; otherwise in the
+// The plane of the light's disk form (common/light_shapes.glsl) seen from p. ownPlane: a disk that
+// does not face p is measured in its own plane, where it is exactly a circle; otherwise in the
 // paper's plane, normal to l, where it is to first order in R/d an ellipse (its orthographic
-// projection along l). Spheres and suns are exact circles in the plane normal to l.
+// projection along l). Disks that face p (spheres, suns) are exact circles in the plane normal to l.
 LightPlane lightPlane(LightData L, vec3 p, bool ownPlane) {
   LightPlane plane;
-  int type = lightType(L);
   plane.l = lightCentreDirection(L, p);
   plane.normal = plane.l;
   basisAround(plane.l, plane.u, plane.w);
   plane.valid = true;
-  float radius = L.position_radius.w;
-  if (type == LIGHT_SUN) {
-    // A disk at infinity: its cone's section at unit distance, radius tan(theta).
-    float cosT = L.direction_cos.w, sinT = sqrt(max(1.0 - cosT * cosT, 0.0));
-    plane.distance = 1.0;
-    plane.centre = p + plane.l;
-    plane.axes = vec2(sinT / max(cosT, 1e-6));
-    plane.angularRadius = acos(cosT);
+  LightDisk disk = lightDiskForm(L, p);
+  plane.centre = disk.centre;
+  plane.distance = disk.distance;
+  plane.angularRadius = disk.angularRadius;
+  if (disk.facing) {
+    plane.axes = vec2(disk.radius);
     return plane;
   }
-  plane.centre = L.position_radius.xyz;
-  plane.distance = length(plane.centre - p);
-  if (type == LIGHT_SPHERE) {
-    // The cone tangent to the sphere cuts the plane in a circle of radius R d / sqrt(d^2 - R^2).
-    // Inside the sphere every direction reaches the light: an unbounded circle.
-    float d2 = plane.distance * plane.distance;
-    bool outside = d2 > radius * radius * 1.0001;
-    plane.axes = vec2(outside ? radius * plane.distance * inversesqrt(d2 - radius * radius) : 1e20);
-    plane.angularRadius = outside ? asin(radius / plane.distance) : 0.5 * PI;
-    return plane;
-  }
-  // Disk, normal n_L. u = n_L x l lies in both planes; the second axis is foreshortened by
+  // Normal n_L. u = n_L x l lies in both planes; the second axis is foreshortened by
   // cos_L = -n_L . l in the paper's plane.
-  vec3 n = L.direction_cos.xyz;
+  vec3 n = disk.normal;
   float cosL = -dot(n, plane.l);
   plane.valid = cosL > 0.0;  // one-sided emitter
   vec3 u = cross(n, plane.l);
@@ -72,8 +59,7 @@ LightPlane lightPlane(LightData L, vec3 p, bool ownPlane) {
   if (len > 1e-6) plane.u = u / len;
   plane.normal = ownPlane ? -n : plane.l;
   plane.w = cross(plane.normal, plane.u);
-  plane.axes = radius * vec2(1.0, ownPlane ? 1.0 : max(cosL, 1e-6));
-  plane.angularRadius = atan(radius * sqrt(max(cosL, 0.0)) / plane.distance);
+  plane.axes = disk.radius * vec2(1.0, ownPlane ? 1.0 : max(cosL, 1e-6));
   return plane;
 }
 
@@ -141,7 +127,7 @@ LightData reflectionSpaceLight(Surface s, LightData L, LightPlane plane, vec2 un
   float angle = abs(offDiagonal) + abs(diagonalGap) > 0.0 ? 0.5 * atan(offDiagonal, diagonalGap) : 0.0;
   vec2 v1 = vec2(cos(angle), sin(angle));
   float k = 0.8862269 * plane.distance;  // sqrt(pi)/2: the quad of the ellipse's area
-  LightData wide;
+  LightData wide;  // a quad light whose ellipse of equal area (its lightOutline) is C's
   // Same energy over a wider outline: the radiance scaled by |det D| / sqrt(det C) <= 1 (C >= D D^T),
   // bounded by 1 where rounding leaves l2 at 0.
   wide.colour_type = vec4(lightRadiance(L) * min(abs(determinant(D)) / max(sqrt(l1 * l2), 1e-30), 1.0), float(LIGHT_QUAD));
@@ -152,10 +138,9 @@ LightData reflectionSpaceLight(Surface s, LightData L, LightPlane plane, vec2 un
   return wide;
 }
 
-// Reflected radiance of a disk light, sphere light or sun through the pixel whose corner rays are
-// `corners`. Other kinds of light are not handled here.
+// Reflected radiance of a light with a disk form (disk, sphere, sun) through the pixel whose
+// corner rays are `corners`. Other kinds of light are not handled here.
 Radiance shadeReflectionSpace(Surface s, LightData L, CornerRays corners, Lobe lobe, ReflectionSpaceOptions options) {
-  int type = lightType(L);
   LightPlane plane = lightPlane(L, s.position, options.area == 0);
   float angularRadius = plane.angularRadius;
   // Nothing from a light whose emitting side p does not see, or that lies wholly below the
@@ -180,7 +165,7 @@ Radiance shadeReflectionSpace(Surface s, LightData L, CornerRays corners, Lobe l
   // infinity in the direction of their tangential part; they are clamped to 1e4 plane distances.
   vec2 q[4];
   for (int i = 0; i < 4; ++i) {
-    vec3 o = type == LIGHT_SUN ? s.position : corners.origin[i];
+    vec3 o = lightIsDistant(L) ? s.position : corners.origin[i];  // lights at infinity show no parallax
     vec3 r = corners.direction[i];
     float t = dot(plane.centre - o, plane.normal) / max(dot(r, plane.normal), 1e-4);
     vec3 x = o + t * r - plane.centre;

@@ -3,9 +3,10 @@
 // footprint gives the mean and the covariance of the slopes there (LEAN mapping).
 #include "common/roughness_filtering.glsl"
 #include "common/surface.glsl"
+#include "generated/gpu_contract.glsl"
 
-layout(binding = 1) uniform sampler2D uSlopeMoments;
-layout(binding = 2) uniform sampler2D uSlopeCrossMoment;
+layout(binding = SLOPE_MOMENTS_UNIT) uniform sampler2D uSlopeMoments;
+layout(binding = SLOPE_CROSS_MOMENT_UNIT) uniform sampler2D uSlopeCrossMoment;
 
 // Covariance of the normal map's slopes inside the pixel's footprint; meanSlope: their mean B.
 // Call in uniform control flow (textureGrad with the surface's uv derivatives is safe anywhere,

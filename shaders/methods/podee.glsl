@@ -27,8 +27,8 @@ void prepareSurface(inout Surface s) {
 }
 
 Radiance shadeLight(Surface s, LightData L) {
-  int type = lightType(L);
-  if (type == LIGHT_DISK || type == LIGHT_SPHERE || type == LIGHT_SUN)
+  // The reflection space is measured against the light's disk form (disks, spheres, suns).
+  if (lightForm(L) == LIGHT_FORM_DISK)
     return shadeReflectionSpace(s, L, gCorners, gLobe, ReflectionSpaceOptions(int(param_area + 0.5), param_glossy > 0.5));
-  return shadeLobe(s, L, gLobe);  // delta and quad lights: the baseline
+  return shadeLobe(s, L, gLobe);  // delta lights and polygons: the baseline
 }

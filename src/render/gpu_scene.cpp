@@ -2,24 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <glm/gtc/matrix_transform.hpp>
 #include <glm/vec4.hpp>
 
+#include "core/gpu_contract.hpp"
 #include "gl/context.hpp"
 
 namespace glintlab {
-
-GpuLightKind gpu_light_kind(const Light& light) {
-  switch (light.type) {
-    case LightType::Point: return GpuLightKind::Point;
-    case LightType::Directional:
-      return light.angular_radius_degrees > 0.0f ? GpuLightKind::Sun : GpuLightKind::Directional;
-    case LightType::Disk: return GpuLightKind::Disk;
-    case LightType::Sphere: return GpuLightKind::Sphere;
-    case LightType::Quad: return GpuLightKind::Quad;
-  }
-  return GpuLightKind::Point;
-}
 
 std::vector<std::string> material_tables(const Material& material) {
   if (material.glints) return {"glint-dictionary"};
@@ -33,23 +21,6 @@ struct Vertex {
   glm::vec3 normal;
   glm::vec4 tangent;
   glm::vec2 uv;
-};
-
-// Mirrors MaterialData in shaders/common/material.glsl (std430).
-struct MaterialGpu {
-  glm::vec4 f0_ndf;
-  glm::vec4 diffuse_tiling;
-  glm::vec4 alpha_rho;
-  glm::vec4 glints;
-};
-
-// Mirrors LightData in shaders/common/lights.glsl (std140).
-struct LightGpu {
-  glm::vec4 colour_type;
-  glm::vec4 position_radius;
-  glm::vec4 direction_cos;
-  glm::vec4 axis_u;
-  glm::vec4 axis_v;
 };
 
 GpuMesh upload(const Mesh& mesh, const glm::mat4& transform, int material) {
@@ -78,22 +49,10 @@ GpuMesh upload(const Mesh& mesh, const glm::mat4& transform, int material) {
   return g;
 }
 
+/// The kind's record, tagged with the kind's code (shaders/common/light_data.glsl, lightType).
 LightGpu to_gpu(const Light& l) {
-  LightGpu g{};
-  g.colour_type = glm::vec4(l.colour, static_cast<float>(gpu_light_kind(l)));
-  g.position_radius = glm::vec4(l.position, l.radius);
-  // Sun cones in double: 1 - cos = 2 sin^2(theta / 2) keeps its precision at small angles, where
-  // 1 - cos in float would not (shaders/common/lights.glsl, sunOneMinusCos).
-  const double theta = static_cast<double>(l.angular_radius_degrees) * (3.14159265358979323846 / 180.0);
-  const double half_sin = std::sin(0.5 * theta);
-  g.direction_cos = glm::vec4(l.direction, static_cast<float>(std::cos(theta)));
-  if (l.type == LightType::Quad) {
-    const glm::vec3 u = glm::normalize(glm::cross(l.up, l.direction));
-    const glm::vec3 v = glm::cross(l.direction, u);
-    g.axis_u = glm::vec4(0.5f * l.size.x * u, 0.0f);
-    g.axis_v = glm::vec4(0.5f * l.size.y * v, 0.0f);
-  }
-  g.axis_u.w = static_cast<float>(2.0 * half_sin * half_sin);
+  LightGpu g = l.kind->pack(l);
+  g.colour_type.w = static_cast<float>(l.kind->code());
   return g;
 }
 
@@ -110,20 +69,6 @@ gl::Texture make_mipmapped_texture(GLenum format, GLenum channels, int width, in
   glTextureParameteri(tex.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
   glTextureParameteri(tex.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
   return tex;
-}
-
-/// Rotation taking +y to `n` (the generators build disks and planes facing +y).
-glm::mat4 orient_y_to(glm::vec3 n, glm::vec3 up_hint) {
-  glm::vec3 x = glm::cross(up_hint, n);
-  if (glm::length(x) < 1e-6f) x = glm::cross(glm::vec3(1, 0, 0), n);
-  if (glm::length(x) < 1e-6f) x = glm::cross(glm::vec3(0, 0, 1), n);
-  x = glm::normalize(x);
-  const glm::vec3 z = glm::cross(x, n);
-  glm::mat4 m(1.0f);
-  m[0] = glm::vec4(x, 0);
-  m[1] = glm::vec4(n, 0);
-  m[2] = glm::vec4(z, 0);
-  return m;
 }
 
 }  // namespace
@@ -152,8 +97,8 @@ GpuScene::GpuScene(const Scene& scene, TableCache tables) : tables_(std::move(ta
   std::vector<MaterialGpu> materials;
   for (const auto& m : scene.materials) {
     const GlintParams g = m.glints.value_or(GlintParams{});
-    materials.push_back({glm::vec4(m.f0, m.ndf == Ndf::Beckmann ? 1.0f : 0.0f), glm::vec4(m.diffuse, m.normal_map_tiling),
-                         glm::vec4(m.alpha, m.rho, 0.0f),
+    const float ndf = static_cast<float>(m.ndf == Ndf::Beckmann ? kNdfBeckmann : kNdfGgx);
+    materials.push_back({glm::vec4(m.f0, ndf), glm::vec4(m.diffuse, m.normal_map_tiling), glm::vec4(m.alpha, m.rho, 0.0f),
                          glm::vec4(g.log_density, g.relative_area, g.max_anisotropy, 0.0f)});
     normal_maps_.push_back(m.normal_map ? upload_normal_map(*m.normal_map) : NormalMapTextures{});
     glinty_.push_back(m.glints.has_value());
@@ -169,23 +114,20 @@ GpuScene::GpuScene(const Scene& scene, TableCache tables) : tables_(std::move(ta
 
   // Sorted by kind, in the scene's order within a kind (shaders/common/light_loop.glsl).
   std::vector<LightGpu> lights;
-  for (int kind = 0; kind < kLightKindCount; ++kind) {
+  for (const LightKind& kind : all_light_kinds()) {
     const int begin = static_cast<int>(lights.size());
     for (const auto& l : scene.lights)
-      if (static_cast<int>(gpu_light_kind(l)) == kind) lights.push_back(to_gpu(l));
-    light_ranges_[static_cast<std::size_t>(kind)] = glm::ivec2(begin, static_cast<int>(lights.size()));
+      if (l.kind == &kind) lights.push_back(to_gpu(l));
+    light_ranges_.emplace_back(begin, static_cast<int>(lights.size()));
   }
   for (const auto& l : scene.lights) {
-    if (!l.is_area() || !l.visible) continue;
+    if (!l.kind->emitter) continue;
+    std::optional<LightEmitter> shape = l.kind->emitter(l);
+    if (!shape) continue;
     GpuEmitter e;
-    e.radiance = l.colour;
-    if (l.type == LightType::Sphere) {
-      e.mesh = upload(make_sphere(l.radius, 48, 24), glm::translate(glm::mat4(1.0f), l.position), 0);
-      e.two_sided = true;
-    } else {
-      const Mesh m = l.type == LightType::Disk ? make_disk(l.radius, 96) : make_plane(l.size, 1.0f);
-      e.mesh = upload(m, glm::translate(glm::mat4(1.0f), l.position) * orient_y_to(l.direction, l.up), 0);
-    }
+    e.mesh = upload(shape->mesh, shape->transform, 0);
+    e.radiance = shape->radiance;
+    e.two_sided = shape->two_sided;
     emitters_.push_back(std::move(e));
   }
   lights.resize(kMaxLights);  // the uniform block's declared size
@@ -194,8 +136,8 @@ GpuScene::GpuScene(const Scene& scene, TableCache tables) : tables_(std::move(ta
 }
 
 void GpuScene::bind_buffers() const {
-  glBindBufferBase(GL_UNIFORM_BUFFER, 1, lights_.id());
-  glBindBufferBase(GL_UNIFORM_BUFFER, 2, materials_.id());
+  glBindBufferBase(GL_UNIFORM_BUFFER, kLightBlockBinding, lights_.id());
+  glBindBufferBase(GL_UNIFORM_BUFFER, kMaterialBlockBinding, materials_.id());
 }
 
 }  // namespace glintlab

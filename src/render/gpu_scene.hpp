@@ -5,6 +5,7 @@
 #include <array>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <vector>
 
 #include "gl/objects.hpp"
@@ -13,14 +14,9 @@
 
 namespace glintlab {
 
-/// Light kinds on the GPU (shaders/common/lights.glsl): the scene's light types, with directional
-/// lights split into delta lights and suns (angular radius > 0), which shade by different code.
-enum class GpuLightKind : int { Point = 0, Directional = 1, Disk = 2, Sphere = 3, Quad = 4, Sun = 5 };
-inline constexpr int kLightKindCount = 6;
-/// Index range [x, y) of each kind in the kind-sorted light buffer.
-using LightRanges = std::array<glm::ivec2, kLightKindCount>;
-
-GpuLightKind gpu_light_kind(const Light& light);
+/// Index range [x, y) of each light kind (by code, src/scene/light_kind.hpp) in the kind-sorted
+/// light buffer.
+using LightRanges = std::vector<glm::ivec2>;
 
 /// Tables a material's program variant reads in every method and in the reference: a glinty
 /// material's BRDF (shaders/common/glint_shading.glsl) reads the glint dictionary.
@@ -68,7 +64,7 @@ class GpuScene {
   void require_tables(std::span<const std::string> ids) const { tables_.require(ids); }
   /// The light buffer is sorted by kind; [x, y) is the index range of each kind.
   [[nodiscard]] const LightRanges& light_ranges() const { return light_ranges_; }
-  /// Binds the material (binding 2) and light (binding 1) uniform buffers.
+  /// Binds the material and light uniform buffers (kMaterialBlockBinding, kLightBlockBinding).
   void bind_buffers() const;
 
  private:
@@ -86,7 +82,7 @@ class GpuScene {
   std::vector<std::string> material_table_ids_;
   gl::Buffer materials_;
   gl::Buffer lights_;
-  LightRanges light_ranges_{};
+  LightRanges light_ranges_;
 };
 
 }  // namespace glintlab

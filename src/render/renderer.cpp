@@ -7,21 +7,14 @@
 
 #include "core/error.hpp"
 #include "gl/context.hpp"
-#include "shading/method_module.hpp"
+#include "render/shader_contract.hpp"
 #include "render/tables/registry.hpp"
+#include "shading/method_module.hpp"
 
 namespace glintlab {
 
-// Mirrors FrameBlock in shaders/common/frame.glsl (std140).
-struct Renderer::FrameUniforms {
-  glm::mat4 view_proj;
-  glm::vec4 camera_pos;
-  glm::vec4 camera_forward;
-  glm::ivec4 target;
-  glm::ivec4 tile;
-};
-
 Renderer::Renderer(ShaderLibrary& shaders, const GpuScene& scene) : shaders_(shaders), scene_(scene) {
+  add_contract_sources(shaders_);
   frame_ubo_ = gl::make_buffer(sizeof(FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
@@ -35,11 +28,11 @@ ShaderDefines forward_variant(const std::string& module, const LightRanges& ligh
   std::string ranges = "ivec2[](";
   for (std::size_t k = 0; k < light_ranges.size(); ++k)
     ranges += (k ? ", ivec2(" : "ivec2(") + std::to_string(light_ranges[k].x) + ", " + std::to_string(light_ranges[k].y) + ")";
-  return with_table_defines({{"$METHOD", module},
+  return {{"$METHOD", module},
           {"LIGHT_RANGES", ranges + ")"},
           {"MATERIAL_NORMAL_MAP", material.normal_map ? "1" : "0"},
           {"MATERIAL_GLINTS", material.glints ? "1" : "0"},
-          {"REFERENCE_PASS", module == kReferenceModule ? "1" : "0"}});
+          {"REFERENCE_PASS", module == kReferenceModule ? "1" : "0"}};
 }
 
 MaterialVariant material_variant(const GpuScene& scene, int material) {
@@ -64,7 +57,7 @@ GLuint Renderer::forward_program(const std::string& module, int material) {
 
 void Renderer::draw_scene(const std::string& module, const ParamValues& params, const FrameUniforms& frame) {
   glNamedBufferSubData(frame_ubo_.id(), 0, sizeof(FrameUniforms), &frame);
-  glBindBufferBase(GL_UNIFORM_BUFFER, 0, frame_ubo_.id());
+  glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frame_ubo_.id());
   scene_.bind_buffers();
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -88,9 +81,9 @@ void Renderer::draw_scene(const std::string& module, const ParamValues& params, 
     glProgramUniformMatrix4fv(program, glGetUniformLocation(program, "uModel"), 1, GL_FALSE, &mesh.transform[0][0]);
     glProgramUniformMatrix3fv(program, glGetUniformLocation(program, "uNormalMatrix"), 1, GL_FALSE, &normal_matrix[0][0]);
     glProgramUniform1i(program, glGetUniformLocation(program, "uMaterial"), mesh.material);
-    glBindTextureUnit(0, scene_.normal_map(mesh.material));
-    glBindTextureUnit(1, scene_.slope_moments(mesh.material));
-    glBindTextureUnit(2, scene_.slope_cross_moment(mesh.material));
+    glBindTextureUnit(kNormalMapUnit, scene_.normal_map(mesh.material));
+    glBindTextureUnit(kSlopeMomentsUnit, scene_.slope_moments(mesh.material));
+    glBindTextureUnit(kSlopeCrossMomentUnit, scene_.slope_cross_moment(mesh.material));
     scene_.tables().bind();
     glBindVertexArray(mesh.vao.id());
     glDrawElements(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr);

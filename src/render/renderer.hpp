@@ -58,7 +58,7 @@ class Renderer {
                  const glm::mat4& projection, glm::ivec4 target, glm::ivec4 tile);
 
  private:
-  struct FrameUniforms;
+  using FrameUniforms = glintlab::FrameUniforms;  // std140, src/core/gpu_contract.hpp
   FrameUniforms frame_uniforms(const Camera& camera, const glm::mat4& projection, glm::ivec4 target,
                                glm::ivec4 tile) const;
   /// Draws every shape with `module` (a method's or the reference's) in the forward pass, each

@@ -3,6 +3,7 @@
 #include <span>
 
 #include "core/hash.hpp"
+#include "scene/light_kind.hpp"
 
 namespace glintlab {
 
@@ -37,15 +38,8 @@ std::uint64_t Scene::content_hash() const {
     h.span(std::span<const std::uint32_t>(s.mesh->indices));
   }
   for (const auto& l : lights) {
-    h.value(l.type);
-    h.value(l.colour);
-    h.value(l.position);
-    h.value(l.direction);
-    h.value(l.up);
-    h.value(l.radius);
-    h.value(l.size);
-    h.value(l.angular_radius_degrees);
-    h.value(l.visible);
+    h.text(l.kind->id);
+    l.kind->hash(h, l);
   }
   return h.digest();
 }

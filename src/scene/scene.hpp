@@ -6,8 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "core/gpu_contract.hpp"  // kMaxLights, kMaxMaterials: a scene's limits
 #include "scene/camera.hpp"
-#include "scene/light.hpp"
+#include "scene/light_kind.hpp"
 #include "scene/material.hpp"
 #include "scene/mesh.hpp"
 
@@ -26,11 +27,6 @@ struct Shape {
   glm::mat4 transform{1.0f};         ///< object to world
   int material = 0;                  ///< index into Scene::materials
 };
-
-/// Limits of one scene: lights and materials live in uniform buffers on the GPU (16 KiB, the
-/// minimum every GL 4.5 driver offers; mirrored by MAX_LIGHTS and MAX_MATERIALS in shaders/common).
-inline constexpr int kMaxLights = 128;
-inline constexpr int kMaxMaterials = 256;
 
 struct Scene {
   std::string name;    ///< builtin name or file stem

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "scene/light_kind.hpp"
 #include "scene/mesh_io.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/toml_reader.hpp"
@@ -214,36 +215,11 @@ Shape parse_shape(TomlReader r, const std::map<std::string, int>& materials, con
   return shape;
 }
 
+// The light's kind from `type` (the registered kinds), which reads its own keys.
 Light parse_light(TomlReader r) {
-  Light l;
-  const auto type = r.require_string("type", {"point", "directional", "disk", "sphere", "quad"});
-  constexpr double kMaxPower = 1e9;
-  if (type == "point") {
-    l.type = LightType::Point;
-    l.position = r.require_vec3("position");
-    l.colour = r.get_colour("intensity", glm::vec3(1.0f), 0.0, kMaxPower);
-  } else if (type == "directional") {
-    l.type = LightType::Directional;
-    l.direction = r.require_vec3("direction");
-    l.colour = r.get_colour("irradiance", glm::vec3(1.0f), 0.0, kMaxPower);
-    l.angular_radius_degrees = static_cast<float>(r.get_number("angular_radius", 0.0, 0.0, 45.0));
-  } else {
-    l.type = type == "disk" ? LightType::Disk : type == "sphere" ? LightType::Sphere : LightType::Quad;
-    l.position = r.require_vec3("position");
-    l.colour = r.get_colour("radiance", glm::vec3(1.0f), 0.0, kMaxPower);
-    l.visible = r.get_bool("visible", true);
-    if (l.type == LightType::Quad) {
-      l.size = r.get_vec2("size", glm::vec2(1.0f), 1e-6, kBig);
-      l.up = r.get_vec3("up", glm::vec3(0, 0, 1));
-    } else {
-      l.radius = static_cast<float>(r.require_number("radius", 1e-6, kBig));
-    }
-    if (l.type != LightType::Sphere) l.direction = r.require_vec3("direction");
-  }
-  if (glm::length(l.direction) < 1e-9f) r.fail("direction", "value is a zero vector; allowed: any non-zero vector");
-  l.direction = glm::normalize(l.direction);
-  if (l.type == LightType::Quad && glm::length(glm::cross(l.direction, l.up)) < 1e-6f * glm::length(l.up))
-    r.fail("up", "is parallel to direction or zero; it must orient the quad");
+  const LightKind& kind = find_light_kind(r.require_string("type", light_kind_ids()));
+  Light l = kind.parse(r);
+  if (!l.kind) l.kind = &kind;
   r.finish();
   return l;
 }

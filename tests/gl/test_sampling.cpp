@@ -885,7 +885,7 @@ TEST(QuadLight, BuiltinSceneReferenceIsFinite) {
   toml.replace(toml.find("height = 360"), 12, "height = 36");
   SceneFixture f(toml);
   ASSERT_EQ(f.scene.lights.size(), 1u);
-  EXPECT_EQ(f.scene.lights[0].type, LightType::Quad);
+  EXPECT_EQ(f.scene.lights[0].kind->id, "quad");
   const Frame ref = f.reference(16);
   EXPECT_EQ(ref.total.count_non_finite(), 0u);
   EXPECT_GT(luminance(glm::vec3(ref.specular.mean())), 0.0f);

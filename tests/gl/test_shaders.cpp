@@ -20,7 +20,7 @@ TEST(GlContext, IsOpenGL45Core) {
 
 TEST(Shaders, EveryMethodAndPassCompiles) {
   LightRanges every_kind;  // two lights of each kind
-  for (int k = 0; k < kLightKindCount; ++k) every_kind[static_cast<std::size_t>(k)] = glm::ivec2(2 * k, 2 * k + 2);
+  for (int k = 0; k < static_cast<int>(all_light_kinds().size()); ++k) every_kind.emplace_back(2 * k, 2 * k + 2);
   std::vector<std::string> modules{"passes/reference.glsl", "passes/unshaded.glsl"};
   for (const auto& m : all_methods()) {
     EXPECT_TRUE(shaders().exists(m.module_path())) << m.id;

@@ -76,7 +76,7 @@ std::vector<double> quadrature(const Scene& scene, double alpha) {
   const glm::dmat4 inverse = glm::inverse(glm::dmat4(cam.projection_matrix(float(w) / float(h)) * cam.view_matrix()));
   const auto& light = scene.lights.at(0);
   const glm::dvec3 c(light.position), n = glm::normalize(glm::dvec3(light.direction));
-  const bool quad = light.type == LightType::Quad;
+  const bool quad = light.kind->id == "quad";
   const glm::dvec3 u = quad ? glm::normalize(glm::cross(glm::dvec3(light.up), n)) : glm::normalize(glm::cross(glm::dvec3(1, 0, 0), n));
   const glm::dvec3 vv = glm::cross(n, u);
   // Light sample points and their area weights.

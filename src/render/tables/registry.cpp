@@ -40,9 +40,4 @@ ShaderDefines table_defines() {
   return defines;
 }
 
-ShaderDefines with_table_defines(ShaderDefines defines) {
-  for (auto& d : table_defines()) defines.push_back(std::move(d));
-  return defines;
-}
-
 }  // namespace glintlab

@@ -4,15 +4,11 @@
 #include <string>
 #include <vector>
 
+#include "core/gpu_contract.hpp"
 #include "gl/shader_library.hpp"
 #include "render/tables/table.hpp"
 
 namespace glintlab {
-
-/// Texture units from here on hold the precomputed tables, in the registry's order (units below
-/// hold a material's normal-map textures: renderer.cpp, draw_scene). The one place table units
-/// are declared: GLSL sees them as defines (table_defines()).
-inline constexpr int kFirstTableUnit = 3;
 
 /// Every table, each with its unit.
 const std::vector<Table>& all_tables();
@@ -22,7 +18,5 @@ const Table& find_table(const std::string& id);
 std::string table_define(const std::string& id);
 /// TABLE_UNIT_<ID> = unit for every table: part of every program that may read a table.
 ShaderDefines table_defines();
-/// `defines` followed by table_defines().
-ShaderDefines with_table_defines(ShaderDefines defines);
 
 }  // namespace glintlab

@@ -1,0 +1,25 @@
+#pragma once
+// GLSL generated from the C++ side, so that the shaders never restate a constant, a layout or the
+// list of light kinds: generated/gpu_contract.glsl (src/core/gpu_contract.hpp's constants and the
+// light kinds' codes as defines), generated/light_kinds.glsl (each kind's file and the dispatch
+// of the light interface, shaders/common/lights.glsl) and generated/shade_all_lights.glsl (the
+// light loop's call per kind, shaders/common/light_loop.glsl).
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "gl/shader_library.hpp"
+
+namespace glintlab {
+
+/// (path, text) of every generated source.
+std::vector<std::pair<std::string, std::string>> generated_shader_sources();
+
+/// Adds the generated sources to a library (every library that compiles the shaders needs them;
+/// Renderer does it for its own).
+void add_contract_sources(ShaderLibrary& shaders);
+
+/// The defines of generated/gpu_contract.glsl, (name, value) in order.
+ShaderDefines contract_defines();
+
+}  // namespace glintlab

@@ -1,0 +1,103 @@
+// Light kinds in the scene format: each registered kind parses its own keys; `sun` is a kind, and
+// a directional light with an angular radius is the same sun; an unknown type lists the kinds.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "scene/light_kind.hpp"
+#include "scene/scene_loader.hpp"
+
+using namespace glintlab;
+
+namespace {
+
+Scene with_light(const std::string& light) {
+  return parse_scene("[[material]]\nname = \"m\"\n[[shape]]\ntype = \"sphere\"\nmaterial = \"m\"\n[[light]]\n" + light,
+                     "lights.toml", ".");
+}
+
+std::string error_of(const std::string& light) {
+  try {
+    with_light(light);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(LightKinds, RegistryHoldsEachKindOnceWithItsCode) {
+  std::set<std::string> ids;
+  for (const auto& k : all_light_kinds()) {
+    EXPECT_TRUE(ids.insert(k.id).second) << k.id << " registered twice";
+    EXPECT_EQ(&all_light_kinds()[static_cast<std::size_t>(k.code())], &k);
+    // The id names the GLSL file and prefixes its functions: a GLSL identifier in lower case.
+    for (char c : k.id) EXPECT_TRUE(c >= 'a' && c <= 'z') << k.id;
+    EXPECT_TRUE(k.parse && k.hash && k.pack) << k.id;
+    EXPECT_EQ(k.has_extent, k.form != LightForm::None) << k.id << ": delta lights have no form, others one";
+  }
+  EXPECT_EQ(&find_light_kind("sun"), &all_light_kinds()[static_cast<std::size_t>(find_light_kind("sun").code())]);
+}
+
+TEST(SceneParser, SunIsALightKind) {
+  const Scene s = with_light("type = \"sun\"\ndirection = [0, -2, 0]\nirradiance = 3\nangular_radius = 0.5\n");
+  ASSERT_EQ(s.lights.size(), 1u);
+  EXPECT_EQ(s.lights[0].kind->id, "sun");
+  EXPECT_FLOAT_EQ(s.lights[0].angular_radius_degrees, 0.5f);
+  EXPECT_FLOAT_EQ(s.lights[0].direction.y, -1.0f) << "normalised";
+  EXPECT_FLOAT_EQ(s.lights[0].colour.g, 3.0f);
+  EXPECT_FLOAT_EQ(with_light("type = \"sun\"\ndirection = [0, -1, 0]\n").lights[0].angular_radius_degrees, 0.27f)
+      << "the documented default";
+  EXPECT_NE(error_of("type = \"sun\"\ndirection = [0, -1, 0]\nangular_radius = 0\n").find("angular_radius"),
+            std::string::npos)
+      << "a sun of no extent is a directional light";
+}
+
+TEST(SceneParser, DirectionalLightWithAnAngularRadiusIsTheSun) {
+  // Scenes written before the sun kind: the same light, the same cache key.
+  const Scene legacy = with_light("type = \"directional\"\ndirection = [0.2, -0.3, 1.0]\nirradiance = 0.5\nangular_radius = 0.5\n");
+  const Scene sun = with_light("type = \"sun\"\ndirection = [0.2, -0.3, 1.0]\nirradiance = 0.5\nangular_radius = 0.5\n");
+  EXPECT_EQ(legacy.lights[0].kind, &find_light_kind("sun"));
+  EXPECT_EQ(legacy.content_hash(), sun.content_hash());
+  const Scene delta = with_light("type = \"directional\"\ndirection = [0.2, -0.3, 1.0]\nirradiance = 0.5\n");
+  EXPECT_EQ(delta.lights[0].kind, &find_light_kind("directional"));
+  EXPECT_NE(delta.content_hash(), sun.content_hash());
+}
+
+TEST(SceneParser, UnknownLightTypeListsTheRegisteredKinds) {
+  const std::string msg = error_of("type = \"spot\"\nposition = [0, 1, 0]\n");
+  ASSERT_FALSE(msg.empty());
+  EXPECT_NE(msg.find("lights.toml"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("spot"), std::string::npos) << msg;
+  for (const auto& id : light_kind_ids()) EXPECT_NE(msg.find(id), std::string::npos) << id << " not in: " << msg;
+  EXPECT_THROW(find_light_kind("spot"), InputError);
+}
+
+TEST(SceneParser, LightHashSeesTheParametersItsKindReads) {
+  const std::string quad = "type = \"quad\"\nposition = [0, 1, 0]\ndirection = [0, -1, 0]\n";
+  const auto base = with_light(quad).content_hash();
+  EXPECT_NE(with_light(quad + "up = [1, 0, 0]\n").content_hash(), base);
+  EXPECT_NE(with_light(quad + "size = [1, 2]\n").content_hash(), base);
+  EXPECT_NE(with_light(quad + "visible = false\n").content_hash(), base);
+  const std::string sun = "type = \"sun\"\ndirection = [0, -1, 0]\n";
+  EXPECT_NE(with_light(sun + "angular_radius = 1\n").content_hash(), with_light(sun).content_hash());
+}
+
+TEST(LightKinds, SceneFormatDocumentsEveryKind) {
+  // docs/scene-format.md has a row of keys for each registered kind.
+  std::ifstream in(std::filesystem::path(GLINTLAB_TEST_DATA).parent_path().parent_path() / "docs" / "scene-format.md");
+  ASSERT_TRUE(in) << "docs/scene-format.md";
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string doc = text.str();
+  const auto begin = doc.find("## `[[light]]`");
+  ASSERT_NE(begin, std::string::npos);
+  const std::string section = doc.substr(begin, doc.find("\n## ", begin + 1) - begin);
+  for (const auto& id : light_kind_ids())
+    EXPECT_NE(section.find("| `" + id + "` |"), std::string::npos) << "no row for the light kind " << id;
+}

@@ -17,7 +17,7 @@ struct Measured {
 
 inline std::map<std::string, Measured> measure_sequence(const std::string& builtin, int frames,
                                                         const std::vector<std::string>& ids) {
-  SceneFixture f(builtin_scene_toml(builtin));
+  SceneFixture f(load_scene("builtin:" + builtin));
   f.scene.path.frames = frames;
   const int w = 160, h = 90;
   std::map<std::string, FlickerAccumulator> flicker;

@@ -8,6 +8,7 @@
 #include "core/colour.hpp"
 #include "core/image_io.hpp"
 #include "eval/commands.hpp"
+#include "eval/outputs.hpp"
 
 namespace glintlab {
 
@@ -66,11 +67,8 @@ AnimateResult run_animate(Session& session, const std::vector<MethodChoice>& met
     }
   }
   const ReferenceFloor reference_floor = floor.floor();
-  nlohmann::json json;
-  json["scene"] = session.scene().source;
+  nlohmann::json json = run_metadata(session);
   json["frames"] = frames;
-  json["width"] = session.width();
-  json["height"] = session.height();
   json["reference_spp"] = reference_floor.spp_max;
   json["reference_spp_min"] = reference_floor.spp_min;
   json["reference_auto"] = session.options().spp_auto;
@@ -79,7 +77,6 @@ AnimateResult run_animate(Session& session, const std::vector<MethodChoice>& met
   json["flicker_floor_definition"] =
       "flicker of the reference's even passes against its odd passes, over sqrt(2): the flicker a second "
       "independent reference would show against the first; smaller method differences are noise";
-  json["device"] = session.context().info().renderer;
   json["flicker_definition"] = "mean over pixels, RGB channels and frames t>=1 of |(m_t - r_t) - (m_{t-1} - r_{t-1})|";
   for (std::size_t i = 0; i < methods.size(); ++i) {
     auto& r = results[i];

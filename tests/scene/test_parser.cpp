@@ -118,17 +118,18 @@ TEST(SceneParser, MissingAndBrokenFilesAreNamed) {
   std::ofstream(dir / "broken.obj") << "v 0 0 0\nf 1 2 3\n";
   std::ofstream(dir / "broken.png") << "not a png";
   try {
-    TestScene().material("m").shape("mesh", "m", {{"file", "broken.obj"}}).point_light({0, 2, 3}).scene(dir.path());
+    static_cast<void>(
+        TestScene().material("m").shape("mesh", "m", {{"file", "broken.obj"}}).point_light({0, 2, 3}).scene(dir.path()));
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("broken.obj"), std::string::npos) << e.what();
   }
   try {
-    TestScene()
-        .material("m", {{"normal_map", TomlKeys{{"file", "broken.png"}}}})
-        .sphere("m")
-        .point_light({0, 2, 3})
-        .scene(dir.path());
+    static_cast<void>(TestScene()
+                          .material("m", {{"normal_map", TomlKeys{{"file", "broken.png"}}}})
+                          .sphere("m")
+                          .point_light({0, 2, 3})
+                          .scene(dir.path()));
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("broken.png"), std::string::npos) << e.what();

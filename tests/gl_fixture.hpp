@@ -1,6 +1,6 @@
 #pragma once
 // Shared GL state for tests: one headless context per test binary, and helpers to render a scene
-// given as TOML text, and to evaluate GLSL functions on the device through a compute shader.
+// (a TestScene or a loaded one), and to evaluate GLSL functions on the device through a compute shader.
 #include <epoxy/gl.h>
 
 #include <map>
@@ -17,6 +17,7 @@
 #include "render/shader_contract.hpp"
 #include "scene/scene_loader.hpp"
 #include "shading/registry.hpp"
+#include "test_scenes.hpp"
 
 namespace glintlab::test {
 
@@ -39,12 +40,13 @@ inline TableCache test_table_cache() { return TableCache(GLINTLAB_TEST_TABLE_CAC
 
 /// A scene on the GPU with its renderer.
 struct SceneFixture {
-  explicit SceneFixture(const std::string& toml) : scene(parse_scene(toml, "test.toml", ".")) {
+  explicit SceneFixture(Scene s) : scene(std::move(s)) {
     context();
     gpu = std::make_unique<GpuScene>(scene, test_table_cache());
     renderer = std::make_unique<Renderer>(shaders(), *gpu);
     reference_backend = make_reference_backend("raster", {shaders(), *gpu, *renderer});
   }
+  explicit SceneFixture(const TestScene& s) : SceneFixture(s.scene()) {}
   /// The scene's camera and film rendered by a method, parameters as `--param` gives them.
   Frame method(const std::string& id, const std::map<std::string, std::string>& params = {}) {
     const auto& m = find_method(id);

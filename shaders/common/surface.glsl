@@ -1,4 +1,4 @@
-// The per-pixel surface record every method receives (DESIGN.md, "Method interface").
+// The per-pixel surface record every method receives (docs/methods.md, "The method interface").
 // Built once per fragment in uniform control flow by passes/forward.frag.
 struct Surface {
   vec3 position;   // world space

@@ -212,7 +212,9 @@ int run_cli(int argc, char** argv) {
       if (!print_scene.empty()) {
         std::cout << builtin_scene_toml(print_scene);
       } else {
-        for (const auto& s : builtin_scenes()) std::cout << "builtin:" << s.name << "\n  " << s.description << "\n";
+        for (const auto& s : builtin_scenes())
+          std::cout << "builtin:" << s.name << "\n  " << s.description
+                    << ("builtin:" + s.name == kDefaultScene ? " (default)" : "") << "\n";
       }
     } else if (app.got_subcommand("info")) {
       print_info();

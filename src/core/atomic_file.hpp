@@ -1,6 +1,6 @@
 #pragma once
 // Writes go to a temporary sibling and are renamed into place on commit(), so a failure never
-// leaves a partial output file (DESIGN.md, "Errors").
+// leaves a partial output file (README.md, "Use": outputs are written to a temporary name and renamed).
 #include <filesystem>
 
 namespace glintlab {

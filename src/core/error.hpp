@@ -1,5 +1,5 @@
 #pragma once
-// Error classes that map to the CLI's exit codes (DESIGN.md, "Errors"):
+// Error classes that map to the CLI's exit codes (README.md, "Use"):
 // InputError -> 2 (bad usage or input), RuntimeFailure -> 1 (failure at run time).
 #include <stdexcept>
 #include <string>

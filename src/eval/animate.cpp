@@ -8,6 +8,7 @@
 #include "core/colour.hpp"
 #include "core/image_io.hpp"
 #include "eval/commands.hpp"
+#include "eval/outputs.hpp"
 
 namespace glintlab {
 
@@ -28,6 +29,17 @@ bool encode_mp4(const std::filesystem::path& frames_dir, const std::filesystem::
 
 }  // namespace
 
+void TemporalAccumulator::add_frame(const Image& method, const Image& reference) {
+  rmse_per_frame_.push_back(rmse(method, reference));
+  flicker_.add_frame(method, reference);
+}
+
+TemporalMetrics TemporalAccumulator::result(const std::string& method) const {
+  const double sum = std::accumulate(rmse_per_frame_.begin(), rmse_per_frame_.end(), 0.0);
+  return {method, rmse_per_frame_, rmse_per_frame_.empty() ? 0.0 : sum / static_cast<double>(rmse_per_frame_.size()),
+          flicker_.flicker()};
+}
+
 void FlickerFloor::add_frame(const ReferenceFrame& reference) {
   halves_.add_frame(reference.even_passes, reference.odd_passes);
   noise_sum_ += reference.passes >= 2 ? reference.noise_rmse() : 0.0;
@@ -44,8 +56,7 @@ AnimateResult run_animate(Session& session, const std::vector<MethodChoice>& met
                                          const std::filesystem::path& out) {
   const int frames = session.frames();
   const Film& film = session.scene().film;
-  std::vector<FlickerAccumulator> flicker(methods.size());
-  std::vector<TemporalMetrics> results(methods.size());
+  std::vector<TemporalAccumulator> accumulators(methods.size());
   FlickerFloor floor;
   // Frames go to a staging folder first, so a failure half-way leaves no partial animation.
   const auto staging = out / ".frames-staging";
@@ -59,18 +70,14 @@ AnimateResult run_animate(Session& session, const std::vector<MethodChoice>& met
     std::snprintf(name, sizeof name, "%04d.png", f);
     write_png(staging / "reference" / name, tonemap_for_display(reference.total, film.exposure, film.bloom));
     for (std::size_t i = 0; i < methods.size(); ++i) {
-      flicker[i].add_frame(rendered[i].total, reference.total);
-      results[i].rmse_per_frame.push_back(rmse(rendered[i].total, reference.total));
+      accumulators[i].add_frame(rendered[i].total, reference.total);
       write_png(staging / methods[i].method->id / name,
                 tonemap_for_display(rendered[i].total, film.exposure, film.bloom));
     }
   }
   const ReferenceFloor reference_floor = floor.floor();
-  nlohmann::json json;
-  json["scene"] = session.scene().source;
+  nlohmann::json json = run_metadata(session);
   json["frames"] = frames;
-  json["width"] = session.width();
-  json["height"] = session.height();
   json["reference_spp"] = reference_floor.spp_max;
   json["reference_spp_min"] = reference_floor.spp_min;
   json["reference_auto"] = session.options().spp_auto;
@@ -79,13 +86,10 @@ AnimateResult run_animate(Session& session, const std::vector<MethodChoice>& met
   json["flicker_floor_definition"] =
       "flicker of the reference's even passes against its odd passes, over sqrt(2): the flicker a second "
       "independent reference would show against the first; smaller method differences are noise";
-  json["device"] = session.context().info().renderer;
   json["flicker_definition"] = "mean over pixels, RGB channels and frames t>=1 of |(m_t - r_t) - (m_{t-1} - r_{t-1})|";
+  std::vector<TemporalMetrics> results;
   for (std::size_t i = 0; i < methods.size(); ++i) {
-    auto& r = results[i];
-    r.method = methods[i].method->id;
-    r.mean_rmse = std::accumulate(r.rmse_per_frame.begin(), r.rmse_per_frame.end(), 0.0) / frames;
-    r.flicker = flicker[i].flicker();
+    const auto& r = results.emplace_back(accumulators[i].result(methods[i].method->id));
     json["methods"].push_back(
         {{"method", r.method}, {"mean_rmse", r.mean_rmse}, {"flicker", r.flicker}, {"rmse_per_frame", r.rmse_per_frame}});
   }

@@ -1,12 +1,11 @@
 #include <algorithm>
-#include <chrono>
-#include <epoxy/gl.h>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.hpp"
 #include "eval/commands.hpp"
-#include "gl/objects.hpp"
+#include "eval/outputs.hpp"
+#include "gl/gpu_timer.hpp"
 
 namespace glintlab {
 
@@ -24,7 +23,7 @@ double median(std::vector<double> v) {
 std::vector<BenchResult> run_bench(Session& session, const std::vector<MethodChoice>& methods, int frames, int warmup,
                                    const std::filesystem::path& out) {
   const Camera camera = session.camera(0);
-  gl::Query query = gl::make_query(GL_TIME_ELAPSED);
+  GpuTimer timer;
   // The methods, then the fixed cost of a frame: the same draws with a module that shades nothing.
   const std::size_t count = methods.size() + 1;
   auto draw = [&](std::size_t k) {
@@ -35,31 +34,20 @@ std::vector<BenchResult> run_bench(Session& session, const std::vector<MethodCho
   };
   for (std::size_t k = 0; k < count; ++k)
     for (int i = 0; i < warmup; ++i) draw(k);
-  glFinish();
+  finish_gl_work();
   // Methods take turns frame by frame, so that drift of the machine's speed affects them alike
   // and the ratios between them are fair.
   std::vector<std::vector<double>> gpu(count), wall(count);
   for (int i = 0; i < frames; ++i)
     for (std::size_t k = 0; k < count; ++k) {
-      const auto t0 = std::chrono::steady_clock::now();
-      glBeginQuery(GL_TIME_ELAPSED, query.id());
-      draw(k);
-      glEndQuery(GL_TIME_ELAPSED);
-      glFinish();
-      const auto t1 = std::chrono::steady_clock::now();
-      GLuint64 ns = 0;
-      glGetQueryObjectui64v(query.id(), GL_QUERY_RESULT, &ns);
-      gpu[k].push_back(static_cast<double>(ns) * 1e-6);
-      wall[k].push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+      const GpuTime time = timer.time([&] { draw(k); });
+      gpu[k].push_back(time.gpu_ms);
+      wall[k].push_back(time.wall_ms);
     }
   std::vector<BenchResult> results;
   for (std::size_t k = 0; k < count; ++k)
     results.push_back({k < methods.size() ? methods[k].method->id : kUnshaded, median(gpu[k]), median(wall[k]), frames});
-  nlohmann::json json;
-  json["scene"] = session.scene().source;
-  json["width"] = session.width();
-  json["height"] = session.height();
-  json["device"] = session.context().info().renderer;
+  nlohmann::json json = run_metadata(session);
   json["frames"] = frames;
   json["warmup"] = warmup;
   json["unshaded_definition"] = std::string(kUnshaded) +

@@ -25,6 +25,18 @@ struct TemporalMetrics {
   double flicker = 0;
 };
 
+/// One method's error over a sequence, added frame by frame: the RMSE of each frame, their mean,
+/// and the flicker (FlickerAccumulator).
+class TemporalAccumulator {
+ public:
+  void add_frame(const Image& method, const Image& reference);
+  [[nodiscard]] TemporalMetrics result(const std::string& method) const;
+
+ private:
+  std::vector<double> rmse_per_frame_;
+  FlickerAccumulator flicker_;
+};
+
 /// What the reference of an animation allows one to resolve.
 struct ReferenceFloor {
   double flicker = 0;     ///< the flicker a second independent reference would show against the first

@@ -133,11 +133,8 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
   // cannot be told from another's closer than this) and the standard error of each energy ratio.
   csv << "method,rmse,rmse_specular,psnr,energy_ratio,energy_ratio_specular,max_error,reference_noise_rmse,"
          "energy_ratio_error,energy_ratio_specular_error\n";
-  nlohmann::json json;
-  json["scene"] = session.scene().source;
+  nlohmann::json json = run_metadata(session);
   json["frame"] = frame;
-  json["width"] = session.width();
-  json["height"] = session.height();
   json["reference_spp"] = reference_estimate.spp;
   json["reference_passes"] = reference_estimate.passes;
   json["reference_auto"] = session.options().spp_auto;
@@ -151,7 +148,6 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
     json["reference_noise_target"] = reference_noise_target(reference, ranked, session.options().noise_fraction);
     json["reference_max_spp"] = session.options().max_spp;
   }
-  json["device"] = session.context().info().renderer;
   json["error_map_scale"] = error_scale;
   json["crops"] = crops;
   json["columns"] = "crops: reference, then methods in order";

@@ -20,6 +20,15 @@ void write_reference(const std::filesystem::path& dir, const std::string& stem, 
   write_png(dir / (stem + ".png"), tonemap_for_display(reference.mean.total, film.exposure, film.bloom));
 }
 
+nlohmann::json run_metadata(Session& session) {
+  nlohmann::json json;
+  json["scene"] = session.scene().source;
+  json["width"] = session.width();
+  json["height"] = session.height();
+  json["device"] = session.context().info().renderer;
+  return json;
+}
+
 std::string describe_reference(const ReferenceFrame& reference) {
   char line[200];
   std::snprintf(line, sizeof line, "reference %d spp (%d passes), noise rmse %.3g, energy +- %.2g%%", reference.spp,

@@ -1,9 +1,11 @@
 #pragma once
 // Writing rendered frames: a linear EXR (main layer = total radiance, layer "specular") and a
-// tonemapped sRGB PNG for people to look at.
+// tonemapped sRGB PNG for people to look at; and the run's description every metrics file carries.
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 
+#include "eval/session.hpp"
 #include "render/renderer.hpp"
 
 namespace glintlab {
@@ -13,6 +15,9 @@ void write_frame(const std::filesystem::path& dir, const std::string& stem, cons
 /// The same for a reference, whose EXR also holds its per-pixel standard error ("standard_error").
 void write_reference(const std::filesystem::path& dir, const std::string& stem, const ReferenceFrame& reference,
                      const Film& film);
+/// The keys that describe a run in every metrics file (compare's and animate's metrics.json,
+/// bench.json): the scene as given, the image size and the GL device. Each command adds its own.
+nlohmann::json run_metadata(Session& session);
 /// One line on what a reference reached: samples, passes, noise RMSE, energy error.
 std::string describe_reference(const ReferenceFrame& reference);
 

@@ -31,6 +31,7 @@ struct Shape {
 struct Scene {
   std::string name;    ///< builtin name or file stem
   std::string source;  ///< "builtin:NAME" or the file path given by the user
+  std::string description;  ///< the file's one-line `description` (listings only)
   Film film;
   Camera camera;
   CameraPath path;

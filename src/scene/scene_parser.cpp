@@ -239,6 +239,7 @@ Scene parse_scene(std::string_view text, const std::string& file, const std::fil
   scene.source = file;
   scene.name = std::filesystem::path(file).stem().string();
   TomlReader r(root, file, "");
+  scene.description = r.get_string("description", "");
   if (const toml::table* film = r.get_table("film")) parse_film(TomlReader(*film, file, "[film]"), scene.film);
   if (const toml::table* cam = r.get_table("camera"))
     parse_camera(TomlReader(*cam, file, "[camera]"), scene.camera, scene.path);

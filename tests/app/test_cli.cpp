@@ -8,9 +8,13 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/image_io.hpp"
+#include "scratch_directory.hpp"
 #include "test_scenes.hpp"
 
 namespace fs = std::filesystem;
+using glintlab::test::ScratchDirectory;
+using glintlab::test::TestScene;
 
 namespace {
 
@@ -19,40 +23,6 @@ struct CliResult {
   std::string err;
 };
 
-fs::path scratch() {
-  static const fs::path dir = fs::temp_directory_path() / ("glintlab-cli-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir;
-}
-
-CliResult run_glintlab(const std::string& args) {
-  const fs::path err = scratch() / "stderr.txt";
-  const std::string cmd = std::string("GLINTLAB_CACHE_DIR='") + (scratch() / "cache").string() + "' '" GLINTLAB_BINARY "' " +
-                          args + " >/dev/null 2>'" + err.string() + "'";
-  const int status = std::system(cmd.c_str());
-  std::ifstream in(err);
-  std::stringstream s;
-  s << in.rdbuf();
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, s.str()};
-}
-
-fs::path write(const std::string& name, const std::string& text) {
-  const fs::path p = scratch() / name;
-  std::ofstream(p) << text;
-  return p;
-}
-
-const std::string kScene = "[film]\nwidth = 16\nheight = 16\n" + glintlab::test::kMinimalScene;
-
-void expect_bad_input(const std::string& args, std::initializer_list<const char*> fragments) {
-  const fs::path out = scratch() / "out-should-not-exist";
-  fs::remove_all(out);
-  const CliResult r = run_glintlab(args + " -o '" + out.string() + "'");
-  EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
-  for (const char* f : fragments) EXPECT_NE(r.err.find(f), std::string::npos) << "'" << f << "' not in: " << r.err;
-  EXPECT_FALSE(fs::exists(out)) << args;
-}
-
 std::string read_bytes(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::stringstream s;
@@ -60,17 +30,50 @@ std::string read_bytes(const fs::path& p) {
   return s.str();
 }
 
+const std::string kScene = TestScene::minimal().film(16, 16).toml();
+
+/// Each test runs glintlab in a scratch directory of its own, with its own reference cache.
+class Cli : public ::testing::Test {
+ protected:
+  CliResult run_glintlab(const std::string& args) const {
+    const fs::path err = scratch / "stderr.txt";
+    const std::string cmd = "GLINTLAB_CACHE_DIR='" + cache().string() + "' '" GLINTLAB_BINARY "' " + args +
+                            " >/dev/null 2>'" + err.string() + "'";
+    const int status = std::system(cmd.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_bytes(err)};
+  }
+
+  fs::path write(const std::string& name, const std::string& text) const {
+    const fs::path p = scratch / name;
+    std::ofstream(p) << text;
+    return p;
+  }
+
+  fs::path cache() const { return scratch / "cache"; }
+
+  void expect_bad_input(const std::string& args, std::initializer_list<const char*> fragments) const {
+    const fs::path out = scratch / "out-should-not-exist";
+    fs::remove_all(out);
+    const CliResult r = run_glintlab(args + " -o '" + out.string() + "'");
+    EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
+    for (const char* f : fragments) EXPECT_NE(r.err.find(f), std::string::npos) << "'" << f << "' not in: " << r.err;
+    EXPECT_FALSE(fs::exists(out)) << args;
+  }
+
+  ScratchDirectory scratch;
+};
+
 }  // namespace
 
-TEST(Cli, BadInputClassesExitWith2AndWriteNothing) {
-  const auto missing = (scratch() / "missing.toml").string();
+TEST_F(Cli, BadInputClassesExitWith2AndWriteNothing) {
+  const auto missing = (scratch / "missing.toml").string();
   expect_bad_input("render --scene '" + missing + "'", {"missing.toml", "does not exist"});
   expect_bad_input("render --scene '" + write("malformed.toml", "[film\n").string() + "'", {"malformed.toml:1", "malformed"});
-  expect_bad_input("render --scene '" + write("unknown.toml", kScene + "[camera]\nfoo = 1\n").string() + "'", {"'foo'", "not a known key"});
-  expect_bad_input("render --scene '" + write("type.toml", "[film]\nwidth = 1.5\n" + glintlab::test::kMinimalScene).string() + "'", {"width", "not an integer"});
-  expect_bad_input("render --scene '" + write("range.toml", kScene + "[[light]]\ntype = \"sphere\"\nposition = [0,0,0]\nradius = -1\n").string() + "'",
+  expect_bad_input("render --scene '" + write("unknown.toml", TestScene::minimal().film(16, 16).table("camera", {{"foo", 1}}).toml()).string() + "'", {"'foo'", "not a known key"});
+  expect_bad_input("render --scene '" + write("type.toml", TestScene::minimal().table("film", {{"width", 1.5}}).toml()).string() + "'", {"width", "not an integer"});
+  expect_bad_input("render --scene '" + write("range.toml", TestScene::minimal().film(16, 16).sphere_light({0, 0, 0}, -1, 1).toml()).string() + "'",
                    {"radius", "out of range"});
-  expect_bad_input("render --scene '" + write("mesh.toml", kScene + "[[shape]]\ntype = \"mesh\"\nmaterial = \"m\"\nfile = \"nope.obj\"\n").string() + "'",
+  expect_bad_input("render --scene '" + write("mesh.toml", TestScene::minimal().film(16, 16).shape("mesh", "m", {{"file", "nope.obj"}}).toml()).string() + "'",
                    {"nope.obj"});
   expect_bad_input("render --scene builtin:nothing", {"builtin:nothing", "spheres"});
   expect_bad_input("render --method magic", {"unknown method 'magic'", "conventional"});
@@ -89,16 +92,16 @@ TEST(Cli, BadInputClassesExitWith2AndWriteNothing) {
   expect_bad_input("render --no-such-flag", {"no-such-flag"});
 }
 
-TEST(Cli, ListingsWork) {
+TEST_F(Cli, ListingsWork) {
   EXPECT_EQ(run_glintlab("methods").code, 0);
   EXPECT_EQ(run_glintlab("scenes").code, 0);
   EXPECT_EQ(run_glintlab("scenes --print spheres").code, 0);
   EXPECT_EQ(run_glintlab("info").code, 0);
 }
 
-TEST(Cli, SameCommandWritesIdenticalFiles) {
+TEST_F(Cli, SameCommandWritesIdenticalFiles) {
   const fs::path scene = write("det.toml", kScene);
-  const fs::path a = scratch() / "det-a", b = scratch() / "det-b";
+  const fs::path a = scratch / "det-a", b = scratch / "det-b";
   for (const auto& out : {a, b}) {
     const CliResult r = run_glintlab("compare --no-cache -q --spp 4 --scene '" + scene.string() + "' -o '" + out.string() + "'");
     ASSERT_EQ(r.code, 0) << r.err;
@@ -109,25 +112,54 @@ TEST(Cli, SameCommandWritesIdenticalFiles) {
   }
 }
 
-TEST(Cli, ReferenceCacheIsReused) {
+TEST_F(Cli, ReferenceCacheIsReused) {
   const fs::path scene = write("cache.toml", kScene);
-  fs::remove_all(scratch() / "cache");
-  ASSERT_EQ(run_glintlab("render -q --reference=16 --scene '" + scene.string() + "' -o '" + (scratch() / "c1").string() + "'").code, 0);
-  int entries = 0;
-  for ([[maybe_unused]] const auto& e : fs::directory_iterator(scratch() / "cache")) ++entries;
-  EXPECT_EQ(entries, 2);  // the EXR and its passes' JSON
-  ASSERT_EQ(run_glintlab("render -q --reference=16 --scene '" + scene.string() + "' -o '" + (scratch() / "c2").string() + "'").code, 0);
-  EXPECT_EQ(read_bytes(scratch() / "c1" / "reference.exr"), read_bytes(scratch() / "c2" / "reference.exr"));
+  const auto render = [&](const std::string& out) {
+    return run_glintlab("render -q --reference=16 --scene '" + scene.string() + "' -o '" + (scratch / out).string() + "'");
+  };
+  ASSERT_EQ(render("first").code, 0);
+  std::vector<fs::path> entries;
+  for (const auto& e : fs::directory_iterator(cache())) entries.push_back(e.path());
+  ASSERT_EQ(entries.size(), 2u);  // the EXR and its passes' JSON
+  const fs::path exr = entries[0].extension() == ".exr" ? entries[0] : entries[1];
+  // Replace the cached mean by an image no render gives: a run that reads the cache writes it
+  // as its reference, a run that renders again would not.
+  const glintlab::Image marker(16, 16, glm::vec3(0.25f, 0.5f, 0.75f));
+  const glintlab::Image specular = glintlab::read_exr(exr, "specular"), error = glintlab::read_exr(exr, "standard_error"),
+                        even = glintlab::read_exr(exr, "even_passes"), odd = glintlab::read_exr(exr, "odd_passes");
+  glintlab::write_exr(exr, {{"", &marker}, {"specular", &specular}, {"standard_error", &error},
+                            {"even_passes", &even}, {"odd_passes", &odd}});
+  ASSERT_EQ(render("second").code, 0);
+  EXPECT_TRUE(glintlab::read_exr(scratch / "second" / "reference.exr").pixels() == marker.pixels())
+      << "the second run did not take its reference from the cache";
+  // A truncated entry is reported, ignored and replaced: the image is rendered again.
+  fs::resize_file(exr, 100);
+  const CliResult third = render("third");
+  ASSERT_EQ(third.code, 0);
+  EXPECT_NE(third.err.find("ignoring unreadable cache entry"), std::string::npos) << third.err;
+  EXPECT_EQ(read_bytes(scratch / "first" / "reference.exr"), read_bytes(scratch / "third" / "reference.exr"));
+  EXPECT_GT(fs::file_size(exr), 100u);
 }
 
-TEST(Cli, AutoReferenceReachesItsTargetOrItsCapAndReportsItsNoise) {
-  const fs::path scene = write("auto.toml", "[film]\nwidth = 24\nheight = 16\n" + glintlab::test::kMinimalScene +
-                                                "[[light]]\ntype = \"sphere\"\nposition = [1, 2, 2]\nradius = 0.3\n"
-                                                "radiance = 20\n");
-  fs::remove_all(scratch() / "cache");
+TEST_F(Cli, ACopiedBuiltinSceneFileRendersLikeTheBuiltin) {
+  // What a user does: copy scenes/NAME.toml (= `glintlab scenes --print NAME`) and load it by path.
+  const fs::path copy = scratch / "my-mirror-bumps.toml";
+  fs::copy_file(GLINTLAB_SCENES_DIR "/mirror-bumps.toml", copy);
+  for (const auto& [scene, out] : {std::pair<std::string, std::string>{"builtin:mirror-bumps", "builtin.exr"},
+                                   {copy.string(), "copy.exr"}}) {
+    const CliResult r = run_glintlab("render -q --method lean --width 64 --height 36 --scene '" + scene + "' -o '" +
+                                     (scratch / out).string() + "'");
+    ASSERT_EQ(r.code, 0) << r.err;
+  }
+  EXPECT_EQ(read_bytes(scratch / "builtin.exr"), read_bytes(scratch / "copy.exr"));
+}
+
+TEST_F(Cli, AutoReferenceReachesItsTargetOrItsCapAndReportsItsNoise) {
+  const fs::path scene =
+      write("auto.toml", TestScene::minimal().film(24, 16).sphere_light({1, 2, 2}, 0.3, 20).toml());
   int spp = 0;
   for (const int cap : {256, 1024}) {
-    const fs::path out = scratch() / ("auto-" + std::to_string(cap));
+    const fs::path out = scratch / ("auto-" + std::to_string(cap));
     const CliResult r = run_glintlab("compare -q --spp auto --max-spp " + std::to_string(cap) +
                                      " --methods conventional,toksvig,kaplanyan-ggx --scene '" + scene.string() +
                                      "' -o '" + out.string() + "'");

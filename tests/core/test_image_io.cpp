@@ -5,11 +5,12 @@
 #include "core/colour.hpp"
 #include "core/error.hpp"
 #include "core/image_io.hpp"
+#include "scratch_directory.hpp"
 
 using namespace glintlab;
 
 TEST(ImageIo, ExrRoundTripKeepsFloatsAndLayers) {
-  const auto dir = std::filesystem::temp_directory_path() / "glintlab-test-exr";
+  const test::ScratchDirectory dir;
   Image a(5, 3), b(5, 3);
   for (int y = 0; y < 3; ++y)
     for (int x = 0; x < 5; ++x) {
@@ -24,9 +25,8 @@ TEST(ImageIo, ExrRoundTripKeepsFloatsAndLayers) {
   EXPECT_THROW(read_exr(dir / "missing.exr"), InputError);
   // Nothing but the committed file is left behind.
   int files = 0;
-  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir)) ++files;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir.path())) ++files;
   EXPECT_EQ(files, 1);
-  std::filesystem::remove_all(dir);
 }
 
 TEST(Colour, TonemapIsMonotonicAndBounded) {

@@ -44,9 +44,9 @@ const std::map<std::string, Example>& examples() {
   return e;
 }
 
-std::string light_scene(const std::string& light) {
-  return "[[material]]\nname = \"m\"\n[[shape]]\ntype = \"sphere\"\nmaterial = \"m\"\nradius = 0.01\n"
-         "translate = [0, -100, 0]\n[[light]]\n" + light;
+/// A scene holding only `light` (TOML keys of one [[light]]) and a speck of a sphere far away.
+TestScene light_scene(const std::string& light) {
+  return TestScene().material("m").sphere("m", {{"radius", 0.01}, {"translate", {0, -100, 0}}}).raw("[[light]]\n" + light);
 }
 
 const char* kIncludes = "#include \"common/lights.glsl\"\n";

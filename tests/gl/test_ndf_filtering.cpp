@@ -87,12 +87,10 @@ TEST(NdfFiltering, BoxAveragedSlopeDensityMatchesQuadrature) {
 TEST(NdfFiltering, LeanCovarianceMatchesCpuMoments) {
   // The slope-moment textures, mipmapped by the GL, sampled at texel centres of level L, give
   // the covariance of the slopes of the 2^L x 2^L texels under each coarse texel.
-  SceneFixture f(std::string(kMinimalScene) + R"(
-[[material]]
-name = "bumpy"
-alpha = 0.1
-normal_map = { generator = "bumps", resolution = 64, alpha = 0.4, waves = 24, max_frequency = 6, seed = 3 }
-)");
+  SceneFixture f(TestScene::minimal().material(
+      "bumpy", {{"alpha", 0.1},
+                {"normal_map", TomlKeys{{"generator", "bumps"}, {"resolution", 64}, {"alpha", 0.4}, {"waves", 24},
+                                        {"max_frequency", 6}, {"seed", 3}}}}));
   const int material = 1;
   const NormalMap& map = *f.scene.materials[material].normal_map;
   ASSERT_EQ(map.width, 64);

@@ -355,10 +355,10 @@ TEST(SamplingChiSquare, BeckmannNormals) {
 
 namespace {
 
-/// A scene with one light (and an object far away, which nothing here looks at).
-std::string light_scene(const std::string& light) {
-  return "[[material]]\nname = \"m\"\n[[shape]]\ntype = \"sphere\"\nmaterial = \"m\"\nradius = 0.01\n"
-         "translate = [0, -100, 0]\n[[light]]\n" + light;
+/// A scene with one light, given as the keys of its [[light]] table (and an object far away,
+/// which nothing here looks at).
+TestScene light_scene(const std::string& light) {
+  return TestScene().material("m").sphere("m", {{"radius", 0.01}, {"translate", {0, -100, 0}}}).raw("[[light]]\n" + light);
 }
 
 const char* kLightIncludes = "#include \"common/lights.glsl\"\n";
@@ -821,36 +821,23 @@ namespace {
 
 /// A glossy, normal-mapped plane (f0 = 1, no diffuse) under a quad light whose reflection the
 /// camera sees, as the built-in quad-light scene has it, at a test's size.
-std::string quad_light_plane(double alpha) {
-  return R"(
-[film]
-width = 48
-height = 48
-[camera]
-position = [0.0, 1.0, 3.0]
-target = [0.0, 0.0, 1.0]
-fov = 50
-[[material]]
-name = "glossy"
-ndf = "ggx"
-alpha = )" + std::to_string(alpha) + R"(
-f0 = 1
-normal_map = { generator = "bumps", resolution = 128, alpha = 0.1, waves = 32, max_frequency = 8, seed = 2 }
-normal_map_tiling = 1
-[[shape]]
-type = "plane"
-material = "glossy"
-size = 8
-uv_scale = 4
-[[light]]
-type = "quad"
-position = [0.0, 2.0, -2.0]
-direction = [0.0, -2.0, 3.33]
-size = [1.5, 0.5]
-up = [0, 1, 0]
-radiance = 5
-visible = false
-)";
+TestScene quad_light_plane(double alpha) {
+  return TestScene()
+      .film(48, 48)
+      .camera({0.0, 1.0, 3.0}, {0.0, 0.0, 1.0}, 50)
+      .material("glossy", {{"ndf", "ggx"},
+                           {"alpha", alpha},
+                           {"f0", 1},
+                           {"normal_map", TomlKeys{{"generator", "bumps"}, {"resolution", 128}, {"alpha", 0.1},
+                                                   {"waves", 32}, {"max_frequency", 8}, {"seed", 2}}},
+                           {"normal_map_tiling", 1}})
+      .plane("glossy", {{"size", 8}, {"uv_scale", 4}})
+      .light("quad", {{"position", {0.0, 2.0, -2.0}},
+                      {"direction", {0.0, -2.0, 3.33}},
+                      {"size", {1.5, 0.5}},
+                      {"up", {0, 1, 0}},
+                      {"radiance", 5},
+                      {"visible", false}});
 }
 
 }  // namespace
@@ -880,10 +867,7 @@ TEST(QuadLight, EveryMethodRendersItFinite) {
 }
 
 TEST(QuadLight, BuiltinSceneReferenceIsFinite) {
-  std::string toml = builtin_scene_toml("quad-light");
-  toml.replace(toml.find("width = 640"), 11, "width = 64");
-  toml.replace(toml.find("height = 360"), 12, "height = 36");
-  SceneFixture f(toml);
+  SceneFixture f(builtin_scene("quad-light", 64, 36));
   ASSERT_EQ(f.scene.lights.size(), 1u);
   EXPECT_EQ(f.scene.lights[0].kind->id, "quad");
   const Frame ref = f.reference(16);

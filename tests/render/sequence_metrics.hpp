@@ -1,11 +1,13 @@
 #pragma once
-// Mean RMSE and flicker of methods over the first frames of a built-in scene's camera path, at
-// 160x90 against a 64-spp reference per frame: the small versions of docs/results.md's tables.
+// Mean RMSE and flicker of methods over a built-in scene's camera path shortened to `frames`, at
+// 160x90 against a 64-spp reference per frame: the small versions of docs/results.md's tables,
+// measured with the accumulator of `glintlab animate` (TemporalAccumulator, tested through
+// run_animate in tests/eval/test_animate.cpp).
 #include <map>
 #include <string>
 #include <vector>
 
-#include "core/metrics.hpp"
+#include "eval/commands.hpp"
 #include "gl_fixture.hpp"
 
 namespace glintlab::test {
@@ -17,11 +19,10 @@ struct Measured {
 
 inline std::map<std::string, Measured> measure_sequence(const std::string& builtin, int frames,
                                                         const std::vector<std::string>& ids) {
-  SceneFixture f(builtin_scene_toml(builtin));
+  SceneFixture f(load_scene("builtin:" + builtin));
   f.scene.path.frames = frames;
   const int w = 160, h = 90;
-  std::map<std::string, FlickerAccumulator> flicker;
-  std::map<std::string, Measured> out;
+  std::map<std::string, TemporalAccumulator> sequences;
   for (int t = 0; t < frames; ++t) {
     const Camera camera = f.scene.path.at(f.scene.camera, t);
     ReferenceSettings settings;
@@ -31,11 +32,14 @@ inline std::map<std::string, Measured> measure_sequence(const std::string& built
     for (const auto& id : ids) {
       const auto& method = find_method(id);
       const Frame m = f.renderer->render(method, resolve_params(method, {}), camera, w, h);
-      out[id].rmse += rmse(m.total, reference.total) / frames;
-      flicker[id].add_frame(m.total, reference.total);
+      sequences[id].add_frame(m.total, reference.total);
     }
   }
-  for (auto& [id, acc] : flicker) out[id].flicker = acc.flicker();
+  std::map<std::string, Measured> out;
+  for (const auto& [id, sequence] : sequences) {
+    const TemporalMetrics r = sequence.result(id);
+    out[id] = {r.mean_rmse, r.flicker};
+  }
   return out;
 }
 

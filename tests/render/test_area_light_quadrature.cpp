@@ -16,39 +16,16 @@ namespace {
 
 // Orthographic view at 45 degrees onto the plane y = 0; the light faces the plane's centre from
 // the mirror direction, so the highlight, its shoulders and the dark surround are all in view.
-const char* kScene = R"(
-[film]
-width = 48
-height = 40
-[camera]
-type = "orthographic"
-position = [0.0, 3.0, 3.0]
-target = [0.0, 0.0, 0.0]
-view_height = 2.4
-[[material]]
-name = "m"
-alpha = %ALPHA%
-f0 = 1
-diffuse = 0
-[[shape]]
-type = "plane"
-material = "m"
-size = 10
-[[light]]
-%LIGHT%
-position = [0.0, 1.5, -1.5]
-direction = [0.0, -1.0, 1.0]
-radiance = 1
-visible = false
-)";
-const char* kQuad = "type = \"quad\"\nsize = [1.0, 0.6]\nup = [1.0, 0.0, 0.0]";
-const char* kDisk = "type = \"disk\"\nradius = 0.4";
-
-std::string scene_text(double alpha, bool quad) {
-  std::string s = kScene;
-  s.replace(s.find("%ALPHA%"), 7, std::to_string(alpha));
-  s.replace(s.find("%LIGHT%"), 7, quad ? kQuad : kDisk);
-  return s;
+TestScene plane_under_area_light(double alpha, bool quad) {
+  TomlKeys light = quad ? TomlKeys{{"size", {1.0, 0.6}}, {"up", {1.0, 0.0, 0.0}}} : TomlKeys{{"radius", 0.4}};
+  light.insert(light.end(), {{"position", {0.0, 1.5, -1.5}}, {"direction", {0.0, -1.0, 1.0}}, {"radiance", 1},
+                             {"visible", false}});
+  return TestScene()
+      .film(48, 40)
+      .orthographic_camera({0.0, 3.0, 3.0}, {0.0, 0.0, 0.0}, 2.4)
+      .material("m", {{"alpha", alpha}, {"f0", 1}, {"diffuse", 0}})
+      .plane("m", {{"size", 10}})
+      .light(quad ? "quad" : "disk", light);
 }
 
 const double kGl4Nodes[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526};
@@ -150,7 +127,7 @@ class GlossyPlaneUnderAreaLight : public ::testing::TestWithParam<std::tuple<boo
 
 TEST_P(GlossyPlaneUnderAreaLight, ReferenceAndConventionalMatchQuadrature) {
   const auto [quad, alpha] = GetParam();
-  SceneFixture f(scene_text(alpha, quad));
+  SceneFixture f(plane_under_area_light(alpha, quad));
   const auto truth = quadrature(f.scene, alpha);
 
   // The reference: within its own error. Energy within 4 standard errors of the mean (the passes'

@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <sstream>
 
 #include "core/metrics.hpp"
 #include "gl_fixture.hpp"
@@ -17,35 +16,17 @@ namespace {
 
 // A flat glinty patch seen straight down by an orthographic camera, lit by a point light above
 // it: the image is the lobe spread over the patch. camera_x shifts the camera along +x.
-std::string flat_patch(double log_density, double rho, double camera_x = 0.0, int size = 128) {
-  std::ostringstream s;
-  s << "[film]\nwidth = " << size << "\nheight = " << size << R"(
-[camera]
-type = "orthographic"
-view_height = 2.0
-)" << "position = [" << camera_x << ", 3, 0]\ntarget = [" << camera_x << R"(, 0, 0]
-up = [0, 0, -1]
-
-[[material]]
-name = "glitter"
-type = "glinty"
-sigma = [0.1, 0.07]
-)" << "rho = " << rho << "\nlog_density = " << log_density << R"(
-relative_area = 1
-f0 = 0.9
-
-[[shape]]
-type = "plane"
-material = "glitter"
-size = 4
-uv_scale = 2
-
-[[light]]
-type = "point"
-position = [0.1, 1.0, 0.05]
-intensity = 1
-)";
-  return s.str();
+TestScene flat_patch(double log_density, double rho, double camera_x = 0.0, int size = 128) {
+  return TestScene()
+      .film(size, size)
+      .orthographic_camera({camera_x, 3, 0}, {camera_x, 0, 0}, 2.0, {{"up", {0, 0, -1}}})
+      .glinty_material("glitter", {{"sigma", {0.1, 0.07}},
+                                   {"rho", rho},
+                                   {"log_density", log_density},
+                                   {"relative_area", 1},
+                                   {"f0", 0.9}})
+      .plane("glitter", {{"size", 4}, {"uv_scale", 2}})
+      .point_light({0.1, 1.0, 0.05}, 1);
 }
 
 double block_mean(const Image& img, int x0, int y0, int n) {
@@ -93,7 +74,7 @@ TEST(Chermain, WithRhoTheGlintsConvergeToTheRotatedBeckmannRender) {
 }
 
 TEST(Chermain, Chermain2021WithoutKernelAndRhoEquals2020) {
-  SceneFixture f(builtin_scene_toml("glint-tubes"));
+  SceneFixture f(load_scene("builtin:glint-tubes"));
   f.scene.film = {160, 90, 0.0f};
   const Frame a = f.method("chermain2020"), b = f.method("chermain2021", {{"kernel", "0"}});
   EXPECT_EQ(rmse(a.total, b.total), 0.0);
@@ -121,7 +102,7 @@ TEST(Chermain, GlintsAreAttachedToTheSurfaceAndDeterministic) {
 TEST(Chermain, TheCellGuardNeverTruncatesOnTheBuiltInScenesAt1080p) {
   // passes/glint_cells.glsl: cells inside each pixel's footprint at its two levels, unguarded.
   for (const std::string name : {"glint-tubes", "glint-sphere", "glint-terrain"}) {
-    SceneFixture f(builtin_scene_toml(name));
+    SceneFixture f(load_scene("builtin:" + name));
     for (int frame : {0, f.scene.path.frames - 1}) {
       const Frame cells = f.renderer->render_module("passes/glint_cells.glsl", {}, f.scene.path.at(f.scene.camera, frame),
                                                     1920, 1080);

@@ -11,41 +11,17 @@ using namespace glintlab::test;
 
 namespace {
 
-/// Orthographic camera looking straight down at the xz square [-1,1]^2; column -> +x, row -> +z.
-const char* kTopDownCamera = R"(
-[camera]
-type = "orthographic"
-position = [0, 10, 0]
-target = [0, 0, 0]
-up = [0, 0, -1]
-view_height = 2
-near = 1
-far = 20
-)";
-
 glm::dvec2 pixel_centre(int px, int py, int n) { return {-1.0 + (px + 0.5) * 2.0 / n, -1.0 + (py + 0.5) * 2.0 / n}; }
 
 }  // namespace
 
 TEST(Images, LambertPlaneUnderPointLightMatchesTheClosedForm) {
-  SceneFixture f(std::string(kTopDownCamera) + R"(
-[film]
-width = 32
-height = 32
-[[material]]
-name = "white"
-f0 = 0
-diffuse = 0.5
-alpha = 0.5
-[[shape]]
-type = "plane"
-material = "white"
-size = 2
-[[light]]
-type = "point"
-position = [0.3, 1.0, 0.2]
-intensity = 2.0
-)");
+  SceneFixture f(TestScene()
+                     .top_down_camera()
+                     .film(32, 32)
+                     .material("white", {{"f0", 0}, {"diffuse", 0.5}, {"alpha", 0.5}})
+                     .plane("white", {{"size", 2}})
+                     .point_light({0.3, 1.0, 0.2}, 2.0));
   const Frame img = f.method("conventional");
   double worst = 0;
   for (int py = 0; py < 32; ++py)
@@ -60,27 +36,12 @@ intensity = 2.0
 }
 
 TEST(Images, GgxPlaneUnderDirectionalLightMatchesTheBrdfAtTheCentrePixel) {
-  SceneFixture f(R"(
-[film]
-width = 33
-height = 33
-[camera]
-position = [0, 2, 2]
-target = [0, 0, 0]
-fov = 30
-[[material]]
-name = "metal"
-alpha = 0.3
-f0 = 0.9
-[[shape]]
-type = "plane"
-material = "metal"
-size = 4
-[[light]]
-type = "directional"
-direction = [0.4, -1.0, 0.9]
-irradiance = 3.0
-)");
+  SceneFixture f(TestScene()
+                     .film(33, 33)
+                     .camera({0, 2, 2}, {0, 0, 0}, 30)
+                     .material("metal", {{"alpha", 0.3}, {"f0", 0.9}})
+                     .plane("metal", {{"size", 4}})
+                     .directional_light({0.4, -1.0, 0.9}, 3.0));
   const Frame img = f.method("conventional");
   const glm::dvec3 v = glm::normalize(glm::dvec3(0, 2, 2)), l = -glm::normalize(glm::dvec3(0.4, -1.0, 0.9));
   const glm::dvec3 h = glm::normalize(v + l);
@@ -114,26 +75,12 @@ double disk_square_area(glm::dvec2 c, double r, double x0, double x1, double z0,
 
 TEST(Images, ReferenceCoverageOfAFlatMirrorUnderADiskLightIsAnalytic) {
   const int n = 24;
-  SceneFixture f(std::string(kTopDownCamera) + R"(
-[film]
-width = 24
-height = 24
-[[material]]
-name = "mirror"
-alpha = 0
-f0 = 1
-[[shape]]
-type = "plane"
-material = "mirror"
-size = 2
-[[light]]
-type = "disk"
-position = [0.1, 5, -0.05]
-direction = [0, -1, 0]
-radius = 0.53
-radiance = 1
-visible = false
-)");
+  SceneFixture f(TestScene()
+                     .top_down_camera()
+                     .film(24, 24)
+                     .material("mirror", {{"alpha", 0}, {"f0", 1}})
+                     .plane("mirror", {{"size", 2}})
+                     .disk_light({0.1, 5, -0.05}, {0, -1, 0}, 0.53, 1, {{"visible", false}}));
   const glm::dvec2 centre(0.1, -0.05);
   const double r = 0.53, px_size = 2.0 / n;
   const Frame ref = f.reference(256);
@@ -166,10 +113,7 @@ visible = false
 }
 
 TEST(Images, ReferenceConvergesWithMoreSamples) {
-  std::string toml = builtin_scene_toml("mirror-disk");
-  toml.replace(toml.find("width = 640"), 11, "width = 80");
-  toml.replace(toml.find("height = 360"), 12, "height = 45");
-  SceneFixture f(toml);
+  SceneFixture f(builtin_scene("mirror-disk", 80, 45));
   // Independent seeds (frame 7) for the truth, so that its passes share nothing with the others'.
   const ReferenceFrame truth = f.reference_estimate(4096, 0, 7);
   double previous = 1e30;
@@ -191,10 +135,7 @@ TEST(Images, ReferenceConvergesWithMoreSamples) {
 class EveryMethodOnBuiltinScene : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(EveryMethodOnBuiltinScene, IsFinite) {
-  std::string toml = builtin_scene_toml(GetParam());
-  toml.replace(toml.find("width = 640"), 11, "width = 96");
-  toml.replace(toml.find("height = 360"), 12, "height = 54");
-  SceneFixture f(toml);
+  SceneFixture f(builtin_scene(GetParam(), 96, 54));
   for (const auto& m : all_methods()) {
     const Frame img = f.method(m.id);
     EXPECT_EQ(img.total.count_non_finite(), 0u) << m.id << " on " << GetParam();

@@ -3,8 +3,6 @@
 // degrees, `lean` must keep the reference's energy; with the covariance left in the vertex frame's
 // slopes the lobe there is 1/cos^2 too wide along the tilt and draws bright rings.
 #include <gtest/gtest.h>
-#include <stdlib.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -13,25 +11,12 @@
 #include "core/colour.hpp"
 #include "core/image_io.hpp"
 #include "gl_fixture.hpp"
+#include "scratch_directory.hpp"
 
 using namespace glintlab;
 using namespace glintlab::test;
 
 namespace {
-
-/// A temporary directory of this test alone, removed with everything in it.
-struct TempDir {
-  TempDir() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "glintlab-lean-frame-XXXXXX").string();
-    if (mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
-    path = pattern;
-  }
-  ~TempDir() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path, ignored);
-  }
-  std::filesystem::path path;
-};
 
 // One dome per tile: a spherical cap of footprint radius kCap (tile units) whose rim is tilted
 // kMaxTilt; flat outside.
@@ -62,36 +47,18 @@ void write_dome_map(const std::filesystem::path& file, int res) {
 constexpr int kSize = 96;
 constexpr double kPlane = 2.0, kViewHeight = 2.0;
 
-std::string dome_scene(const std::filesystem::path& map, double tiling, double light_deg) {
-  char text[2048];
-  std::snprintf(text, sizeof text, R"(
-[film]
-width = %d
-height = %d
-[camera]
-type = "orthographic"
-position = [0, 3, 0]
-target = [0, 0, 0]
-up = [0, 0, -1]
-view_height = %g
-[[material]]
-name = "domes"
-alpha = 0.08
-f0 = 1
-diffuse = 0
-normal_map = { file = "%s" }
-normal_map_tiling = %g
-[[shape]]
-type = "plane"
-material = "domes"
-size = %g
-[[light]]
-type = "directional"
-direction = [%g, %g, 0]
-irradiance = 1
-)",
-                kSize, kSize, kViewHeight, map.string().c_str(), tiling, kPlane, std::sin(light_deg * M_PI / 180), -std::cos(light_deg * M_PI / 180));
-  return text;
+TestScene dome_scene(const std::filesystem::path& map, double tiling, double light_deg) {
+  const double light = light_deg * M_PI / 180;
+  return TestScene()
+      .film(kSize, kSize)
+      .orthographic_camera({0, 3, 0}, {0, 0, 0}, kViewHeight, {{"up", {0, 0, -1}}})
+      .material("domes", {{"alpha", 0.08},
+                          {"f0", 1},
+                          {"diffuse", 0},
+                          {"normal_map", TomlKeys{{"file", map.string()}}},
+                          {"normal_map_tiling", tiling}})
+      .plane("domes", {{"size", kPlane}})
+      .directional_light({std::sin(light), -std::cos(light), 0}, 1);
 }
 
 /// Whether pixel (x, y)'s centre lies where the domes are tilted between lo and hi degrees.
@@ -141,8 +108,8 @@ Measured measure(const std::filesystem::path& map, double pixels_per_dome, doubl
 }  // namespace
 
 TEST(LeanFrame, TiltedDomesKeepTheReferencesEnergyAtSeveralDistances) {
-  TempDir dir;
-  const auto map = dir.path / "domes.png";
+  ScratchDirectory dir;
+  const auto map = dir / "domes.png";
   write_dome_map(map, 128);
   // Light 80 degrees off the vertical: the mirror direction is tilted 40 degrees, inside the band.
   // Domes 32 and 12 pixels across: the band is resolved and judged on its own. (Before the frame

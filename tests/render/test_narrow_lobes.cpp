@@ -17,31 +17,14 @@ namespace {
 
 // Orthographic, so that the sphere's reflected directions cover the sphere of directions with
 // the constant Jacobian 4 / R^2 and the highlight's energy does not depend on where it falls.
-const char* kSphere = R"(
-[film]
-width = 96
-height = 96
-[camera]
-type = "orthographic"
-position = [0.0, 0.0, 5.0]
-target = [0.0, 0.0, 0.0]
-view_height = 2.2
-[[material]]
-name = "mirror"
-alpha = 0.002
-f0 = 1
-diffuse = 0
-[[shape]]
-type = "sphere"
-material = "mirror"
-radius = 1
-segments = 256
-[[light]]
-type = "directional"
-direction = [-0.35, -0.45, -1.0]
-irradiance = 1
-angular_radius = %ANGLE%
-)";
+TestScene mirror_sphere_under_sun(double angular_radius) {
+  return TestScene()
+      .film(96, 96)
+      .orthographic_camera({0.0, 0.0, 5.0}, {0.0, 0.0, 0.0}, 2.2)
+      .material("mirror", {{"alpha", 0.002}, {"f0", 1}, {"diffuse", 0}})
+      .sphere("mirror", {{"radius", 1}, {"segments", 256}})
+      .directional_light({-0.35, -0.45, -1.0}, 1, {{"angular_radius", angular_radius}});
+}
 
 /// Specular energy within 12 pixels of the mirror highlight (normal halfway between the viewer
 /// and the sun) of an image whose camera moved by `shift` scene units: filters that widen lobes
@@ -70,9 +53,7 @@ TEST_P(MirrorSphereUnderSun, CurvatureFiltersKeepTheEnergy) {
   // misses by 27% and 7% at 0.25 and 0.5 degrees over the same 16 positions. The former shading kept 49-50% at 2 degrees (double
   // normalisation), and kaplanyan-ggx up to 149% (its lost box peak and the mirror path).
   // `toksvig` and `lean` filter normal maps only and equal `conventional` here.
-  std::string text = kSphere;
-  text.replace(text.find("%ANGLE%"), 7, std::to_string(GetParam()));
-  SceneFixture f(text);
+  SceneFixture f(mirror_sphere_under_sun(GetParam()));
   const double g = GetParam() * M_PI / 180, pixel_area = std::pow(2.2 / 96, 2);
   const double truth = (1.0 / (M_PI * std::sin(g) * std::sin(g))) * 2 * M_PI * (1 - std::cos(g)) / 4 / pixel_area;
   // A method's energy is its expectation over where the highlight falls within a pixel: the mean

@@ -24,31 +24,12 @@ double luminance_sum(const Image& image) {
 }
 
 // A flat mirror (the plane y = 0, F = 1) seen from above, reflecting a tilted disk light.
-const char* kFlatMirror = R"(
-[film]
-width = 48
-height = 36
-[camera]
-position = [0.0, 1.2, 3.0]
-target = [0.0, 0.0, 0.0]
-fov = 40
-[[material]]
-name = "mirror"
-alpha = 0
-f0 = 1
-diffuse = 0
-[[shape]]
-type = "plane"
-material = "mirror"
-size = 20
-[[light]]
-type = "disk"
-position = [0.1, 1.5, -3.75]
-direction = [0.2, -0.45, 0.85]
-radius = 0.45
-radiance = 1
-visible = false
-)";
+const TestScene kFlatMirror = TestScene()
+                                  .film(48, 36)
+                                  .camera({0.0, 1.2, 3.0}, {0.0, 0.0, 0.0}, 40)
+                                  .material("mirror", {{"alpha", 0}, {"f0", 1}, {"diffuse", 0}})
+                                  .plane("mirror", {{"size", 20}})
+                                  .disk_light({0.1, 1.5, -3.75}, {0.2, -0.45, 0.85}, 0.45, 1, {{"visible", false}});
 
 /// Fraction of each pixel whose camera ray, reflected by the plane y = 0, hits the disk:
 /// 64 x 64 sub-pixel rays in double precision, independent of the renderer's shading.
@@ -119,38 +100,16 @@ TEST(Podee, FlatMirrorUnderADiskGivesTheCoveredFraction) {
 
 namespace {
 
-// One mirror sphere (F = 1) under a small disk light: its highlight is about 0.8 pixel across,
-// so conventional shading catches it in no pixel. %ALPHA% and %LIGHT% are filled in per test.
-const char* kSphereUnderASmallLight = R"(
-[film]
-width = 64
-height = 48
-[camera]
-position = [0.0, 0.3, 4.0]
-target = [0.0, 0.0, 0.0]
-fov = 30
-[[material]]
-name = "m"
-alpha = %ALPHA%
-f0 = 1
-diffuse = 0
-[[shape]]
-type = "sphere"
-material = "m"
-radius = 0.6
-[[light]]
-%LIGHT%
-position = [2.0, 4.0, 3.0]
-radius = 0.3
-radiance = 100
-visible = false
-)";
-
-std::string sphere_scene(const std::string& alpha, const std::string& light) {
-  std::string s = kSphereUnderASmallLight;
-  s.replace(s.find("%ALPHA%"), 7, alpha);
-  s.replace(s.find("%LIGHT%"), 7, light);
-  return s;
+// One mirror sphere (F = 1) under a small disk (or sphere) light: its highlight is about 0.8
+// pixel across, so conventional shading catches it in no pixel.
+TestScene sphere_scene(double alpha, bool disk_light) {
+  TestScene s = TestScene()
+                    .film(64, 48)
+                    .camera({0.0, 0.3, 4.0}, {0.0, 0.0, 0.0}, 30)
+                    .material("m", {{"alpha", alpha}, {"f0", 1}, {"diffuse", 0}})
+                    .sphere("m", {{"radius", 0.6}});
+  return disk_light ? s.disk_light({2.0, 4.0, 3.0}, {-0.4, -0.8, -0.6}, 0.3, 100, {{"visible", false}})
+                    : s.sphere_light({2.0, 4.0, 3.0}, 0.3, 100, {{"visible", false}});
 }
 
 }  // namespace
@@ -159,7 +118,7 @@ TEST(Podee, MirrorSphereKeepsTheHighlightsEnergy) {
   // A mirror sphere maps its image to reflected directions with a constant Jacobian, the
   // assumption behind the covered fraction: the highlight's energy must match the 1024-spp
   // reference within 5% with either way of getting the corners, where `conventional` misses it.
-  SceneFixture f(sphere_scene("0", "type = \"disk\"\ndirection = [-0.4, -0.8, -0.6]"));
+  SceneFixture f(sphere_scene(0, true));
   const Frame reference = f.reference(1024);
   const double reference_energy = luminance_sum(reference.specular);
   ASSERT_GT(reference_energy, 0.0);
@@ -194,7 +153,7 @@ TEST(Podee, LobeExtensionHoldsOnAGlossySphereUnderASphereLight) {
   // about as wide as the reflection space; podee must be at least as good as `conventional`
   // (formerly 2.2x its RMSE) and keep the tails (formerly 0.80).
   {
-    SceneFixture f(sphere_scene("0.03", "type = \"sphere\""));
+    SceneFixture f(sphere_scene(0.03, false));
     const Frame reference = f.reference(1024);
     const Frame podee = f.method("podee");
     const double extension = rmse(podee.specular, reference.specular);
@@ -204,7 +163,7 @@ TEST(Podee, LobeExtensionHoldsOnAGlossySphereUnderASphereLight) {
     EXPECT_GT(tail_energy_ratio(podee.specular, reference.specular), 0.45);
   }
   {
-    SceneFixture f(sphere_scene("0.1", "type = \"sphere\""));
+    SceneFixture f(sphere_scene(0.1, false));
     const Frame reference = f.reference(1024);
     const Frame podee = f.method("podee");
     EXPECT_LE(rmse(podee.specular, reference.specular), rmse(f.method("conventional").specular, reference.specular));
@@ -237,7 +196,7 @@ TEST(Podee, CornersReadTheNormalMapAtTheBaseLevelByDefault) {
   // builtin:mirror-bumps at 160x90, near (frame 0) and far (frame 23): corners that read the map at
   // the pixel centre's mip level see the bumps flattened (docs/methods.md#podee, `corner_lod`); the
   // default (base level) must be clearly closer to the 256-spp reference than the centre's level.
-  SceneFixture f(builtin_scene_toml("mirror-bumps"));
+  SceneFixture f(load_scene("builtin:mirror-bumps"));
   const int w = 160, h = 90;
   const auto& method = find_method("podee");
   EXPECT_EQ(resolve_params(method, {}).at("corner_lod"), -16.0f);

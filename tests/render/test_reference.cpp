@@ -22,29 +22,13 @@ namespace {
 /// radius `degrees` shining from behind the camera. With R the sphere's radius in pixels, the sun
 /// is seen where the normal is within gamma/2 of the view, a disk of radius R sin(gamma/2), so
 /// the image's sum is L pi R^2 sin^2(gamma/2) with L = E / (pi sin^2 gamma): E R^2 / (4 cos^2(gamma/2)).
-std::string mirror_sphere_under_sun(double degrees, int size) {
-  return R"(
-[film]
-width = )" + std::to_string(size) + "\nheight = " + std::to_string(size) + R"(
-[camera]
-type = "orthographic"
-position = [0, 0, 5]
-target = [0, 0, 0]
-view_height = 2.2
-[[material]]
-name = "mirror"
-alpha = 0
-f0 = [1, 1, 1]
-diffuse = 0
-[[shape]]
-type = "sphere"
-material = "mirror"
-segments = 256
-[[light]]
-type = "directional"
-direction = [0, 0, -1]
-irradiance = 1
-angular_radius = )" + std::to_string(degrees) + "\n";
+TestScene mirror_sphere_under_sun(double degrees, int size) {
+  return TestScene()
+      .film(size, size)
+      .orthographic_camera({0, 0, 5}, {0, 0, 0}, 2.2)
+      .material("mirror", {{"alpha", 0}, {"f0", {1, 1, 1}}, {"diffuse", 0}})
+      .sphere("mirror", {{"segments", 256}})
+      .directional_light({0, 0, -1}, 1, {{"angular_radius", degrees}});
 }
 
 double image_luminance_sum(const Image& image) {
@@ -115,32 +99,21 @@ TEST(Reference, SubPixelHighlightOfAMirrorSphereHasTheClosedFormEnergy) {
 TEST(Reference, NormalMapIsEvaluatedAtEachSampleNotFiltered) {
   const int resolution = 64;  // 32 px over 4 tiles of 64 texels: 8 texels per pixel
   const float bumps_alpha = 0.3f, alpha = 0.1f;
-  SceneFixture f(R"(
-[film]
-width = 32
-height = 32
-[camera]
-type = "orthographic"
-position = [0, 5, 0]
-target = [0, 0, 0]
-up = [0, 0, -1]
-view_height = 2
-[[material]]
-name = "bumpy"
-alpha = 0.1
-f0 = [1, 1, 1]
-diffuse = 0
-normal_map = { generator = "bumps", alpha = 0.3, resolution = 64, waves = 64, max_frequency = 24, seed = 3 }
-normal_map_tiling = 4
-[[shape]]
-type = "plane"
-material = "bumpy"
-size = 2
-[[light]]
-type = "directional"
-direction = [0, -1, 0]
-irradiance = 1
-)");
+  SceneFixture f(TestScene()
+                     .film(32, 32)
+                     .orthographic_camera({0, 5, 0}, {0, 0, 0}, 2, {{"up", {0, 0, -1}}})
+                     .material("bumpy", {{"alpha", 0.1},
+                                         {"f0", {1, 1, 1}},
+                                         {"diffuse", 0},
+                                         {"normal_map", TomlKeys{{"generator", "bumps"},
+                                                                 {"alpha", 0.3},
+                                                                 {"resolution", 64},
+                                                                 {"waves", 64},
+                                                                 {"max_frequency", 24},
+                                                                 {"seed", 3}}},
+                                         {"normal_map_tiling", 4}})
+                     .plane("bumpy", {{"size", 2}})
+                     .directional_light({0, -1, 0}, 1));
   const NormalMap map = generate_bumps(resolution, bumps_alpha, 64, 24, 3, 1.0f, 0.0f);
   ASSERT_EQ(map.width, resolution);
   // Lit and seen along the geometric normal: with n the mapped normal, wo = wi = h and
@@ -187,43 +160,18 @@ irradiance = 1
 // are independent estimates; the mean squared difference between them must be the sum of their
 // predicted noise RMSEs squared, and an energy difference within their energy errors.
 TEST(Reference, NoiseEstimatePredictsTheDifferenceOfIndependentReferences) {
-  SceneFixture f(R"(
-[film]
-width = 64
-height = 48
-[camera]
-position = [0, 1.2, 3]
-target = [0, 0.2, 0]
-fov = 35
-[[material]]
-name = "glossy"
-alpha = 0.08
-f0 = [0.9, 0.9, 0.9]
-diffuse = 0.1
-normal_map = { generator = "bumps", alpha = 0.15, resolution = 128 }
-normal_map_tiling = 3
-[[shape]]
-type = "plane"
-material = "glossy"
-size = 4
-[[shape]]
-type = "sphere"
-material = "glossy"
-radius = 0.4
-translate = [0, 0.4, 0]
-[[light]]
-type = "disk"
-position = [0.5, 2, -1]
-direction = [-0.2, -1, 0.5]
-radius = 0.2
-radiance = 40
-visible = false
-[[light]]
-type = "directional"
-direction = [0.3, -1, -0.4]
-irradiance = 1
-angular_radius = 1
-)");
+  SceneFixture f(TestScene()
+                     .film(64, 48)
+                     .camera({0, 1.2, 3}, {0, 0.2, 0}, 35)
+                     .material("glossy", {{"alpha", 0.08},
+                                          {"f0", {0.9, 0.9, 0.9}},
+                                          {"diffuse", 0.1},
+                                          {"normal_map", TomlKeys{{"generator", "bumps"}, {"alpha", 0.15}, {"resolution", 128}}},
+                                          {"normal_map_tiling", 3}})
+                     .plane("glossy", {{"size", 4}})
+                     .sphere("glossy", {{"radius", 0.4}, {"translate", {0, 0.4, 0}}})
+                     .disk_light({0.5, 2, -1}, {-0.2, -1, 0.5}, 0.2, 40, {{"visible", false}})
+                     .directional_light({0.3, -1, -0.4}, 1, {{"angular_radius", 1}}));
   ReferenceSettings s{.spp = 256, .light_samples = 0, .seed = 1};  // 4 passes of 8 x 8
   const ReferenceFrame a = f.reference_at(f.scene.camera, 64, 48, s);
   s.seed = 2;

@@ -24,45 +24,15 @@ TEST(SpecularAA, WithoutAFootprintEveryMethodEqualsConventional) {
   // A flat plane seen by an orthographic camera under a delta directional light and a sun: view,
   // light and normal are the same at every pixel, so every derivative is zero, and there is no
   // normal map. Every filtering method must reproduce `conventional` to float precision.
-  SceneFixture f(R"(
-[film]
-width = 24
-height = 24
-[camera]
-type = "orthographic"
-position = [0.3, 4, 3]
-target = [0, 0, 0]
-view_height = 2
-[[material]]
-name = "glossy"
-ndf = "ggx"
-alpha = [0.05, 0.12]
-f0 = 0.9
-diffuse = 0.1
-[[material]]
-name = "beckmann"
-ndf = "beckmann"
-alpha = 0.08
-f0 = 0.5
-[[shape]]
-type = "plane"
-material = "glossy"
-size = 8
-[[shape]]
-type = "plane"
-material = "beckmann"
-size = 8
-translate = [0, -0.01, 4]
-[[light]]
-type = "directional"
-direction = [-0.1, -0.8, 0.6]
-irradiance = 2
-[[light]]
-type = "directional"
-direction = [0.05, -0.6, 0.8]
-irradiance = 1
-angular_radius = 2
-)");
+  SceneFixture f(TestScene()
+                     .film(24, 24)
+                     .orthographic_camera({0.3, 4, 3}, {0, 0, 0}, 2)
+                     .material("glossy", {{"ndf", "ggx"}, {"alpha", {0.05, 0.12}}, {"f0", 0.9}, {"diffuse", 0.1}})
+                     .material("beckmann", {{"ndf", "beckmann"}, {"alpha", 0.08}, {"f0", 0.5}})
+                     .plane("glossy", {{"size", 8}})
+                     .plane("beckmann", {{"size", 8}, {"translate", {0, -0.01, 4}}})
+                     .directional_light({-0.1, -0.8, 0.6}, 2)
+                     .directional_light({0.05, -0.6, 0.8}, 1, {{"angular_radius", 2}}));
   const Frame base = f.method("conventional");
   ASSERT_GT(base.specular.mean().x, 0.01) << "the test scene must show a highlight";
   for (const auto& id : kFilteringMethods) {

@@ -4,16 +4,18 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <set>
 
 #include "core/error.hpp"
 #include "scene/scene_loader.hpp"
+#include "scratch_directory.hpp"
 #include "test_scenes.hpp"
 
 using namespace glintlab;
+using namespace glintlab::test;
 
 namespace {
-
-const std::string& kMinimal = test::kMinimalScene;
 
 std::string error_of(const std::string& text) {
   try {
@@ -34,7 +36,7 @@ void expect_error(const std::string& text, std::initializer_list<const char*> fr
 }  // namespace
 
 TEST(SceneParser, MinimalSceneGetsDocumentedDefaults) {
-  const Scene s = parse_scene(kMinimal, "min.toml", ".");
+  const Scene s = TestScene::minimal().scene();
   EXPECT_EQ(s.film.width, 640);
   EXPECT_EQ(s.film.height, 360);
   EXPECT_EQ(s.materials[0].ndf, Ndf::GGX);
@@ -43,98 +45,99 @@ TEST(SceneParser, MinimalSceneGetsDocumentedDefaults) {
   EXPECT_EQ(s.path.type, CameraPathType::Static);
 }
 
-TEST(SceneParser, EveryBuiltinSceneParsesAndHasACameraPath) {
-  ASSERT_GE(builtin_scenes().size(), 4u);
+TEST(SceneParser, EveryBuiltinSceneIsItsFileAndHasACameraPath) {
+  // builtin:NAME is scenes/NAME.toml as built in, and loading the file by path gives the same
+  // scene: a user's copy needs nothing else (no file it refers to, no generated part).
+  std::set<std::string> files, builtins;
+  for (const auto& e : std::filesystem::directory_iterator(GLINTLAB_SCENES_DIR))
+    if (e.path().extension() == ".toml") files.insert(e.path().stem().string());
   for (const auto& b : builtin_scenes()) {
+    builtins.insert(b.name);
     const Scene s = load_scene("builtin:" + b.name);
     EXPECT_GT(s.path.frames, 1) << b.name;
     EXPECT_NE(s.path.type, CameraPathType::Static) << b.name;
+    EXPECT_FALSE(b.description.empty()) << b.name;
+    EXPECT_EQ(s.description, b.description) << b.name;
+    const auto path = std::filesystem::path(GLINTLAB_SCENES_DIR) / (b.name + ".toml");
+    std::ifstream in(path, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(builtin_scene_toml(b.name), text) << b.name << ": rebuild to embed the edited file";
+    EXPECT_EQ(load_scene(path.string()).content_hash(), s.content_hash()) << b.name;
   }
+  EXPECT_EQ(files, builtins);
   EXPECT_THROW(load_scene("builtin:nope"), InputError);
 }
 
 TEST(SceneParser, MalformedTomlNamesTheLine) { expect_error("[film\nwidth = 3", {"bad.toml:1", "malformed TOML"}); }
 
 TEST(SceneParser, UnknownKeyIsRejected) {
-  expect_error(kMinimal + "[film]\nwidht = 100\n", {"widht", "not a known key", "width"});
+  expect_error(TestScene::minimal().table("film", {{"widht", 100}}).toml(), {"widht", "not a known key", "width"});
 }
 
 TEST(SceneParser, WrongTypeIsRejected) {
-  expect_error(kMinimal + "[film]\nwidth = \"big\"\n", {"width", "\"big\"", "not an integer"});
+  expect_error(TestScene::minimal().table("film", {{"width", "big"}}).toml(), {"width", "\"big\"", "not an integer"});
 }
 
 TEST(SceneParser, OutOfRangeValueIsRejected) {
-  expect_error(kMinimal + "[film]\nwidth = 0\n", {"width", "out of range", "1 .. 16384"});
-  std::string alpha = kMinimal;
-  alpha.replace(alpha.find("name = \"m\""), 10, "name = \"m\"\nalpha = 1.5");
-  expect_error(alpha, {"alpha", "1.5", "0 .. 1"});
+  expect_error(TestScene::minimal().film(0, 360).toml(), {"width", "out of range", "1 .. 16384"});
+  expect_error(TestScene().material("m", {{"alpha", 1.5}}).sphere("m").point_light({0, 2, 3}).toml(), {"alpha", "1.5", "0 .. 1"});
 }
 
 TEST(SceneParser, AbsurdFilmSizeIsRejected) {
-  expect_error(kMinimal + "[film]\nwidth = 16000\nheight = 16000\n", {"64 Mpixels"});
+  expect_error(TestScene::minimal().film(16000, 16000).toml(), {"64 Mpixels"});
 }
 
 TEST(SceneParser, UnknownEnumValueListsTheAllowedOnes) {
-  expect_error(R"([[material]]
-name = "m"
-ndf = "phong"
-)", {"ndf", "phong", "ggx, beckmann"});
+  expect_error(TestScene().material("m", {{"ndf", "phong"}}).toml(), {"ndf", "phong", "ggx, beckmann"});
 }
 
 TEST(SceneParser, UnknownMaterialReferenceListsTheDefinedOnes) {
-  std::string t = kMinimal;
-  t.replace(t.find("material = \"m\""), 14, "material = \"x\"");
-  expect_error(t, {"\"x\"", "defined: m"});
+  expect_error(TestScene().material("m").sphere("x").point_light({0, 2, 3}).toml(), {"\"x\"", "defined: m"});
 }
 
 TEST(SceneParser, MissingRequiredKeyAndEmptySceneAreRejected) {
-  expect_error("[[light]]\ntype = \"point\"\n", {"position", "required"});
+  expect_error(TestScene().light("point", {}).toml(), {"position", "required"});
   expect_error("", {"no [[shape]]"});
 }
 
 TEST(SceneParser, TooManyLightsAreRejected) {
-  std::string text = kMinimal;
-  for (int i = 0; i < kMaxLights; ++i) text += "[[light]]\ntype = \"point\"\nposition = [0, 1, 0]\n";
-  expect_error(text, {std::to_string(kMaxLights + 1).c_str(), "at most 128"});
+  TestScene scene = TestScene::minimal();
+  for (int i = 0; i < kMaxLights; ++i) scene.point_light({0, 1, 0});
+  expect_error(scene.toml(), {std::to_string(kMaxLights + 1).c_str(), "at most 128"});
 }
 
 TEST(SceneParser, MissingAndBrokenFilesAreNamed) {
-  const auto dir = std::filesystem::temp_directory_path() / "glintlab-test-parser";
-  std::filesystem::create_directories(dir);
+  const ScratchDirectory dir;
   std::ofstream(dir / "broken.obj") << "v 0 0 0\nf 1 2 3\n";
   std::ofstream(dir / "broken.png") << "not a png";
-  std::string mesh = kMinimal;
-  mesh.replace(mesh.find("type = \"sphere\""), 15, "type = \"mesh\"\nfile = \"broken.obj\"");
   try {
-    parse_scene(mesh, "m.toml", dir);
+    static_cast<void>(
+        TestScene().material("m").shape("mesh", "m", {{"file", "broken.obj"}}).point_light({0, 2, 3}).scene(dir.path()));
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("broken.obj"), std::string::npos) << e.what();
   }
-  std::string nm = kMinimal;
-  nm.replace(nm.find("name = \"m\""), 10, "name = \"m\"\nnormal_map = { file = \"broken.png\" }");
   try {
-    parse_scene(nm, "m.toml", dir);
+    static_cast<void>(TestScene()
+                          .material("m", {{"normal_map", TomlKeys{{"file", "broken.png"}}}})
+                          .sphere("m")
+                          .point_light({0, 2, 3})
+                          .scene(dir.path()));
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("broken.png"), std::string::npos) << e.what();
   }
   EXPECT_THROW(load_scene((dir / "missing.toml").string()), InputError);
-  std::filesystem::remove_all(dir);
 }
 
 TEST(SceneParser, ObjMeshLoadsWithTangents) {
-  const auto dir = std::filesystem::temp_directory_path() / "glintlab-test-obj";
-  std::filesystem::create_directories(dir);
+  const ScratchDirectory dir;
   std::ofstream(dir / "quad.obj") << "v 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
                                      "f 1/1 2/2 3/3 4/4\n";
-  std::string t = kMinimal;
-  t.replace(t.find("type = \"sphere\""), 15, "type = \"mesh\"\nfile = \"quad.obj\"");
-  const Scene s = parse_scene(t, "m.toml", dir);
+  const Scene s = TestScene().material("m").shape("mesh", "m", {{"file", "quad.obj"}}).point_light({0, 2, 3}).scene(dir.path());
   ASSERT_EQ(s.shapes[0].mesh->triangle_count(), 2u);
   for (const auto& n : s.shapes[0].mesh->normals) EXPECT_NEAR(std::abs(n.y), 1.0f, 1e-5f);
   for (const auto& tg : s.shapes[0].mesh->tangents) EXPECT_NEAR(tg.x, 1.0f, 1e-5f);
-  std::filesystem::remove_all(dir);
 }
 
 TEST(NormalMaps, BumpsHaveTheRequestedSlopeSpread) {

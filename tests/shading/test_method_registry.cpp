@@ -33,43 +33,18 @@ void add_test_gain_module() {
 
 /// Glossy sphere on a diffuse plane, a point and a directional light, no visible emitters (they
 /// are drawn by another pass, which no method scales).
-const char* kGlossyScene = R"(
-[film]
-width = 48
-height = 32
-[camera]
-position = [0, 1.5, 4]
-target = [0, 0.3, 0]
-fov = 40
-[[material]]
-name = "metal"
-f0 = 0.6
-diffuse = 0.2
-alpha = 0.15
-[[material]]
-name = "floor"
-f0 = 0.04
-diffuse = 0.5
-alpha = 0.4
-[[shape]]
-type = "sphere"
-material = "metal"
-radius = 0.6
-translate = [0, 0.6, 0]
-[[shape]]
-type = "plane"
-material = "floor"
-size = 6
-[[light]]
-type = "point"
-position = [1, 3, 2]
-intensity = 8
-[[light]]
-type = "directional"
-direction = [-0.3, -1, -0.5]
-irradiance = 1.5
-)";
-
+/// A glossy sphere on a floor under a point and a directional light.
+TestScene glossy_scene() {
+  return TestScene()
+      .film(48, 32)
+      .camera({0, 1.5, 4}, {0, 0.3, 0}, 40)
+      .material("metal", {{"f0", 0.6}, {"diffuse", 0.2}, {"alpha", 0.15}})
+      .material("floor", {{"f0", 0.04}, {"diffuse", 0.5}, {"alpha", 0.4}})
+      .sphere("metal", {{"radius", 0.6}, {"translate", {0, 0.6, 0}}})
+      .plane("floor", {{"size", 6}})
+      .point_light({1, 3, 2}, 8)
+      .directional_light({-0.3, -1, -0.5}, 1.5);
+}
 double sum_of(const Image& image) {
   double sum = 0;
   for (const glm::vec3& p : image.pixels()) sum += double(p.r) + p.g + p.b;
@@ -122,7 +97,7 @@ TEST(MethodRegistry, ListsTheBuiltInMethodsInTheirDeclaredOrderThenTheTestMethod
 
 TEST(MethodRegistry, AMethodAddedAsTwoFilesRendersAsItsModuleSays) {
   add_test_gain_module();
-  SceneFixture f(kGlossyScene);
+  SceneFixture f(glossy_scene());
   const Frame conventional = f.method("conventional");
   const Frame added = f.method("test-gain");  // gain = 1 by default
   EXPECT_TRUE(all_finite(added.total));
@@ -134,7 +109,7 @@ TEST(MethodRegistry, AMethodAddedAsTwoFilesRendersAsItsModuleSays) {
 
 TEST(MethodRegistry, ParameterValuesReachTheShader) {
   add_test_gain_module();
-  SceneFixture f(kGlossyScene);
+  SceneFixture f(glossy_scene());
   const Frame conventional = f.method("conventional");
   const Frame doubled = f.method("test-gain", {{"gain", "2"}});
   expect_scaled(doubled.total, conventional.total, 2.0f);
@@ -150,7 +125,7 @@ TEST(MethodRegistry, ADeclaredParameterTheModuleNeverReadsIsAnErrorNamingIt) {
 void prepareSurface(inout Surface s) { s.alpha *= param_used; }
 Radiance shadeLight(Surface s, LightData L) { return shadeLobe(s, L, materialLobe(s)); }
 )");
-  SceneFixture f(kGlossyScene);
+  SceneFixture f(glossy_scene());
   const std::string message =
       render_failure(f, descriptor("test-unused", {{"used", 1, 0, 1, "read"}, {"unused", 1, 0, 1, "never read"}}));
   EXPECT_TRUE(contains(message, "method 'test-unused'")) << message;
@@ -165,7 +140,7 @@ TEST(MethodRegistry, AParameterTheModuleReadsButDoesNotDeclareIsAnErrorNamingIt)
 void prepareSurface(inout Surface s) { s.alpha *= param_missing; }
 Radiance shadeLight(Surface s, LightData L) { return shadeLobe(s, L, materialLobe(s)); }
 )");
-  SceneFixture f(kGlossyScene);
+  SceneFixture f(glossy_scene());
   const std::string message = render_failure(f, descriptor("test-undeclared", {}));
   EXPECT_TRUE(contains(message, "method 'test-undeclared'")) << message;
   EXPECT_TRUE(contains(message, "param_missing")) << message;

@@ -102,47 +102,22 @@ TEST(Tables, ARequiredTableIsMadeResidentOnce) {
   EXPECT_THROW(tables.require(std::vector<std::string>{"no-such-table"}), InputError);
 }
 
-const char* kGlintyScene = R"(
-[film]
-width = 16
-height = 12
-[[material]]
-name = "g"
-type = "glinty"
-[[shape]]
-type = "sphere"
-material = "g"
-[[light]]
-type = "point"
-position = [0, 2, 3]
-)";
-
-const char* kPlainScene = R"(
-[film]
-width = 16
-height = 12
-[[material]]
-name = "m"
-[[shape]]
-type = "sphere"
-material = "m"
-[[light]]
-type = "point"
-position = [0, 2, 3]
-)";
+/// A sphere of a glinty material, and the same with a plain one.
+test::TestScene glinty_scene() { return test::TestScene().film(16, 12).glinty_material("g").sphere("g").point_light({0, 2, 3}); }
+test::TestScene plain_scene() { return test::TestScene().film(16, 12).material("m").sphere("m").point_light({0, 2, 3}); }
 
 TEST(Tables, AGlintySceneHasTheDictionaryForEveryMethodAndTheReference) {
-  SceneFixture glinty(kGlintyScene);
+  SceneFixture glinty(glinty_scene());
   EXPECT_NE(glinty.gpu->tables().texture("glint-dictionary"), 0u) << "glinty materials read it in any method";
   EXPECT_EQ(glinty.gpu->material_table_ids(), std::vector<std::string>{"glint-dictionary"})
       << "what the reference reads, in its cache key";
-  SceneFixture plain(kPlainScene);
+  SceneFixture plain(plain_scene());
   EXPECT_EQ(plain.gpu->tables().texture("glint-dictionary"), 0u) << "nothing reads it: not built";
   EXPECT_TRUE(plain.gpu->material_table_ids().empty());
 }
 
 TEST(Tables, AMethodsDeclaredTablesAreResidentWhenItDraws) {
-  SceneFixture plain(kPlainScene);
+  SceneFixture plain(plain_scene());
   (void)plain.method("conventional");
   EXPECT_EQ(plain.gpu->tables().texture("glint-dictionary"), 0u);
   (void)plain.method("chermain2020");

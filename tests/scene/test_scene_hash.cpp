@@ -1,0 +1,203 @@
+// Scene::content_hash is the reference cache's key: every field that changes an image must change
+// it, or a stale reference is served. Each field of each struct is listed below with a change to
+// it; the fields that cannot change an image are listed too, and must not change the key. A field
+// added to a struct later fails the field counts until it is hashed (or listed as not affecting
+// images) and added here.
+#include <gtest/gtest.h>
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "scene/light_kind.hpp"
+#include "test_scenes.hpp"
+
+using namespace glintlab;
+using namespace glintlab::test;
+
+namespace {
+
+/// Converts to anything: T{AnyField{}, ...} compiles for up to as many initializers as the
+/// aggregate T has fields.
+struct AnyField {
+  template <typename T>
+  operator T() const;
+};
+
+template <typename T, typename... Fields>
+consteval std::size_t field_count() {
+  if constexpr (requires { T{Fields{}..., AnyField{}}; })
+    return field_count<T, Fields..., AnyField>();
+  else
+    return sizeof...(Fields);
+}
+
+// The number of fields this test knows for each struct of the scene.
+static_assert(field_count<Film>() == 4);
+static_assert(field_count<Camera>() == 8);
+static_assert(field_count<CameraKey>() == 2);
+static_assert(field_count<CameraPath>() == 6);
+static_assert(field_count<GlintParams>() == 3);
+static_assert(field_count<Material>() == 9);
+static_assert(field_count<NormalMap>() == 4);
+static_assert(field_count<Mesh>() == 5);
+static_assert(field_count<Shape>() == 4);
+static_assert(field_count<Light>() == 9);
+static_assert(field_count<Scene>() == 9);
+
+struct FieldChange {
+  std::string field;
+  std::function<void(Scene&)> change;
+};
+
+/// A scene in which every field is in use: two materials (one glinty with a normal map), two shapes,
+/// and lights of the kinds that read every Light field (a kind hashes only what it reads).
+Scene base_scene() {
+  Scene s = TestScene()
+                .film(32, 24)
+                .camera({0, 1, 4}, {0, 0, 0}, 40)
+                .material("plain", {{"alpha", {0.1, 0.2}}, {"f0", 0.5}, {"diffuse", 0.2}})
+                .glinty_material("glinty", {{"sigma", 0.1},
+                                            {"rho", 0.2},
+                                            {"f0", 0.9},
+                                            {"normal_map", TomlKeys{{"generator", "bumps"}, {"resolution", 8}}}})
+                .sphere("plain", {{"segments", 8}})
+                .plane("glinty")
+                .light("quad", {{"position", {0, 2, 0}}, {"direction", {0, -1, 0}}, {"up", {1, 0, 0}}})
+                .disk_light({1, 2, 0}, {0, -1, 0}, 0.5, 1)
+                .light("sun", {{"direction", {0, -1, 0}}, {"irradiance", 1}, {"angular_radius", 1}})
+                .scene();
+  EXPECT_TRUE(s.materials[1].glints.has_value());
+  EXPECT_NE(s.materials[1].normal_map, nullptr);
+  return s;
+}
+
+std::shared_ptr<Mesh> mesh_of(Shape& shape) {
+  auto mesh = std::make_shared<Mesh>(*shape.mesh);
+  shape.mesh = mesh;
+  return mesh;
+}
+
+std::shared_ptr<NormalMap> normal_map_of(Material& m) {
+  auto map = std::make_shared<NormalMap>(*m.normal_map);
+  m.normal_map = map;
+  return map;
+}
+
+// Fields that change an image: each must change the key.
+const std::vector<FieldChange> kHashed = {
+    {"film.width", [](Scene& s) { s.film.width += 1; }},
+    {"film.height", [](Scene& s) { s.film.height += 1; }},
+    {"camera.projection", [](Scene& s) { s.camera.projection = Projection::Orthographic; }},
+    {"camera.position", [](Scene& s) { s.camera.position.x += 0.1f; }},
+    {"camera.target", [](Scene& s) { s.camera.target.y += 0.1f; }},
+    {"camera.up", [](Scene& s) { s.camera.up.x += 0.1f; }},
+    {"camera.fov_y_degrees", [](Scene& s) { s.camera.fov_y_degrees += 1; }},
+    {"camera.view_height", [](Scene& s) { s.camera.view_height += 1; }},
+    {"camera.near_plane", [](Scene& s) { s.camera.near_plane *= 2; }},
+    {"camera.far_plane", [](Scene& s) { s.camera.far_plane *= 2; }},
+    {"material.ndf", [](Scene& s) { s.materials[0].ndf = Ndf::Beckmann; }},
+    {"material.alpha", [](Scene& s) { s.materials[0].alpha.y += 0.01f; }},
+    {"material.rho", [](Scene& s) { s.materials[1].rho += 0.1f; }},
+    {"material.f0", [](Scene& s) { s.materials[0].f0.g += 0.01f; }},
+    {"material.diffuse", [](Scene& s) { s.materials[0].diffuse.b += 0.01f; }},
+    {"material.normal_map (none -> one)", [](Scene& s) { s.materials[0].normal_map = s.materials[1].normal_map; }},
+    {"material.normal_map_tiling", [](Scene& s) { s.materials[1].normal_map_tiling *= 2; }},
+    {"material.glints (one -> none)", [](Scene& s) { s.materials[1].glints.reset(); }},
+    {"glints.log_density", [](Scene& s) { s.materials[1].glints->log_density += 1; }},
+    {"glints.relative_area", [](Scene& s) { s.materials[1].glints->relative_area *= 0.5f; }},
+    {"glints.max_anisotropy", [](Scene& s) { s.materials[1].glints->max_anisotropy += 1; }},
+    {"normal_map.width", [](Scene& s) { normal_map_of(s.materials[1])->width += 1; }},
+    {"normal_map.height", [](Scene& s) { normal_map_of(s.materials[1])->height += 1; }},
+    {"normal_map.normals", [](Scene& s) { normal_map_of(s.materials[1])->normals[5].x += 0.01f; }},
+    {"shape.transform", [](Scene& s) { s.shapes[0].transform[3][0] += 0.1f; }},
+    {"shape.material", [](Scene& s) { s.shapes[0].material = 1; }},
+    {"mesh.positions", [](Scene& s) { mesh_of(s.shapes[1])->positions[2].y += 0.01f; }},
+    {"mesh.normals", [](Scene& s) { mesh_of(s.shapes[1])->normals[1].z += 0.01f; }},
+    {"mesh.tangents", [](Scene& s) { mesh_of(s.shapes[1])->tangents[0].w *= -1; }},
+    {"mesh.uvs", [](Scene& s) { mesh_of(s.shapes[1])->uvs[3].x += 0.01f; }},
+    {"mesh.indices",
+     [](Scene& s) {
+       const auto mesh = mesh_of(s.shapes[1]);
+       std::swap(mesh->indices[0], mesh->indices[1]);
+     }},
+    {"light.kind", [](Scene& s) { s.lights[0].kind = &find_light_kind("disk"); }},
+    {"light.colour", [](Scene& s) { s.lights[0].colour.r += 0.1f; }},
+    {"light.position", [](Scene& s) { s.lights[0].position.z += 0.1f; }},
+    {"light.direction", [](Scene& s) { s.lights[0].direction.x += 0.1f; }},
+    {"light.up", [](Scene& s) { s.lights[0].up.z += 0.1f; }},
+    {"light.radius", [](Scene& s) { s.lights[1].radius += 0.1f; }},
+    {"light.size", [](Scene& s) { s.lights[0].size.x += 0.1f; }},
+    {"light.angular_radius_degrees", [](Scene& s) { s.lights[2].angular_radius_degrees += 1; }},
+    {"light.visible", [](Scene& s) { s.lights[0].visible = !s.lights[0].visible; }},
+    {"a material more", [](Scene& s) { s.materials.push_back(s.materials[0]); }},
+    {"a shape more", [](Scene& s) { s.shapes.push_back(s.shapes[0]); }},
+    {"a light more", [](Scene& s) { s.lights.push_back(s.lights[0]); }},
+};
+
+// Fields that never change an image: names and provenance, the PNG-only film settings, and the
+// camera path (the reference cache keys each frame by the camera the path gives it).
+const std::vector<FieldChange> kNotHashed = {
+    {"scene.name", [](Scene& s) { s.name = "other"; }},
+    {"scene.source", [](Scene& s) { s.source = "other.toml"; }},
+    {"scene.description", [](Scene& s) { s.description = "other"; }},
+    {"film.exposure", [](Scene& s) { s.film.exposure += 1; }},
+    {"film.bloom", [](Scene& s) { s.film.bloom += 1; }},
+    {"path.type", [](Scene& s) { s.path.type = CameraPathType::Orbit; }},
+    {"path.frames", [](Scene& s) { s.path.frames += 1; }},
+    {"path.orbit_degrees", [](Scene& s) { s.path.orbit_degrees += 1; }},
+    {"path.orbit_axis", [](Scene& s) { s.path.orbit_axis.x += 1; }},
+    {"path.dolly_to", [](Scene& s) { s.path.dolly_to.x += 1; }},
+    {"path.keys", [](Scene& s) { s.path.keys.push_back({}); }},
+    {"material.name", [](Scene& s) { s.materials[0].name = "other"; }},
+    {"normal_map.description", [](Scene& s) { normal_map_of(s.materials[1])->description = "other"; }},
+    {"shape.type", [](Scene& s) { s.shapes[0].type = "mesh"; }},
+};
+
+}  // namespace
+
+TEST(SceneHash, EveryFieldThatChangesAnImageChangesTheKey) {
+  const Scene base = base_scene();
+  const auto key = base.content_hash();
+  EXPECT_EQ(base_scene().content_hash(), key) << "the same scene, the same key";
+  for (const auto& f : kHashed) {
+    Scene s = base;
+    f.change(s);
+    EXPECT_NE(s.content_hash(), key) << f.field << " is not part of Scene::content_hash";
+  }
+}
+
+TEST(SceneHash, NamesPathsAndDisplaySettingsDoNotChangeTheKey) {
+  const Scene base = base_scene();
+  for (const auto& f : kNotHashed) {
+    Scene s = base;
+    f.change(s);
+    EXPECT_EQ(s.content_hash(), base.content_hash()) << f.field << " changes the key but not an image";
+  }
+}
+
+TEST(SceneHash, EveryFieldIsListedOnce) {
+  // The counts of the static_asserts above, as fields listed here: a struct's field is either
+  // hashed or not, never both, never neither.
+  auto count = [](const std::vector<FieldChange>& list, const std::string& prefix) {
+    int n = 0;
+    for (const auto& f : list)
+      if (f.field.rfind(prefix, 0) == 0 && f.field.find(' ') == std::string::npos) ++n;
+    return n;
+  };
+  auto fields = [&](const std::string& prefix) { return count(kHashed, prefix) + count(kNotHashed, prefix); };
+  EXPECT_EQ(fields("film."), static_cast<int>(field_count<Film>()));
+  EXPECT_EQ(fields("camera."), static_cast<int>(field_count<Camera>()));
+  EXPECT_EQ(fields("path."), static_cast<int>(field_count<CameraPath>()));
+  EXPECT_EQ(fields("glints."), static_cast<int>(field_count<GlintParams>()));
+  // material.normal_map and material.glints are listed by what changes ("none -> one").
+  EXPECT_EQ(fields("material.") + 2, static_cast<int>(field_count<Material>()));
+  EXPECT_EQ(fields("normal_map."), static_cast<int>(field_count<NormalMap>()));
+  EXPECT_EQ(fields("mesh."), static_cast<int>(field_count<Mesh>()));
+  // shape.mesh: its contents are the mesh.* fields.
+  EXPECT_EQ(fields("shape.") + 1, static_cast<int>(field_count<Shape>()));
+  EXPECT_EQ(fields("light."), static_cast<int>(field_count<Light>()));
+  // Scene: name, source, description, and film, camera, path, materials, shapes, lights above.
+  EXPECT_EQ(fields("scene.") + 6, static_cast<int>(field_count<Scene>()));
+}

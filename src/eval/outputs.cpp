@@ -26,6 +26,7 @@ nlohmann::json run_metadata(Session& session) {
   json["width"] = session.width();
   json["height"] = session.height();
   json["device"] = session.context().info().renderer;
+  json["reference_backend"] = session.reference_backend().id();
   return json;
 }
 

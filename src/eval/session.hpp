@@ -34,7 +34,7 @@ struct CommonOptions {
   int frames = 0;  ///< 0: the scene's camera path
   std::string out;
   bool no_cache = false;
-  std::string reference_backend = "raster";  ///< --reference-backend: an id of reference_backends()
+  std::string reference_backend = reference_backends().front().id;  ///< --reference-backend; default: the first
   bool quiet = false;
 };
 

@@ -80,7 +80,8 @@ struct ReferenceBackendContext {
   Renderer& renderer;
 };
 
-/// The registered backends, in the order `glintlab` lists them (the first is the default).
+/// The registered backends, in the order `glintlab info` lists them; the first is the default of
+/// `--reference-backend` (CommonOptions::reference_backend).
 struct ReferenceBackendEntry {
   std::string id;
   std::string description;

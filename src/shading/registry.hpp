@@ -16,7 +16,7 @@ namespace glintlab {
 struct MethodRegistration {
   MethodDescriptor (*make)();
   /// all_methods() lists methods by ascending key (a declared order, never link order); keys are
-  /// spaced so that a method can join its family: see the table in docs/extending.md.
+  /// spaced so that a method can join its family: see docs/extending.md, "A method".
   int listing_key;
   const char* source_file;  ///< the descriptor's file, for error messages
 };

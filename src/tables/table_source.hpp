@@ -1,5 +1,5 @@
 #pragma once
-// The CPU half of a precomputed table (docs/extending.md, "Adding a precomputed table"): what it
+// The CPU half of a precomputed table (docs/extending.md, "A precomputed table"): what it
 // is, what its values depend on and how they are generated. TableCache keeps the values on disk;
 // the render layer's Table (render/tables/table.hpp) adds how they are uploaded and bound.
 #include <cstddef>

@@ -3,13 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
-#include <unistd.h>
 
 #include "core/error.hpp"
 #include "render/reference_backend.hpp"
 #include "render/reference_cache.hpp"
 #include "scene/scene_loader.hpp"
+#include "scratch_directory.hpp"
 
 using namespace glintlab;
 
@@ -72,10 +71,9 @@ TEST(ReferenceBackend, IdAndEstimatorArePartOfTheCacheKey) {
 }
 
 TEST(ReferenceBackend, CachedFrameIsOnlyFoundUnderItsBackendsKey) {
-  const auto dir = std::filesystem::temp_directory_path() / ("glintlab-test-" + std::to_string(::getpid()) + "-backend-cache");
-  std::filesystem::remove_all(dir);
+  const test::ScratchDirectory dir;
   {
-    const ReferenceCache cache(dir);
+    const ReferenceCache cache(dir.path());
     const Scene scene = load_scene("builtin:spheres");
     const ReferenceSettings settings{.spp = 16};
     FlatPasses a("a"), b("b");
@@ -86,7 +84,6 @@ TEST(ReferenceBackend, CachedFrameIsOnlyFoundUnderItsBackendsKey) {
     EXPECT_EQ(hit->mean.total.at(1, 1), frame.mean.total.at(1, 1));
     EXPECT_FALSE(cache.load(ReferenceCache::key(scene, scene.camera, 4, 4, settings, b, "device")).has_value());
   }
-  std::filesystem::remove_all(dir);
 }
 
 TEST(ReferenceBackend, UnknownIdNamesTheRegisteredBackends) {

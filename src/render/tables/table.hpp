@@ -1,5 +1,5 @@
 #pragma once
-// A precomputed table (docs/extending.md, "Adding a precomputed table"): its CPU source (id,
+// A precomputed table (docs/extending.md, "A precomputed table"): its CPU source (id,
 // settings, generator; tables/table_source.hpp) and how it lives on the GPU: the texture it is
 // uploaded to and the GLSL sampler that reads it. One file per table defines one of these, and
 // render/tables/registry.cpp lists it once; the list gives it its texture unit.

@@ -47,9 +47,12 @@ void add_common(CLI::App* cmd, CommonOptions& o, bool many_methods) {
   cmd->add_option("--reference-backend", o.reference_backend,
                   "how the ground truth is computed (" + backends + "; see 'glintlab info')")
       ->default_str(o.reference_backend);
-  cmd->add_option("--width", o.width, "film width in pixels (overrides the scene)");
-  cmd->add_option("--height", o.height, "film height in pixels (overrides the scene)");
-  cmd->add_option("--frames", o.frames, "frames of the camera path (overrides the scene)");
+  cmd->add_option("--width", o.width, "film width in pixels (overrides the scene)")
+      ->check(CLI::Range(1, kMaxFilmSide));
+  cmd->add_option("--height", o.height, "film height in pixels (overrides the scene)")
+      ->check(CLI::Range(1, kMaxFilmSide));
+  cmd->add_option("--frames", o.frames, "frames of the camera path (overrides the scene)")
+      ->check(CLI::Range(1, kMaxPathFrames));
   cmd->add_flag("--no-cache", o.no_cache, "do not read or write the reference cache");
   cmd->add_flag("-q,--quiet", o.quiet, "no progress bar");
 }
@@ -131,16 +134,14 @@ int render_command(const CommonOptions& o, const std::string& reference_arg, boo
   }
   const auto methods = resolve_methods(o.methods, o.params);
   if (methods.size() != 1) throw InputError("render: --method takes one method; use 'compare' for several");
+  // Every output path is checked before the first frame is rendered.
+  const std::string name = reference_given ? "reference" : methods[0].method->id;
+  const FrameOutput target = o.out.empty() ? FrameOutput{default_out("render", o), name} : frame_output(o.out, name);
+  const std::filesystem::path& dir = target.dir;
+  const std::string& stem = target.stem;
   Session session(opts);
   if (frame < 0 || frame >= session.frames())
     throw InputError("--frame " + std::to_string(frame) + ": allowed: 0 .. " + std::to_string(session.frames() - 1));
-  const std::string out = o.out.empty() ? default_out("render", o) : o.out;
-  const std::filesystem::path path(out);
-  const std::string ext = path.extension().string();
-  const std::string name = reference_given ? "reference" : methods[0].method->id;
-  const bool file = ext == ".exr" || ext == ".png";
-  const std::filesystem::path dir = file ? path.parent_path() : path;
-  const std::string stem = file ? path.stem().string() : name;
   const Frame method = session.render(methods[0], frame);
   if (reference_given) {
     // --reference=auto sizes the reference by the method's own error (the --method, default conventional).
@@ -222,12 +223,14 @@ int run_cli(int argc, char** argv) {
       return render_command(render_o, reference_arg, render->count("--reference") > 0, render_frame);
     } else if (app.got_subcommand("compare")) {
       const auto methods = resolve_methods(compare_o.methods, compare_o.params);
+      if (!compare_o.out.empty()) check_output_directory(compare_o.out);
       Session session(compare_o);
       if (compare_frame < 0 || compare_frame >= session.frames())
         throw InputError("--frame " + std::to_string(compare_frame) + ": allowed: 0 .. " + std::to_string(session.frames() - 1));
       run_compare(session, methods, compare_o.out.empty() ? default_out("compare", compare_o) : compare_o.out, compare_frame);
     } else if (app.got_subcommand("animate")) {
       const auto methods = resolve_methods(animate_o.methods, animate_o.params);
+      if (!animate_o.out.empty()) check_output_directory(animate_o.out);
       Session session(animate_o);
       run_animate(session, methods, animate_o.out.empty() ? default_out("animate", animate_o) : animate_o.out);
     } else if (app.got_subcommand("bench")) {

@@ -1,11 +1,43 @@
 #include "eval/outputs.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 
 #include "core/colour.hpp"
+#include "core/error.hpp"
 #include "core/image_io.hpp"
 
 namespace glintlab {
+
+void check_output_directory(const std::filesystem::path& dir, const std::string& flag) {
+  std::error_code ec;
+  for (std::filesystem::path p = dir; !p.empty(); p = p.parent_path()) {
+    if (std::filesystem::exists(p, ec) && !std::filesystem::is_directory(p, ec))
+      throw InputError(flag + " " + dir.string() + ": " + p.string() +
+                       " is a file, not a directory; allowed: a directory path (created if missing)");
+    if (p == p.parent_path()) break;
+  }
+}
+
+FrameOutput frame_output(const std::string& path, const std::string& default_stem) {
+  const std::filesystem::path p(path);
+  std::string ext = p.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (!ext.empty() && ext != ".exr" && ext != ".png")
+    throw InputError("-o " + path + ": glintlab cannot write '" + p.extension().string() +
+                     "' files; allowed: NAME.exr or NAME.png (both are written), or a directory without an extension");
+  const bool file = !ext.empty();
+  FrameOutput out{file ? p.parent_path() : p, file ? p.stem().string() : default_stem};
+  check_output_directory(out.dir);
+  std::error_code ec;
+  for (const char* e : {".exr", ".png"}) {
+    const auto target = out.dir / (out.stem + e);
+    if (std::filesystem::is_directory(target, ec))
+      throw InputError("-o " + path + ": " + target.string() + " is a directory; allowed: a file name to write");
+  }
+  return out;
+}
 
 void write_frame(const std::filesystem::path& dir, const std::string& stem, const Frame& frame, const Film& film) {
   write_exr(dir / (stem + ".exr"), {{"", &frame.total}, {"specular", &frame.specular}});

@@ -10,6 +10,20 @@
 
 namespace glintlab {
 
+/// Where `render -o PATH` writes: <dir>/<stem>.exr and <dir>/<stem>.png.
+struct FrameOutput {
+  std::filesystem::path dir;
+  std::string stem;
+};
+/// PATH ending in .exr or .png (any case) names the two files beside each other; a path without an
+/// extension is a directory that gets <default_stem>.exr/.png. Checked before anything is rendered:
+/// throws InputError for another extension, for a target file that exists as a directory, and for
+/// a folder on the way that exists as a file.
+FrameOutput frame_output(const std::string& path, const std::string& default_stem);
+/// Throws InputError naming `flag` if `dir` (an output directory) or a folder above it exists as a
+/// file.
+void check_output_directory(const std::filesystem::path& dir, const std::string& flag = "-o");
+
 /// Writes <dir>/<stem>.exr and <dir>/<stem>.png.
 void write_frame(const std::filesystem::path& dir, const std::string& stem, const Frame& frame, const Film& film);
 /// The same for a reference, whose EXR also holds its per-pixel standard error ("standard_error").

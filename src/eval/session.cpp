@@ -100,11 +100,14 @@ Session::Session(const CommonOptions& options)
     throw InputError("--noise-fraction " + std::to_string(options.noise_fraction) + ": allowed: (0, 1]");
   if (options.light_samples < 0 || options.light_samples > 4096)
     throw InputError("--light-samples " + std::to_string(options.light_samples) + ": allowed: 0 (auto) .. 4096");
-  width_ = options.width > 0 ? options.width : scene_.film.width;
-  height_ = options.height > 0 ? options.height : scene_.film.height;
-  if (width_ > 16384 || height_ > 16384 || static_cast<double>(width_) * height_ > 64.0 * 1024 * 1024)
-    throw InputError("--width/--height " + std::to_string(width_) + "x" + std::to_string(height_) +
-                     ": allowed: 1 .. 16384 per side and at most 67108864 pixels");
+  width_ = options.width != 0 ? options.width : scene_.film.width;  // 0: the scene's
+  height_ = options.height != 0 ? options.height : scene_.film.height;
+  if (width_ < 1 || height_ < 1 || width_ > kMaxFilmSide || height_ > kMaxFilmSide ||
+      static_cast<double>(width_) * height_ > kMaxFilmPixels)
+    throw InputError("--width/--height " + std::to_string(width_) + "x" + std::to_string(height_) + ": allowed: 1 .. " +
+                     std::to_string(kMaxFilmSide) + " per side and at most 67108864 pixels");
+  if (options.frames < 0 || options.frames > kMaxPathFrames)
+    throw InputError("--frames " + std::to_string(options.frames) + ": allowed: 1 .. " + std::to_string(kMaxPathFrames));
   frames_ = options.frames > 0 ? options.frames : scene_.path.frames;
   if (options.frames > 0) scene_.path.frames = options.frames;
   reference_.spp = options_.spp_auto ? kProgressivePassSpp * 4 : options_.spp;

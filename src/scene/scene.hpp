@@ -14,6 +14,11 @@
 
 namespace glintlab {
 
+/// Limits of a scene that the scene file and the command line's overrides share.
+inline constexpr int kMaxFilmSide = 16384;
+inline constexpr double kMaxFilmPixels = 64.0 * 1024 * 1024;
+inline constexpr int kMaxPathFrames = 100000;
+
 struct Film {
   int width = 640;
   int height = 360;

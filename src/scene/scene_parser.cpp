@@ -15,9 +15,6 @@ namespace glintlab {
 
 namespace {
 
-constexpr int kMaxFilmSide = 16384;
-constexpr double kMaxFilmPixels = 64.0 * 1024 * 1024;
-constexpr int kMaxFrames = 100000;
 constexpr double kBig = 1e6;  // bound on positions and lengths, in scene units
 
 void parse_film(TomlReader r, Film& film) {
@@ -33,7 +30,7 @@ void parse_film(TomlReader r, Film& film) {
 
 void parse_path(TomlReader r, CameraPath& path) {
   const auto type = r.require_string("type", {"static", "orbit", "dolly", "keyframes"});
-  path.frames = r.get_int("frames", 60, 1, kMaxFrames);
+  path.frames = r.get_int("frames", 60, 1, kMaxPathFrames);
   if (type == "static") {
     path.type = CameraPathType::Static;
   } else if (type == "orbit") {

@@ -90,6 +90,40 @@ TEST_F(Cli, BadInputClassesExitWith2AndWriteNothing) {
   expect_bad_input("render --width 100000", {"100000", "16384"});
   expect_bad_input("render --frame 999", {"--frame 999"});
   expect_bad_input("render --no-such-flag", {"no-such-flag"});
+  // Sizes and frame counts on the command line obey the scene file's limits (issue 13).
+  expect_bad_input("render --width 0", {"--width", "0", "1 to 16384"});
+  expect_bad_input("render --width -64", {"--width", "-64", "1 to 16384"});
+  expect_bad_input("render --height -7", {"--height", "-7", "1 to 16384"});
+  expect_bad_input("animate --frames 0", {"--frames", "1 to 100000"});
+  expect_bad_input("animate --frames -3", {"--frames", "-3"});
+  expect_bad_input("animate --frames 100001", {"--frames", "100001", "1 to 100000"});
+  expect_bad_input("render --reference-backend nope", {"nope", "raster"});
+}
+
+TEST_F(Cli, OutputPathsAreCheckedBeforeAnythingIsWritten) {
+  const std::string scene = " --scene '" + write("s.toml", kScene).string() + "' -q ";
+  // An extension glintlab cannot write is bad input, not a directory named img.jpg.
+  const auto jpg = scratch / "out" / "img.jpg";
+  CliResult r = run_glintlab("render" + scene + "-o '" + jpg.string() + "'");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("'.jpg'"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(scratch / "out")) << "nothing written";
+  // A target that exists as a directory: exit 2, and the other file of the pair not written.
+  fs::create_directories(scratch / "d" / "x.png");
+  r = run_glintlab("render" + scene + "-o '" + (scratch / "d" / "x.png").string() + "'");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("is a directory"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(scratch / "d" / "x.exr"));
+  // An output directory under a file.
+  write("plain-file", "x");
+  r = run_glintlab("compare" + scene + "--methods conventional --spp 4 -o '" + (scratch / "plain-file" / "sub").string() + "'");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("is a file, not a directory"), std::string::npos) << r.err;
+  // Extensions it can write are accepted in any case.
+  r = run_glintlab("render" + scene + "-o '" + (scratch / "up" / "x.PNG").string() + "'");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(fs::is_regular_file(scratch / "up" / "x.exr"));
+  EXPECT_TRUE(fs::is_regular_file(scratch / "up" / "x.png"));
 }
 
 TEST_F(Cli, ListingsWork) {

@@ -70,7 +70,18 @@ void parse_camera(TomlReader r, Camera& cam, CameraPath& path) {
   if (glm::length(forward) < 1e-9f) r.fail("target", "equals the position; the camera needs a direction");
   if (glm::length(glm::cross(forward, cam.up)) < 1e-9f * glm::length(forward))
     r.fail("up", "is parallel to the viewing direction");
-  if (const toml::table* p = r.get_table("path")) parse_path(TomlReader(*p, r.file(), "[camera.path]"), path);
+  if (const toml::table* p = r.get_table("path")) {
+    parse_path(TomlReader(*p, r.file(), "[camera.path]"), path);
+    // Every frame of the path obeys the rules of a static camera (a direction, an up not along it).
+    for (int t = 0; t < path.frames; ++t) {
+      const Camera c = path.at(cam, t);
+      const glm::vec3 f = c.target - c.position;
+      if (glm::length(f) < 1e-9f)
+        r.fail("path", "frame " + std::to_string(t) + " puts the camera at its target; every frame needs a direction");
+      if (glm::length(glm::cross(f, c.up)) < 1e-9f * glm::length(f))
+        r.fail("path", "frame " + std::to_string(t) + " looks along `up`; every frame needs an up not parallel to its view");
+    }
+  }
   r.finish();
 }
 

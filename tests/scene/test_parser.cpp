@@ -150,3 +150,21 @@ TEST(NormalMaps, BumpsHaveTheRequestedSlopeSpread) {
   // Slope variance over both axes = alpha^2 (Beckmann convention), within sampling error.
   EXPECT_NEAR((sx + sy) / static_cast<double>(m.normals.size()), 0.09, 0.01);
 }
+
+TEST(SceneParser, APathFrameAtTheTargetIsRejectedLikeAStaticCameraThere) {
+  // A static camera at its target is rejected; so is a path that reaches it (it rendered black).
+  expect_error(TestScene::minimal().camera({0, 1, 4}, {0, 1, 4}, 40).toml(), {"target", "equals the position"});
+  const std::string dolly = TestScene::minimal()
+                                .camera({0, 0, 4}, {0, 0, 0}, 40)
+                                .raw("[camera.path]\ntype = \"dolly\"\nto = [0, 0, 0]\nframes = 5\n")
+                                .toml();
+  expect_error(dolly, {"path", "frame 4", "at its target"});
+  // Looking straight down the up axis at some frame is as degenerate.
+  const std::string keys = TestScene::minimal()
+                               .camera({0, 0, 4}, {0, 0, 0}, 40)
+                               .raw("[camera.path]\ntype = \"keyframes\"\nframes = 3\n"
+                                    "[[camera.path.keys]]\nposition = [0, 0, 4]\ntarget = [0, 0, 0]\n"
+                                    "[[camera.path.keys]]\nposition = [0, 4, 0]\ntarget = [0, 0, 0]\n")
+                               .toml();
+  expect_error(keys, {"path", "frame 2", "up"});
+}

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages glintlab needs to build, test and run, if any are missing.
-# Usage: tools/install-deps.sh          what building, testing and running need
-#        tools/install-deps.sh results  also what tools/make-results.sh uses (jq, ffmpeg)
+# Usage: tools/install-deps.sh          what building, testing and running need (ffmpeg: animate's MP4s)
+#        tools/install-deps.sh results  also what tools/make-results.sh uses (jq)
 # (as root, or with sudo available)
 set -euo pipefail
 
@@ -11,8 +11,9 @@ packages=(
   libglm-dev libopenexr-dev libstb-dev libtinygltf-dev libtinyobjloader-dev
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  ffmpeg
 )
-if [[ "${1:-}" == results ]]; then packages+=(jq ffmpeg); fi
+if [[ "${1:-}" == results ]]; then packages+=(jq); fi
 
 missing=()
 for p in "${packages[@]}"; do

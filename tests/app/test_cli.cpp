@@ -216,3 +216,24 @@ TEST_F(Cli, AutoReferenceReachesItsTargetOrItsCapAndReportsItsNoise) {
     EXPECT_NE(read_bytes(out / "metrics.csv").find("reference_noise_rmse"), std::string::npos);
   }
 }
+
+TEST_F(Cli, AnimateWritesDecodableMp4sWithEveryFrame) {
+  // ffmpeg is one of the set-up's packages (tools/install-deps.sh); without it animate writes PNGs.
+  if (std::system("command -v ffprobe >/dev/null 2>&1") != 0) GTEST_SKIP() << "ffmpeg is not installed";
+  const auto out = scratch / "anim";
+  const std::string scene = TestScene::minimal().film(18, 14).raw("[camera.path]\ntype = \"orbit\"\nframes = 5\n").toml();
+  const CliResult r = run_glintlab("animate --scene '" + write("orbit.toml", scene).string() +
+                                   "' --methods conventional --spp 4 -q -o '" + out.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* video : {"conventional.mp4", "reference.mp4"}) {
+    const auto mp4 = out / video;
+    ASSERT_TRUE(fs::is_regular_file(mp4)) << video;
+    // Decoded to the end (-count_frames): its frame count and size (odd sizes padded to even).
+    const auto probe = scratch / "probe.txt";
+    const std::string cmd = "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+                            "stream=nb_read_frames,width,height -of csv=p=0 '" + mp4.string() + "' > '" +
+                            probe.string() + "'";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << video << " does not decode";
+    EXPECT_EQ(read_bytes(probe), "18,14,5\n") << video;
+  }
+}

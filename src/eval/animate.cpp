@@ -7,6 +7,7 @@
 #include "core/atomic_file.hpp"
 #include "core/colour.hpp"
 #include "core/image_io.hpp"
+#include "core/output_stage.hpp"
 #include "eval/commands.hpp"
 #include "eval/outputs.hpp"
 
@@ -60,6 +61,8 @@ AnimateResult run_animate(Session& session, const std::vector<MethodChoice>& met
   FlickerFloor floor;
   // Frames go to a staging folder first, so a failure half-way leaves no partial animation.
   const auto staging = out / ".frames-staging";
+  std::filesystem::create_directories(out);
+  remove_stale_temporaries(out);  // what a killed run left: AtomicFile's .tmp-<pid>-* files
   std::filesystem::remove_all(staging);
   char name[32];
   for (int f = 0; f < frames; ++f) {

@@ -7,6 +7,7 @@
 #include "core/atomic_file.hpp"
 #include "core/colour.hpp"
 #include "core/image_io.hpp"
+#include "core/output_stage.hpp"
 #include "eval/commands.hpp"
 #include "eval/outputs.hpp"
 
@@ -110,12 +111,15 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
   }
   if (error_scale <= 0.0f) error_scale = 1.0f;
 
+  // Published as a unit: written into a staging folder, moved into `out` with the metrics last.
+  OutputStage stage(out);
+  const std::filesystem::path& staged = stage.path();
   const Film& film = session.scene().film;
-  write_reference(out, "reference", reference_estimate, film);
+  write_reference(staged, "reference", reference_estimate, film);
   std::vector<Image> displays{tonemap_for_display(reference.total, film.exposure, film.bloom)};
   for (std::size_t i = 0; i < methods.size(); ++i) {
-    write_frame(out, methods[i].method->id, frames[i], film);
-    write_png(out / (methods[i].method->id + "-error.png"), false_colour(errors[i], error_scale));
+    write_frame(staged, methods[i].method->id, frames[i], film);
+    write_png(staged / (methods[i].method->id + "-error.png"), false_colour(errors[i], error_scale));
     displays.push_back(tonemap_for_display(frames[i].total, film.exposure, film.bloom));
   }
   std::vector<const Image*> display_ptrs;
@@ -124,7 +128,7 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
   nlohmann::json crops = nlohmann::json::array();
   for (std::size_t r = 0; r < regions.size(); ++r) {
     const std::string name = "worst-region-" + std::to_string(r + 1) + ".png";
-    write_png(out / name, side_by_side(display_ptrs, regions[r], std::max(1, 192 / regions[r].size)));
+    write_png(staged / name, side_by_side(display_ptrs, regions[r], std::max(1, 192 / regions[r].size)));
     crops.push_back({{"file", name}, {"x", regions[r].x}, {"y", regions[r].y}, {"size", regions[r].size}});
   }
 
@@ -169,8 +173,9 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
                                {"energy_ratio_error", m.energy_ratio * energy_error},
                                {"energy_ratio_specular_error", m.energy_ratio_specular * energy_error_specular}});
   }
-  write_text_file(out / "metrics.csv", csv.str());
-  write_text_file(out / "metrics.json", json.dump(2) + "\n");
+  write_text_file(staged / "metrics.csv", csv.str());
+  write_text_file(staged / "metrics.json", json.dump(2) + "\n");
+  stage.publish({"metrics.csv", "metrics.json"});
   std::cout << "scene " << session.scene().source << ", " << session.width() << "x" << session.height() << ", "
             << describe_reference(reference_estimate) << "\n"
             << format_table(rows, reference_estimate) << "written to " << out.string() << "/\n";

@@ -7,10 +7,12 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <cmath>
 #include <map>
 #include <tuple>
 
 #include "core/error.hpp"
+#include "scene/obj_check.hpp"
 
 namespace glintlab {
 
@@ -38,7 +40,7 @@ std::vector<T> read_accessor(const tinygltf::Model& model, int index, int compon
                            static_cast<std::size_t>(components);
   const std::size_t stride = acc.ByteStride(view) > 0 ? static_cast<std::size_t>(acc.ByteStride(view)) : elem;
   const std::size_t begin = view.byteOffset + acc.byteOffset;
-  if (begin + stride * (acc.count ? acc.count - 1 : 0) + elem > buf.data.size())
+  if (acc.count > buf.data.size() || begin + stride * (acc.count ? acc.count - 1 : 0) + elem > buf.data.size())
     throw InputError(file + ": accessor " + std::to_string(index) + " reads past the end of its buffer");
   std::vector<T> out(acc.count);
   for (std::size_t i = 0; i < acc.count; ++i) {
@@ -58,6 +60,35 @@ std::vector<T> read_accessor(const tinygltf::Model& model, int index, int compon
     }
   }
   return out;
+}
+
+// An accessor's values must be finite: NaN or infinity would reach the rasteriser as holes.
+template <typename Vec>
+void require_finite(const std::vector<Vec>& values, int accessor, const char* attribute, const std::string& file) {
+  for (std::size_t i = 0; i < values.size(); ++i)
+    for (int c = 0; c < Vec::length(); ++c)
+      if (!std::isfinite(values[i][c]))
+        throw InputError(file + ": accessor " + std::to_string(accessor) + " (" + attribute + ") element " +
+                         std::to_string(i) + " has value " + std::to_string(values[i][c]) + "; allowed: finite numbers");
+}
+
+// A vertex attribute must give one value per POSITION.
+template <typename Vec>
+void require_count(const std::vector<Vec>& values, std::size_t positions, int accessor, const char* attribute,
+                   const std::string& file) {
+  if (values.size() != positions)
+    throw InputError(file + ": accessor " + std::to_string(accessor) + " (" + attribute + ") has " +
+                     std::to_string(values.size()) + " elements; allowed: " + std::to_string(positions) +
+                     ", the POSITION count");
+}
+
+void require_indices_in_range(const std::vector<std::uint32_t>& indices, std::size_t positions, int accessor,
+                              const std::string& file) {
+  for (std::size_t i = 0; i < indices.size(); ++i)
+    if (indices[i] >= positions)
+      throw InputError(file + ": accessor " + std::to_string(accessor) + " (indices) element " + std::to_string(i) +
+                       " has value " + std::to_string(indices[i]) + "; allowed: 0 to " +
+                       std::to_string(positions) + " - 1 (the POSITION count)");
 }
 
 glm::mat4 node_matrix(const tinygltf::Node& node) {
@@ -88,19 +119,27 @@ void add_gltf_node(const tinygltf::Model& model, int index, const glm::mat4& par
       if (pos_it == prim.attributes.end()) throw InputError(file + ": a primitive has no POSITION");
       Mesh part;
       part.positions = read_accessor<glm::vec3>(model, pos_it->second, 3, file);
+      require_finite(part.positions, pos_it->second, "POSITION", file);
       if (prim.indices >= 0) {
         part.indices = read_accessor<std::uint32_t>(model, prim.indices, 1, file);
+        require_indices_in_range(part.indices, part.positions.size(), prim.indices, file);
       } else {
         for (std::uint32_t i = 0; i < part.positions.size(); ++i) part.indices.push_back(i);
       }
-      if (auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end())
+      if (auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end()) {
         part.normals = read_accessor<glm::vec3>(model, it->second, 3, file);
-      else
+        require_count(part.normals, part.positions.size(), it->second, "NORMAL", file);
+        require_finite(part.normals, it->second, "NORMAL", file);
+      } else {
         compute_normals(part);
-      if (auto it = prim.attributes.find("TEXCOORD_0"); it != prim.attributes.end())
+      }
+      if (auto it = prim.attributes.find("TEXCOORD_0"); it != prim.attributes.end()) {
         part.uvs = read_accessor<glm::vec2>(model, it->second, 2, file);
-      else
+        require_count(part.uvs, part.positions.size(), it->second, "TEXCOORD_0", file);
+        require_finite(part.uvs, it->second, "TEXCOORD_0", file);
+      } else {
         part.uvs.assign(part.positions.size(), glm::vec2(0.0f));
+      }
       for (auto& p : part.positions) p = glm::vec3(world * glm::vec4(p, 1.0f));
       for (auto& n : part.normals) n = glm::normalize(normal_matrix * n);
       out.append(part);
@@ -133,7 +172,18 @@ Mesh load_gltf(const std::filesystem::path& path) {
   return mesh;
 }
 
+// tinyobjloader resolves indices without a range check; check_obj_statements has rejected every
+// bad one with its line, and this repeats the check so no index can ever read past a list.
+std::size_t checked_index(int index, std::size_t list_size, std::size_t components, const char* what,
+                          const std::filesystem::path& path, const std::string& shape) {
+  if (index < 0 || components * static_cast<std::size_t>(index) + components > list_size)
+    throw InputError(path.string() + ": object '" + shape + "': a face refers to " + what + " " +
+                     std::to_string(index + 1) + "; allowed: 1 to " + std::to_string(list_size / components));
+  return static_cast<std::size_t>(index);
+}
+
 Mesh load_obj(const std::filesystem::path& path) {
+  check_obj_statements(path);
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.mtl_search_path = path.parent_path().string();
@@ -149,19 +199,17 @@ Mesh load_obj(const std::filesystem::path& path) {
       const auto key = std::make_tuple(idx.vertex_index, idx.normal_index, idx.texcoord_index);
       auto [it, inserted] = unique.try_emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
       if (inserted) {
-        const auto v = static_cast<std::size_t>(idx.vertex_index);
-        if (idx.vertex_index < 0 || 3 * v + 2 >= attrib.vertices.size())
-          throw InputError(path.string() + ": face refers to missing vertex " + std::to_string(idx.vertex_index + 1));
+        const auto v = checked_index(idx.vertex_index, attrib.vertices.size(), 3, "position", path, shape.name);
         mesh.positions.emplace_back(attrib.vertices[3 * v], attrib.vertices[3 * v + 1], attrib.vertices[3 * v + 2]);
         if (idx.normal_index >= 0) {
-          const auto n = static_cast<std::size_t>(idx.normal_index);
+          const auto n = checked_index(idx.normal_index, attrib.normals.size(), 3, "normal", path, shape.name);
           mesh.normals.emplace_back(attrib.normals[3 * n], attrib.normals[3 * n + 1], attrib.normals[3 * n + 2]);
         } else {
           has_normals = false;
           mesh.normals.emplace_back(0.0f);
         }
         if (idx.texcoord_index >= 0) {
-          const auto t = static_cast<std::size_t>(idx.texcoord_index);
+          const auto t = checked_index(idx.texcoord_index, attrib.texcoords.size(), 2, "uv", path, shape.name);
           mesh.uvs.emplace_back(attrib.texcoords[2 * t], attrib.texcoords[2 * t + 1]);
         } else {
           mesh.uvs.emplace_back(0.0f);

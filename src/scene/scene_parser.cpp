@@ -1,4 +1,5 @@
 // The TOML scene format. Every key is documented in docs/scene-format.md; keep the two in step.
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
@@ -202,6 +203,13 @@ Shape parse_shape(TomlReader r, const std::map<std::string, int>& materials, con
     mesh = make_torus(major, minor, segments, r.get_int("sides", 48, 3, 4096));
   } else if (type == "tube") {
     const auto points = r.require_vec3_list("points", 2);
+    // The tube's frame starts from the direction between points: coincident points have none.
+    if (std::all_of(points.begin(), points.end(), [&](const glm::vec3& p) { return p == points.front(); })) {
+      std::ostringstream s;
+      s << "all " << points.size() << " points are [" << points[0].x << ", " << points[0].y << ", " << points[0].z
+        << "]; allowed: at least two different points";
+      r.fail("points", s.str());
+    }
     const auto radius = static_cast<float>(r.get_number("radius", 0.05, 1e-6, kBig));
     const int segments = r.get_int("segments", 16, 1, 1024);
     mesh = make_tube(points, radius, segments, r.get_int("sides", 16, 3, 1024));
@@ -219,7 +227,9 @@ Shape parse_shape(TomlReader r, const std::map<std::string, int>& materials, con
   }
   r.finish();
   shape.mesh = std::make_shared<Mesh>(std::move(mesh));
-  if (const auto problem = shape.mesh->validate(); !problem.empty()) r.fail("type", "broken geometry: " + problem);
+  // A generator's broken output comes from the key that shapes it (a tube's points), else from the type.
+  if (const auto problem = shape.mesh->validate(); !problem.empty())
+    r.fail(type == "tube" ? "points" : "type", "broken geometry: " + problem);
   return shape;
 }
 

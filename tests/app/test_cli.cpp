@@ -237,3 +237,10 @@ TEST_F(Cli, AnimateWritesDecodableMp4sWithEveryFrame) {
     EXPECT_EQ(read_bytes(probe), "18,14,5\n") << video;
   }
 }
+
+TEST_F(Cli, HostileMeshExitsWith2AndWritesNothing) {
+  // A face whose normal index is past the `vn` lines crashed load_mesh_file (issue 13).
+  write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//2 3//1\n");
+  const fs::path scene = write("hostile.toml", TestScene::minimal().film(16, 16).shape("mesh", "m", {{"file", "bad.obj"}}).toml());
+  expect_bad_input("render --scene '" + scene.string() + "'", {"bad.obj:5", "normal index 2", "allowed: 1 to 1"});
+}

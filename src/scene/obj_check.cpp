@@ -1,0 +1,152 @@
+#include "scene/obj_check.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+
+namespace glintlab {
+
+namespace {
+
+// The three lists a face indexes, in the order of an `f` reference v/vt/vn.
+enum class ObjList { Position, Uv, Normal };
+
+const char* statement_of(ObjList list) {
+  switch (list) {
+    case ObjList::Position: return "v";
+    case ObjList::Uv: return "vt";
+    case ObjList::Normal: return "vn";
+  }
+  return "";
+}
+
+const char* name_of(ObjList list) {
+  switch (list) {
+    case ObjList::Position: return "position";
+    case ObjList::Uv: return "uv";
+    case ObjList::Normal: return "normal";
+  }
+  return "";
+}
+
+// A positive index may refer to a line after the face; it is checked once the whole file is read.
+struct ForwardReference {
+  std::size_t line;
+  ObjList list;
+  long value;
+};
+
+class ObjChecker {
+ public:
+  explicit ObjChecker(std::string file) : file_(std::move(file)) {}
+
+  void statement(std::size_t line, std::istringstream& tokens) {
+    std::string command;
+    tokens >> command;
+    if (command == "v") {
+      check_numbers(line, command, tokens);
+      ++count_[index(ObjList::Position)];
+    } else if (command == "vn") {
+      check_numbers(line, command, tokens);
+      ++count_[index(ObjList::Normal)];
+    } else if (command == "vt") {
+      check_numbers(line, command, tokens);
+      ++count_[index(ObjList::Uv)];
+    } else if (command == "f") {
+      for (std::string ref; tokens >> ref && ref[0] != '#';) check_face_reference(line, ref);
+    }
+  }
+
+  void finish() const {
+    for (const auto& f : forward_)
+      if (static_cast<std::size_t>(f.value) > count_[index(f.list)]) fail_index(f.line, f.list, f.value, count_[index(f.list)], true);
+  }
+
+ private:
+  static std::size_t index(ObjList list) { return static_cast<std::size_t>(list); }
+
+  // Values are stored as float: anything past FLT_MAX (1e39) is as unusable as nan or inf.
+  void check_numbers(std::size_t line, const std::string& command, std::istringstream& tokens) const {
+    for (std::string token; tokens >> token && token[0] != '#';) {
+      char* end = nullptr;
+      const double value = std::strtod(token.c_str(), &end);
+      const bool is_number = end == token.c_str() + token.size() && !token.empty();
+      if (!is_number || !std::isfinite(value) || std::abs(value) > std::numeric_limits<float>::max()) {
+        std::ostringstream s;
+        s << file_ << ':' << line << ": `" << command << "` value " << token << " is not a finite number; allowed: "
+          << "numbers of magnitude at most " << std::numeric_limits<float>::max();
+        throw InputError(s.str());
+      }
+    }
+  }
+
+  void check_face_reference(std::size_t line, const std::string& ref) {
+    // v, v/vt, v//vn or v/vt/vn
+    std::size_t begin = 0;
+    for (ObjList list : {ObjList::Position, ObjList::Uv, ObjList::Normal}) {
+      const std::size_t slash = ref.find('/', begin);
+      const std::string part = ref.substr(begin, slash == std::string::npos ? std::string::npos : slash - begin);
+      if (!part.empty() || list == ObjList::Position) check_index(line, list, part);
+      if (slash == std::string::npos) break;
+      begin = slash + 1;
+    }
+  }
+
+  void check_index(std::size_t line, ObjList list, const std::string& text) {
+    char* end = nullptr;
+    errno = 0;
+    const long value = std::strtol(text.c_str(), &end, 10);
+    const std::size_t so_far = count_[index(list)];
+    if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || value == 0) {
+      std::ostringstream s;
+      s << file_ << ':' << line << ": `f` " << name_of(list) << " index '" << text
+        << "' is not a nonzero integer; allowed: 1 to N for the Nth `" << statement_of(list)
+        << "` line, or -1 to -N counting back from the face";
+      throw InputError(s.str());
+    }
+    if (value < 0 && static_cast<std::size_t>(-value) > so_far) fail_index(line, list, value, so_far, false);
+    if (value > 0 && static_cast<std::size_t>(value) > so_far) forward_.push_back({line, list, value});
+  }
+
+  [[noreturn]] void fail_index(std::size_t line, ObjList list, long value, std::size_t count, bool whole_file) const {
+    std::ostringstream s;
+    s << file_ << ':' << line << ": `f` " << name_of(list) << " index " << value << " is out of range; allowed: ";
+    const char* statement = statement_of(list);
+    if (count == 0) {
+      s << "none, " << (whole_file ? "the file has" : "the face follows") << " no `" << statement << "` line";
+    } else if (whole_file) {
+      s << "1 to " << count << " (the file has " << count << " `" << statement << "` line" << (count == 1 ? ")" : "s)");
+    } else {
+      s << "-1 to -" << count << " (the face follows " << count << " `" << statement << "` line" << (count == 1 ? ")" : "s)");
+    }
+    throw InputError(s.str());
+  }
+
+  std::string file_;
+  std::size_t count_[3] = {0, 0, 0};
+  std::vector<ForwardReference> forward_;
+};
+
+}  // namespace
+
+void check_obj_statements(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string() + ": cannot read OBJ file");
+  ObjChecker checker(path.string());
+  std::size_t line_number = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++line_number;
+    std::istringstream tokens(line);
+    checker.statement(line_number, tokens);
+  }
+  checker.finish();
+}
+
+}  // namespace glintlab

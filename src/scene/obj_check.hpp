@@ -1,0 +1,14 @@
+#pragma once
+// Line-by-line check of a Wavefront OBJ file before tinyobjloader reads it: tinyobjloader keeps no
+// line numbers, resolves indices without range checks and parses `nan` as a number, so the errors
+// a user can act on (which line, which value, what is allowed) have to come from here.
+#include <filesystem>
+
+namespace glintlab {
+
+/// Throws InputError "FILE:LINE: ..." for a `v`/`vn`/`vt` value that is not a finite float, and
+/// for an `f` index that is 0 or refers past the position, normal or uv lists (positive indices
+/// against the whole file, negative ones against the lines before the face, as OBJ defines them).
+void check_obj_statements(const std::filesystem::path& path);
+
+}  // namespace glintlab

@@ -18,6 +18,7 @@ RasterReference::RasterReference(const ReferenceBackendContext& context)
     : shaders_(context.shaders), scene_(context.scene), renderer_(context.renderer) {}
 
 std::uint64_t RasterReference::estimator_hash() const {
+  if (estimator_hash_ != 0) return estimator_hash_;
   Hasher h;
   std::set<MaterialVariant> variants;
   for (const auto& mesh : scene_.meshes()) variants.insert(material_variant(scene_, mesh.material));
@@ -30,7 +31,8 @@ std::uint64_t RasterReference::estimator_hash() const {
   h.text(shaders_.expand("passes/downsample.comp", {}));
   // The tables the reference reads: a new generator version or settings is a new reference.
   for (const auto& id : scene_.material_table_ids()) h.value(table_key(find_table(id).source));
-  return h.digest();
+  estimator_hash_ = h.digest();
+  return estimator_hash_;
 }
 
 Frame RasterReference::render_pass(const Camera& camera, int width, int height, const ReferencePass& pass,

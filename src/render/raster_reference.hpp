@@ -22,6 +22,7 @@ class RasterReference final : public ReferenceBackend {
   ShaderLibrary& shaders_;
   const GpuScene& scene_;
   Renderer& renderer_;
+  mutable std::uint64_t estimator_hash_ = 0;  ///< computed once: the programs' text is fixed per scene
 };
 
 }  // namespace glintlab

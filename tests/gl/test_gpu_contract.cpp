@@ -38,23 +38,16 @@ GLint uniform_offset(GLuint program, const char* name) {
   return offset;
 }
 
-GLint block_size(GLuint program, const char* name) {
+/// A property (GL_BUFFER_DATA_SIZE, GL_BUFFER_BINDING) of the uniform block `name`, or -1.
+GLint block_property(GLuint program, const char* name, GLenum property) {
   const GLuint index = glGetProgramResourceIndex(program, GL_UNIFORM_BLOCK, name);
   if (index == GL_INVALID_INDEX) return -1;
-  const GLenum props[] = {GL_BUFFER_DATA_SIZE};
-  GLint size = -1;
-  glGetProgramResourceiv(program, GL_UNIFORM_BLOCK, index, 1, props, 1, nullptr, &size);
-  return size;
+  GLint value = -1;
+  glGetProgramResourceiv(program, GL_UNIFORM_BLOCK, index, 1, &property, 1, nullptr, &value);
+  return value;
 }
-
-GLint block_binding(GLuint program, const char* name) {
-  const GLuint index = glGetProgramResourceIndex(program, GL_UNIFORM_BLOCK, name);
-  if (index == GL_INVALID_INDEX) return -1;
-  const GLenum props[] = {GL_BUFFER_BINDING};
-  GLint binding = -1;
-  glGetProgramResourceiv(program, GL_UNIFORM_BLOCK, index, 1, props, 1, nullptr, &binding);
-  return binding;
-}
+GLint block_size(GLuint program, const char* name) { return block_property(program, name, GL_BUFFER_DATA_SIZE); }
+GLint block_binding(GLuint program, const char* name) { return block_property(program, name, GL_BUFFER_BINDING); }
 
 GLint sampler_unit(GLuint program, const char* name) {
   GLint unit = -1;

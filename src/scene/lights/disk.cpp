@@ -14,10 +14,7 @@ LightKind disk_light_kind() {
       .form = LightForm::Disk,
       .parse =
           [](TomlReader& r) {
-            Light l;
-            l.position = r.require_vec3("position");
-            l.colour = r.get_colour("radiance", glm::vec3(1.0f), 0.0, light_keys::kMaxPower);
-            l.visible = r.get_bool("visible", true);
+            Light l = light_keys::parse_area_light(r);
             l.radius = static_cast<float>(r.require_number("radius", 1e-6, light_keys::kMaxLength));
             l.direction = light_keys::require_direction(r, "direction");
             return l;

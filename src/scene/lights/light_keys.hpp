@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 
+#include "scene/light.hpp"
 #include "scene/toml_reader.hpp"
 
 namespace glintlab::light_keys {
@@ -16,6 +17,16 @@ inline glm::vec3 require_direction(TomlReader& r, const std::string& key) {
   const glm::vec3 d = r.require_vec3(key);
   if (glm::length(d) < 1e-9f) r.fail(key, "value is a zero vector; allowed: any non-zero vector");
   return glm::normalize(d);
+}
+
+/// The keys every area light has: its centre `position`, its `radiance` and whether it is
+/// `visible` to the camera as an emitter.
+inline Light parse_area_light(TomlReader& r) {
+  Light l;
+  l.position = r.require_vec3("position");
+  l.colour = r.get_colour("radiance", glm::vec3(1.0f), 0.0, kMaxPower);
+  l.visible = r.get_bool("visible", true);
+  return l;
 }
 
 /// Rotation taking +y to `n` (the mesh generators build disks and planes facing +y).

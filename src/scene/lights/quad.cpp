@@ -14,10 +14,7 @@ LightKind quad_light_kind() {
       .form = LightForm::Polygon,
       .parse =
           [](TomlReader& r) {
-            Light l;
-            l.position = r.require_vec3("position");
-            l.colour = r.get_colour("radiance", glm::vec3(1.0f), 0.0, light_keys::kMaxPower);
-            l.visible = r.get_bool("visible", true);
+            Light l = light_keys::parse_area_light(r);
             l.size = r.get_vec2("size", glm::vec2(1.0f), 1e-6, light_keys::kMaxLength);
             l.up = r.get_vec3("up", glm::vec3(0, 0, 1));
             l.direction = light_keys::require_direction(r, "direction");

@@ -12,8 +12,8 @@ in vec2 vUV;
 layout(binding = NORMAL_MAP_UNIT) uniform sampler2D uNormalMap;
 uniform int uMaterial;
 
-// Normal-map coordinates of a uv (the material's tiling applied).
-vec2 normalMapCoordinates(vec2 uv) { return uv * materials[uMaterial].diffuse_tiling.a; }
+// Normal-map coordinates of a uv (the material's tiling and texture transform applied).
+vec2 normalMapCoordinates(vec2 uv) { return uTextureTransforms[TEXTURE_SLOT_NORMAL_MAP] * vec3(uv, 1.0); }
 
 // The vertex attributes at `offset` pixels from the pixel centre, perspective-correct, as
 // interpolateAtOffset would give them (extrapolated linearly beyond the triangle). An attribute

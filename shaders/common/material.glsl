@@ -7,8 +7,18 @@
 struct MaterialData {
   vec4 f0_ndf;          // rgb: Schlick F0; a: 0 GGX, 1 Beckmann
   vec4 diffuse_tiling;  // rgb: Lambert albedo; a: normal-map repeats per uv unit
-  vec4 alpha_rho;       // xy: alpha_x, alpha_y; z: slope correlation rho; w: unused
+  vec4 alpha_rho;       // xy: alpha_x, alpha_y; z: slope correlation rho; w: anisotropy rotation
+                        // (radians, from the tangent towards the bitangent)
   vec4 glints;          // glinty materials (a program variant, MATERIAL_GLINTS): x: ln microfacets
                         // per uv area; y: relative area; z: max anisotropy; w: unused
+  vec4 emission;        // rgb: emitted radiance; w: unused
+  // Textured materials (a program variant, MATERIAL_TEXTURES; common/material_textures.glsl):
+  vec4 base_color;      // rgba: factor of the base-colour texture
+  vec4 metal_rough;     // x: metallic factor; y: perceptual-roughness factor; z: anisotropy strength
+  vec4 dielectric_f0;   // rgb: f0 of the non-metal part
 };
 layout(std140, binding = MATERIAL_BLOCK_BINDING) uniform MaterialBlock { MaterialData materials[MAX_MATERIALS]; };
+
+// Per draw: the affine maps from the surface's uv to each of the draw's material textures'
+// coordinates (the normal map's tiling; KHR_texture_transform), indexed by TEXTURE_SLOT_*.
+uniform mat3x2 uTextureTransforms[TEXTURE_SLOTS];

@@ -6,6 +6,7 @@ struct Surface {
   vec3 normal;     // shading normal (normal-mapped, facing the viewer)
   vec3 tangent;    // shading frame x (alpha_x direction), orthogonal to normal
   vec3 bitangent;  // shading frame y (alpha_y direction), on the side of the texture's +v
+  float anisotropyRotation;  // radians from the vertex tangent to the alpha_x direction
   vec3 vertexNormal;     // interpolated geometric frame, before the normal map (facing the viewer)
   vec3 vertexTangent;
   vec3 vertexBitangent;
@@ -33,12 +34,16 @@ struct Radiance {
 // Sets the shading normal and rebuilds the frame around it: the vertex tangent orthogonalised,
 // and the bitangent on the side of the texture's +v, so that anisotropy and normal-map slopes keep
 // their meaning under mirroring transforms and on back faces (the frame is left-handed there;
-// everything downstream uses toLocal/toWorld, which do not care).
+// everything downstream uses toLocal/toWorld, which do not care); then both turned by the
+// material's anisotropy rotation (exactly the same frame at rotation 0).
 void setShadingNormal(inout Surface s, vec3 n) {
   s.normal = n;
-  s.tangent = normalize(s.vertexTangent - n * dot(n, s.vertexTangent));
-  vec3 b = cross(n, s.tangent);
-  s.bitangent = dot(b, s.vertexBitangent) < 0.0 ? -b : b;
+  vec3 t = normalize(s.vertexTangent - n * dot(n, s.vertexTangent));
+  vec3 b = cross(n, t);
+  if (dot(b, s.vertexBitangent) < 0.0) b = -b;
+  float c = cos(s.anisotropyRotation), si = sin(s.anisotropyRotation);
+  s.tangent = c * t + si * b;
+  s.bitangent = c * b - si * t;
 }
 
 // The vertex tangent frame around an interpolated normal n already turned to the seen side

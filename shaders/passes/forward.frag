@@ -2,11 +2,15 @@
 // flow), then sums the method's (or the reference's) radiance over every light. The module is
 // chosen by the renderer through the $METHOD include; this pass never names a method.
 // Variant defines (src/render/renderer.cpp): LIGHT_RANGES (common/light_loop.glsl),
-// MATERIAL_NORMAL_MAP (1 when the material has a normal map) and REFERENCE_PASS (1 for ground
-// truth, which evaluates the surface itself at each sample: textures at their base level).
+// MATERIAL_NORMAL_MAP (1 when the material has a normal map), MATERIAL_TEXTURES (1 when its
+// parameters vary per texel) and REFERENCE_PASS (1 for ground truth, which evaluates the surface
+// itself at each sample: textures at their base level).
 #include "common/frame.glsl"
 #include "common/fragment_inputs.glsl"
 #include "common/lights.glsl"
+#if MATERIAL_TEXTURES
+#include "common/material_textures.glsl"
+#endif
 #include "common/surface.glsl"
 #include "$METHOD"
 #include "common/light_loop.glsl"
@@ -47,6 +51,7 @@ void main() {
   s.vertexNormal = n;
   s.vertexTangent = t;
   s.vertexBitangent = b;
+  s.anisotropyRotation = m.alpha_rho.w;
   s.mappedNormal = mapped;
   setShadingNormal(s, mappedNormal(mapped, t, b, n));
   s.uv = uv;
@@ -62,9 +67,18 @@ void main() {
   s.f0 = m.f0_ndf.rgb;
   s.diffuse = m.diffuse_tiling.rgb;
   s.hasNormalMap = MATERIAL_NORMAL_MAP != 0;
+  vec3 emission = m.emission.rgb;
+#if MATERIAL_TEXTURES
+  // The parameters at this point of the surface, before any method widens the lobe.
+  TexturedParameters texel = texturedParameters(m, vUV, dFdxFine(vUV), dFdyFine(vUV), REFERENCE_PASS != 0);
+  s.alpha = texel.alpha;
+  s.f0 = texel.f0;
+  s.diffuse = texel.diffuse;
+  emission = texel.emission;
+#endif
 
   prepareSurface(s);  // the method's per-pixel step (e.g. a filtered roughness), in uniform control flow
   Radiance sum = shadeAllLights(s);
-  outTotal = vec4(sum.diffuse + sum.specular, 1.0);
+  outTotal = vec4(sum.diffuse + sum.specular + emission, 1.0);
   outSpecular = vec4(sum.specular, 1.0);
 }

@@ -13,7 +13,7 @@ namespace glintlab {
 /// Limits of one scene: lights and materials live in uniform buffers (16 KiB, the minimum every
 /// GL 4.5 driver offers; uniform, not storage, buffers: see shaders/common/light_data.glsl).
 inline constexpr int kMaxLights = 128;
-inline constexpr int kMaxMaterials = 256;
+inline constexpr int kMaxMaterials = 128;
 
 /// Uniform-buffer binding points.
 inline constexpr int kFrameBlockBinding = 0;
@@ -24,9 +24,19 @@ inline constexpr int kMaterialBlockBinding = 2;
 inline constexpr int kNormalMapUnit = 0;
 inline constexpr int kSlopeMomentsUnit = 1;
 inline constexpr int kSlopeCrossMomentUnit = 2;
+/// Texture units of a textured material's parameters (shaders/common/material_textures.glsl).
+inline constexpr int kBaseColorUnit = 3;
+inline constexpr int kMetallicRoughnessUnit = 4;
+inline constexpr int kEmissiveUnit = 5;
+/// Per-draw texture transforms (uTextureTransforms in shaders/common/material.glsl), by slot.
+inline constexpr int kTextureSlotNormalMap = 0;
+inline constexpr int kTextureSlotBaseColor = 1;
+inline constexpr int kTextureSlotMetallicRoughness = 2;
+inline constexpr int kTextureSlotEmissive = 3;
+inline constexpr int kTextureSlots = 4;
 /// Units from here on hold the precomputed tables, in their registry's order
 /// (src/render/tables/registry.cpp); GLSL sees each as TABLE_UNIT_<ID>.
-inline constexpr int kFirstTableUnit = 3;
+inline constexpr int kFirstTableUnit = 6;
 
 /// MaterialGpu::f0_ndf.w: the microfacet distribution.
 inline constexpr int kNdfGgx = 0;
@@ -52,12 +62,19 @@ static_assert(kMaxLights * sizeof(LightGpu) <= 16384, "the light block must fit 
 struct MaterialGpu {
   glm::vec4 f0_ndf;          ///< rgb: Schlick F0; a: kNdfGgx or kNdfBeckmann
   glm::vec4 diffuse_tiling;  ///< rgb: Lambert albedo; a: normal-map repeats per uv unit
-  glm::vec4 alpha_rho;       ///< xy: alpha; z: slope correlation
+  glm::vec4 alpha_rho;       ///< xy: alpha; z: slope correlation; w: anisotropy rotation (radians)
   glm::vec4 glints;          ///< x: ln density; y: relative area; z: max anisotropy
+  glm::vec4 emission;        ///< rgb: emitted radiance
+  // Textured materials (a program variant, MATERIAL_TEXTURES): per-texel parameters' factors.
+  glm::vec4 base_color;      ///< rgba factor
+  glm::vec4 metal_rough;     ///< x: metallic; y: perceptual roughness; z: anisotropy strength
+  glm::vec4 dielectric_f0;   ///< rgb: f0 of the non-metal part
 };
-static_assert(sizeof(MaterialGpu) == 64);
+static_assert(sizeof(MaterialGpu) == 128);
 static_assert(offsetof(MaterialGpu, f0_ndf) == 0 && offsetof(MaterialGpu, diffuse_tiling) == 16 &&
-              offsetof(MaterialGpu, alpha_rho) == 32 && offsetof(MaterialGpu, glints) == 48);
+              offsetof(MaterialGpu, alpha_rho) == 32 && offsetof(MaterialGpu, glints) == 48 &&
+              offsetof(MaterialGpu, emission) == 64 && offsetof(MaterialGpu, base_color) == 80 &&
+              offsetof(MaterialGpu, metal_rough) == 96 && offsetof(MaterialGpu, dielectric_f0) == 112);
 static_assert(kMaxMaterials * sizeof(MaterialGpu) <= 16384, "the material block must fit GL's minimum uniform block size");
 
 /// Per-frame data: FrameBlock in shaders/common/frame.glsl (std140).

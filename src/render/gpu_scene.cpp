@@ -71,7 +71,69 @@ gl::Texture make_mipmapped_texture(GLenum format, GLenum channels, int width, in
   return tex;
 }
 
+/// A material's affine uv map as the column-major mat3x2 GLSL reads: columns x, y and the offset.
+void store_transform(const glm::mat3& m, float* out) {
+  for (int c = 0; c < 3; ++c) {
+    out[2 * c] = m[c][0];
+    out[2 * c + 1] = m[c][1];
+  }
+}
+
 }  // namespace
+
+GLuint GpuScene::upload_texture(const std::shared_ptr<const MaterialTexture>& texture) {
+  if (!texture) return white_.id();
+  auto it = texture_objects_.find(texture.get());
+  if (it != texture_objects_.end()) return it->second.id();
+  const MaterialTexture& t = *texture;
+  gl::Texture tex = gl::make_texture(GL_TEXTURE_2D);
+  int levels = 1;
+  for (int s = std::max(t.width, t.height); s > 1; s /= 2) ++levels;
+  glTextureStorage2D(tex.id(), levels, t.srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, t.width, t.height);
+  glTextureSubImage2D(tex.id(), 0, 0, 0, t.width, t.height, GL_RGBA, GL_UNSIGNED_BYTE, t.rgba.data());
+  glGenerateTextureMipmap(tex.id());
+  glTextureParameteri(tex.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(tex.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(tex.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTextureParameteri(tex.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+  const GLuint id = tex.id();
+  texture_objects_.emplace(texture.get(), std::move(tex));
+  return id;
+}
+
+GpuScene::MaterialTextures GpuScene::material_textures(const Material& m) {
+  MaterialTextures t;
+  // The normal map's coordinates: its tiling, then the texture transform.
+  store_transform(m.normal_map_transform * glm::mat3(glm::vec3(m.normal_map_tiling, 0, 0),
+                                                     glm::vec3(0, m.normal_map_tiling, 0), glm::vec3(0, 0, 1)),
+                  &t.transforms[6 * kTextureSlotNormalMap]);
+  store_transform(glm::mat3(1.0f), &t.transforms[6 * kTextureSlotBaseColor]);
+  store_transform(glm::mat3(1.0f), &t.transforms[6 * kTextureSlotMetallicRoughness]);
+  store_transform(glm::mat3(1.0f), &t.transforms[6 * kTextureSlotEmissive]);
+  if (!m.textures) return t;
+  const TexturedMetalRough& x = *m.textures;
+  t.textured = true;
+  t.base_color = upload_texture(x.base_color_texture.texture);
+  t.metallic_roughness = upload_texture(x.metallic_roughness_texture.texture);
+  t.emissive = upload_texture(x.emissive_texture.texture);
+  store_transform(x.base_color_texture.transform, &t.transforms[6 * kTextureSlotBaseColor]);
+  store_transform(x.metallic_roughness_texture.transform, &t.transforms[6 * kTextureSlotMetallicRoughness]);
+  store_transform(x.emissive_texture.transform, &t.transforms[6 * kTextureSlotEmissive]);
+  return t;
+}
+
+void GpuScene::bind_material(GLuint program, int material) const {
+  const MaterialTextures& t = textures_[index(material)];
+  glProgramUniform1i(program, glGetUniformLocation(program, "uMaterial"), material);
+  glProgramUniformMatrix3x2fv(program, glGetUniformLocation(program, "uTextureTransforms"), kTextureSlots, GL_FALSE,
+                              t.transforms.data());
+  glBindTextureUnit(kNormalMapUnit, normal_map(material));
+  glBindTextureUnit(kSlopeMomentsUnit, slope_moments(material));
+  glBindTextureUnit(kSlopeCrossMomentUnit, slope_cross_moment(material));
+  glBindTextureUnit(kBaseColorUnit, t.textured ? t.base_color : 0);
+  glBindTextureUnit(kMetallicRoughnessUnit, t.textured ? t.metallic_roughness : 0);
+  glBindTextureUnit(kEmissiveUnit, t.textured ? t.emissive : 0);
+}
 
 GpuScene::NormalMapTextures GpuScene::upload_normal_map(const NormalMap& map) {
   const std::size_t n = map.normals.size();
@@ -94,14 +156,24 @@ GpuScene::NormalMapTextures GpuScene::upload_normal_map(const NormalMap& map) {
 GpuScene::GpuScene(const Scene& scene, TableCache tables) : tables_(std::move(tables)) {
   for (const auto& shape : scene.shapes) meshes_.push_back(upload(*shape.mesh, shape.transform, shape.material));
 
+  white_ = gl::make_texture(GL_TEXTURE_2D);
+  const std::uint8_t white[4] = {255, 255, 255, 255};
+  glTextureStorage2D(white_.id(), 1, GL_RGBA8, 1, 1);
+  glTextureSubImage2D(white_.id(), 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, white);
+
   std::vector<MaterialGpu> materials;
   for (const auto& m : scene.materials) {
     const GlintParams g = m.glints.value_or(GlintParams{});
+    const TexturedMetalRough x = m.textures.value_or(TexturedMetalRough{});
     const float ndf = static_cast<float>(m.ndf == Ndf::Beckmann ? kNdfBeckmann : kNdfGgx);
-    materials.push_back({glm::vec4(m.f0, ndf), glm::vec4(m.diffuse, m.normal_map_tiling), glm::vec4(m.alpha, m.rho, 0.0f),
-                         glm::vec4(g.log_density, g.relative_area, g.max_anisotropy, 0.0f)});
+    materials.push_back({glm::vec4(m.f0, ndf), glm::vec4(m.diffuse, m.normal_map_tiling),
+                         glm::vec4(m.alpha, m.rho, m.anisotropy_rotation),
+                         glm::vec4(g.log_density, g.relative_area, g.max_anisotropy, 0.0f), glm::vec4(m.emission, 0.0f),
+                         x.base_color, glm::vec4(x.metallic, x.roughness, x.anisotropy, 0.0f),
+                         glm::vec4(x.dielectric_f0, 0.0f)});
     normal_maps_.push_back(m.normal_map ? upload_normal_map(*m.normal_map) : NormalMapTextures{});
     glinty_.push_back(m.glints.has_value());
+    textures_.push_back(material_textures(m));
   }
   for (const auto& m : scene.materials)
     for (const auto& id : material_tables(m))

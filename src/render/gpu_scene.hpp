@@ -1,13 +1,16 @@
 #pragma once
 // The scene on the GPU: one vertex array per shape, material and light buffers, normal-map
 // textures (mipmapped, unnormalised averages kept for methods that need the normals' spread),
-// the meshes of visible area lights, and the precomputed tables its materials and methods read.
+// textured materials' parameter textures, the meshes of visible area lights, and the precomputed
+// tables its materials and methods read.
 #include <array>
+#include <map>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <vector>
 
+#include "core/gpu_contract.hpp"
 #include "gl/objects.hpp"
 #include "render/tables/gpu_tables.hpp"
 #include "scene/scene.hpp"
@@ -53,6 +56,11 @@ class GpuScene {
     return normal_maps_[index(material)].slope_cross_moment.id();
   }
   [[nodiscard]] bool glinty(int material) const { return glinty_[index(material)]; }
+  /// Whether the material's parameters vary per texel (Material::textures).
+  [[nodiscard]] bool textured(int material) const { return textures_[index(material)].textured; }
+  /// Binds a material's textures to their units and sets `program`'s per-draw texture transforms
+  /// (uTextureTransforms, shaders/common/material.glsl); uMaterial selects its uniform-block entry.
+  void bind_material(GLuint program, int material) const;
   /// The precomputed tables on the GPU. Those the materials' program variants read whatever the
   /// method (material_tables) are made resident on construction; a method's own
   /// (MethodDescriptor::tables) are added by require_tables, which the renderer calls before
@@ -71,13 +79,25 @@ class GpuScene {
   struct NormalMapTextures {
     gl::Texture normals, slope_moments, slope_cross_moment;
   };
+  /// A material's parameter textures (0: the factor alone, through a white texel) and the
+  /// transforms of every slot (column-major 3x2, TEXTURE_SLOT_* order).
+  struct MaterialTextures {
+    bool textured = false;
+    GLuint base_color = 0, metallic_roughness = 0, emissive = 0;
+    std::array<float, 6 * kTextureSlots> transforms{};
+  };
   static std::size_t index(int material) { return static_cast<std::size_t>(material); }
   static NormalMapTextures upload_normal_map(const NormalMap& map);
+  GLuint upload_texture(const std::shared_ptr<const MaterialTexture>& texture);
+  MaterialTextures material_textures(const Material& material);
 
   std::vector<GpuMesh> meshes_;
   std::vector<GpuEmitter> emitters_;
   std::vector<NormalMapTextures> normal_maps_;
   std::vector<bool> glinty_;
+  std::vector<MaterialTextures> textures_;
+  std::map<const MaterialTexture*, gl::Texture> texture_objects_;  // shared between materials
+  gl::Texture white_;  // 1x1 white: the texel of an absent texture
   mutable GpuTables tables_;
   std::vector<std::string> material_table_ids_;
   gl::Buffer materials_;

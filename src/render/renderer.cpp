@@ -32,11 +32,12 @@ ShaderDefines forward_variant(const std::string& module, const LightRanges& ligh
           {"LIGHT_RANGES", ranges + ")"},
           {"MATERIAL_NORMAL_MAP", material.normal_map ? "1" : "0"},
           {"MATERIAL_GLINTS", material.glints ? "1" : "0"},
+          {"MATERIAL_TEXTURES", material.textures ? "1" : "0"},
           {"REFERENCE_PASS", module == kReferenceModule ? "1" : "0"}};
 }
 
 MaterialVariant material_variant(const GpuScene& scene, int material) {
-  return {scene.normal_map(material) != 0, scene.glinty(material)};
+  return {scene.normal_map(material) != 0, scene.glinty(material), scene.textured(material)};
 }
 
 std::string method_program_module(ShaderLibrary& shaders, const MethodDescriptor& method) {
@@ -80,10 +81,7 @@ void Renderer::draw_scene(const std::string& module, const ParamValues& params, 
     const glm::mat3 normal_matrix = glm::inverseTranspose(glm::mat3(mesh.transform));
     glProgramUniformMatrix4fv(program, glGetUniformLocation(program, "uModel"), 1, GL_FALSE, &mesh.transform[0][0]);
     glProgramUniformMatrix3fv(program, glGetUniformLocation(program, "uNormalMatrix"), 1, GL_FALSE, &normal_matrix[0][0]);
-    glProgramUniform1i(program, glGetUniformLocation(program, "uMaterial"), mesh.material);
-    glBindTextureUnit(kNormalMapUnit, scene_.normal_map(mesh.material));
-    glBindTextureUnit(kSlopeMomentsUnit, scene_.slope_moments(mesh.material));
-    glBindTextureUnit(kSlopeCrossMomentUnit, scene_.slope_cross_moment(mesh.material));
+    scene_.bind_material(program, mesh.material);
     scene_.tables().bind();
     glBindVertexArray(mesh.vao.id());
     glDrawElements(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr);

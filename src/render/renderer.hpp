@@ -14,10 +14,12 @@
 
 namespace glintlab {
 
-/// What of a material changes the forward program: MATERIAL_NORMAL_MAP and MATERIAL_GLINTS.
+/// What of a material changes the forward program: MATERIAL_NORMAL_MAP, MATERIAL_GLINTS and
+/// MATERIAL_TEXTURES.
 struct MaterialVariant {
   bool normal_map = false;
   bool glints = false;
+  bool textures = false;
   auto operator<=>(const MaterialVariant&) const = default;
 };
 MaterialVariant material_variant(const GpuScene& scene, int material);

@@ -1,11 +1,15 @@
 #pragma once
 // Material data (no shading code: shading lives in GLSL). Roughness is always alpha, never
 // perceptual roughness; alpha = 0 is a perfect mirror.
+#include <cstdint>
+#include <glm/mat3x3.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "scene/normal_map.hpp"
 
@@ -21,16 +25,52 @@ struct GlintParams {
   float max_anisotropy = 4.0f;   ///< clamp of the footprint ellipse's eccentricity (2021's default)
 };
 
+/// An 8-bit RGBA texture of material parameters, row 0 at v = 0 (glintlab's uv: v up, so an image
+/// file's bottom row comes first).
+struct MaterialTexture {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgba;
+  bool srgb = false;        ///< colour data (decoded to linear by the sampler) or linear data
+  std::string description;  ///< where it came from
+};
+
+/// A texture and the affine map from the surface's uv to its coordinates (KHR_texture_transform).
+struct TextureSlot {
+  std::shared_ptr<const MaterialTexture> texture;  ///< null: the factor alone (a white texel)
+  glm::mat3 transform{1.0f};
+};
+
+/// glTF's metallic-roughness model with textures: per texel, factor x texel gives the base colour,
+/// metallic and perceptual roughness r, from which the shader derives alpha = r^2 (widened along
+/// the anisotropy direction: alpha_x = mix(alpha, 1, anisotropy^2)), f0 and the Lambert albedo.
+struct TexturedMetalRough {
+  glm::vec4 base_color{1.0f};
+  float metallic = 1.0f;
+  float roughness = 1.0f;
+  float anisotropy = 0.0f;          ///< KHR_materials_anisotropy's strength
+  glm::vec3 dielectric_f0{0.04f};   ///< f0 of the non-metal part (KHR_materials_ior, _specular)
+  TextureSlot base_color_texture;   ///< rgb (sRGB)
+  TextureSlot metallic_roughness_texture;  ///< g: roughness, b: metallic (linear)
+  TextureSlot emissive_texture;     ///< rgb (sRGB), times Material::emission
+};
+
 struct Material {
   std::string name;
   Ndf ndf = Ndf::GGX;
-  glm::vec2 alpha{0.1f};          ///< (alpha_x along the tangent, alpha_y along the bitangent)
+  glm::vec2 alpha{0.1f};          ///< (alpha_x along the anisotropy direction, alpha_y across it)
+  float anisotropy_rotation = 0;  ///< radians from the tangent (+u) towards the bitangent (+v)
   float rho = 0.0f;               ///< slope correlation (glinty materials; alpha = sqrt(2) sigma)
   glm::vec3 f0{0.04f};            ///< Fresnel reflectance at normal incidence (Schlick)
   glm::vec3 diffuse{0.0f};        ///< Lambert albedo
+  glm::vec3 emission{0.0f};       ///< emitted radiance [W/(m^2 sr)], added to every method's image
   std::shared_ptr<const NormalMap> normal_map;  ///< optional tangent-space normal map
   float normal_map_tiling = 1.0f; ///< repeats of the normal map per unit of uv
+  glm::mat3 normal_map_transform{1.0f};  ///< then this affine map of uv (KHR_texture_transform)
   std::optional<GlintParams> glints;  ///< set for glinty materials (then ndf is Beckmann)
+  /// Set for materials whose parameters vary per texel (glTF); then f0, diffuse and alpha above
+  /// are those of the factors alone.
+  std::optional<TexturedMetalRough> textures;
 };
 
 }  // namespace glintlab

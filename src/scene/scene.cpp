@@ -7,6 +7,20 @@
 
 namespace glintlab {
 
+namespace {
+
+void hash_texture(Hasher& h, const TextureSlot& slot) {
+  h.value(slot.transform);
+  h.value(slot.texture != nullptr);
+  if (!slot.texture) return;
+  h.value(slot.texture->width);
+  h.value(slot.texture->height);
+  h.value(slot.texture->srgb);
+  h.span(std::span<const std::uint8_t>(slot.texture->rgba));
+}
+
+}  // namespace
+
 std::uint64_t Scene::content_hash() const {
   Hasher h;
   h.value(film.width);
@@ -21,6 +35,21 @@ std::uint64_t Scene::content_hash() const {
     h.value(m.f0);
     h.value(m.diffuse);
     h.value(m.normal_map_tiling);
+    h.value(m.normal_map_transform);
+    h.value(m.anisotropy_rotation);
+    h.value(m.emission);
+    h.value(m.textures.has_value());
+    if (m.textures) {
+      const TexturedMetalRough& t = *m.textures;
+      h.value(t.base_color);
+      h.value(t.metallic);
+      h.value(t.roughness);
+      h.value(t.anisotropy);
+      h.value(t.dielectric_f0);
+      hash_texture(h, t.base_color_texture);
+      hash_texture(h, t.metallic_roughness_texture);
+      hash_texture(h, t.emissive_texture);
+    }
     h.value(m.normal_map != nullptr);
     if (m.normal_map) {
       h.value(m.normal_map->width);

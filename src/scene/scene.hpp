@@ -43,6 +43,7 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<Shape> shapes;
   std::vector<Light> lights;
+  std::vector<std::string> warnings;  ///< what loading ignored (e.g. a glTF extension), for the user
 
   /// Hash of everything that affects an image (geometry, maps, lights, camera, film), not of
   /// names: the reference cache's key.

@@ -71,6 +71,14 @@ TEST(GpuContract, GeneratedDefinesAreTheCppConstants) {
       {"NORMAL_MAP_UNIT", kNormalMapUnit},
       {"SLOPE_MOMENTS_UNIT", kSlopeMomentsUnit},
       {"SLOPE_CROSS_MOMENT_UNIT", kSlopeCrossMomentUnit},
+      {"BASE_COLOR_UNIT", kBaseColorUnit},
+      {"METALLIC_ROUGHNESS_UNIT", kMetallicRoughnessUnit},
+      {"EMISSIVE_UNIT", kEmissiveUnit},
+      {"TEXTURE_SLOT_NORMAL_MAP", kTextureSlotNormalMap},
+      {"TEXTURE_SLOT_BASE_COLOR", kTextureSlotBaseColor},
+      {"TEXTURE_SLOT_METALLIC_ROUGHNESS", kTextureSlotMetallicRoughness},
+      {"TEXTURE_SLOT_EMISSIVE", kTextureSlotEmissive},
+      {"TEXTURE_SLOTS", kTextureSlots},
       {"FIRST_TABLE_UNIT", kFirstTableUnit},
       {"NDF_GGX", kNdfGgx},
       {"NDF_BECKMANN", kNdfBeckmann},
@@ -107,14 +115,18 @@ layout(local_size_x = 1) in;
 #include "common/material.glsl"
 #include "common/glint_dictionary.glsl"
 #include "common/slope_moments.glsl"
+#include "common/material_textures.glsl"
 layout(binding = NORMAL_MAP_UNIT) uniform sampler2D uNormalMapProbe;
 layout(std430, binding = 7) writeonly buffer Out { vec4 outV[]; };
 void main() {
   outV[0] = uViewProj[0] + uCameraPos + uCameraForward + vec4(uTarget + uTile);
   outV[1] = lights[1].colour_type + lights[0].position_radius + lights[0].direction_cos + lights[0].axisU + lights[0].axisV;
-  outV[2] = materials[1].f0_ndf + materials[0].diffuse_tiling + materials[0].alpha_rho + materials[0].glints;
+  outV[2] = materials[1].f0_ndf + materials[0].diffuse_tiling + materials[0].alpha_rho + materials[0].glints +
+            materials[0].emission + materials[0].base_color + materials[0].metal_rough + materials[0].dielectric_f0;
   outV[3] = textureLod(uNormalMapProbe, vec2(0.0), 0.0) + textureLod(uSlopeMoments, vec2(0.0), 0.0) +
             textureLod(uSlopeCrossMoment, vec2(0.0), 0.0) + textureLod(uGlintDictionary, vec2(0.0), 0.0);
+  outV[4] = textureLod(uBaseColor, vec2(0.0), 0.0) + textureLod(uMetallicRoughness, vec2(0.0), 0.0) +
+            textureLod(uEmissive, vec2(0.0), 0.0);
 }
 )");
   const GLuint program = shaders().compute("test/contract_layout.comp");
@@ -142,10 +154,18 @@ void main() {
   EXPECT_EQ(uniform_offset(program, "materials[0].diffuse_tiling"), static_cast<GLint>(offsetof(MaterialGpu, diffuse_tiling)));
   EXPECT_EQ(uniform_offset(program, "materials[0].alpha_rho"), static_cast<GLint>(offsetof(MaterialGpu, alpha_rho)));
   EXPECT_EQ(uniform_offset(program, "materials[0].glints"), static_cast<GLint>(offsetof(MaterialGpu, glints)));
+  EXPECT_EQ(uniform_offset(program, "materials[0].emission"), static_cast<GLint>(offsetof(MaterialGpu, emission)));
+  EXPECT_EQ(uniform_offset(program, "materials[0].base_color"), static_cast<GLint>(offsetof(MaterialGpu, base_color)));
+  EXPECT_EQ(uniform_offset(program, "materials[0].metal_rough"), static_cast<GLint>(offsetof(MaterialGpu, metal_rough)));
+  EXPECT_EQ(uniform_offset(program, "materials[0].dielectric_f0"),
+            static_cast<GLint>(offsetof(MaterialGpu, dielectric_f0)));
   EXPECT_EQ(uniform_offset(program, "materials[1].f0_ndf"), static_cast<GLint>(sizeof(MaterialGpu)));
 
   EXPECT_EQ(sampler_unit(program, "uNormalMapProbe"), kNormalMapUnit);
   EXPECT_EQ(sampler_unit(program, "uSlopeMoments"), kSlopeMomentsUnit);
   EXPECT_EQ(sampler_unit(program, "uSlopeCrossMoment"), kSlopeCrossMomentUnit);
   EXPECT_EQ(sampler_unit(program, "uGlintDictionary"), find_table("glint-dictionary").unit);
+  EXPECT_EQ(sampler_unit(program, "uBaseColor"), kBaseColorUnit);
+  EXPECT_EQ(sampler_unit(program, "uMetallicRoughness"), kMetallicRoughnessUnit);
+  EXPECT_EQ(sampler_unit(program, "uEmissive"), kEmissiveUnit);
 }

@@ -266,6 +266,7 @@ vec4 evaluate(vec4 a, vec4 b) {
   basisAround(s.vertexNormal, s.vertexTangent, s.vertexBitangent);
   vec3 v = randomUnit(h);
   s.view = dot(v, s.vertexNormal) < 0.0 ? -v : v;
+  s.anisotropyRotation = 0.0;
   setShadingNormal(s, normalize(s.vertexNormal + 0.3 * randomUnit(h)));
   s.ndf = int(i % 2u);
   s.alpha = vec2(i % 5u == 0u ? 0.0 : 0.5 * pow(random01(h), 3.0), 0.5 * pow(random01(h), 3.0));

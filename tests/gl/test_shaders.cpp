@@ -29,9 +29,13 @@ TEST(Shaders, EveryMethodAndPassCompiles) {
   for (const auto& module : modules)
     for (bool normal_map : {false, true})
       for (bool glints : {false, true})
-        EXPECT_NO_THROW(shaders().graphics("passes/forward.vert", "passes/forward.frag",
-                                           forward_variant(module, every_kind, {normal_map, glints})))
-            << module << (normal_map ? " with a normal map" : "") << (glints ? ", glinty" : "");
+        for (bool textures : {false, true}) {
+          if (glints && textures) continue;  // a glinty material's parameters are constants
+          EXPECT_NO_THROW(shaders().graphics("passes/forward.vert", "passes/forward.frag",
+                                             forward_variant(module, every_kind, {normal_map, glints, textures})))
+              << module << (normal_map ? " with a normal map" : "") << (glints ? ", glinty" : "")
+              << (textures ? ", textured" : "");
+        }
   EXPECT_NO_THROW(shaders().graphics("passes/forward.vert", "passes/emitter.frag"));
   EXPECT_NO_THROW(shaders().compute("passes/downsample.comp"));
 }

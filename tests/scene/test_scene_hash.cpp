@@ -39,12 +39,15 @@ static_assert(field_count<Camera>() == 8);
 static_assert(field_count<CameraKey>() == 2);
 static_assert(field_count<CameraPath>() == 6);
 static_assert(field_count<GlintParams>() == 3);
-static_assert(field_count<Material>() == 9);
+static_assert(field_count<Material>() == 13);
+static_assert(field_count<TexturedMetalRough>() == 8);
+static_assert(field_count<TextureSlot>() == 2);
+static_assert(field_count<MaterialTexture>() == 5);
 static_assert(field_count<NormalMap>() == 4);
 static_assert(field_count<Mesh>() == 5);
 static_assert(field_count<Shape>() == 4);
 static_assert(field_count<Light>() == 9);
-static_assert(field_count<Scene>() == 9);
+static_assert(field_count<Scene>() == 10);
 
 struct FieldChange {
   std::string field;
@@ -70,7 +73,24 @@ Scene base_scene() {
                 .scene();
   EXPECT_TRUE(s.materials[1].glints.has_value());
   EXPECT_NE(s.materials[1].normal_map, nullptr);
+  // A textured material (as glTF import makes them), every slot with a texture.
+  Material textured = s.materials[0];
+  textured.name = "textured";
+  auto texture = std::make_shared<MaterialTexture>(MaterialTexture{2, 2, std::vector<std::uint8_t>(16, 128), true, "test"});
+  textured.textures = TexturedMetalRough{};
+  textured.textures->base_color_texture.texture = texture;
+  textured.textures->metallic_roughness_texture.texture = texture;
+  textured.textures->emissive_texture.texture = texture;
+  s.materials.push_back(textured);
   return s;
+}
+
+TexturedMetalRough& textured_of(Scene& s) { return *s.materials[2].textures; }
+
+std::shared_ptr<MaterialTexture> texture_of(Scene& s) {
+  auto t = std::make_shared<MaterialTexture>(*textured_of(s).base_color_texture.texture);
+  textured_of(s).base_color_texture.texture = t;
+  return t;
 }
 
 std::shared_ptr<Mesh> mesh_of(Shape& shape) {
@@ -104,6 +124,25 @@ const std::vector<FieldChange> kHashed = {
     {"material.diffuse", [](Scene& s) { s.materials[0].diffuse.b += 0.01f; }},
     {"material.normal_map (none -> one)", [](Scene& s) { s.materials[0].normal_map = s.materials[1].normal_map; }},
     {"material.normal_map_tiling", [](Scene& s) { s.materials[1].normal_map_tiling *= 2; }},
+    {"material.normal_map_transform", [](Scene& s) { s.materials[1].normal_map_transform[2][0] += 0.5f; }},
+    {"material.anisotropy_rotation", [](Scene& s) { s.materials[0].anisotropy_rotation += 0.1f; }},
+    {"material.emission", [](Scene& s) { s.materials[0].emission.r += 0.1f; }},
+    {"material.textures (one -> none)", [](Scene& s) { s.materials[2].textures.reset(); }},
+    {"textured.base_color", [](Scene& s) { textured_of(s).base_color.a *= 0.5f; }},
+    {"textured.metallic", [](Scene& s) { textured_of(s).metallic *= 0.5f; }},
+    {"textured.roughness", [](Scene& s) { textured_of(s).roughness *= 0.5f; }},
+    {"textured.anisotropy", [](Scene& s) { textured_of(s).anisotropy += 0.5f; }},
+    {"textured.dielectric_f0", [](Scene& s) { textured_of(s).dielectric_f0.g += 0.01f; }},
+    {"textured.base_color_texture", [](Scene& s) { textured_of(s).base_color_texture.texture.reset(); }},
+    {"textured.metallic_roughness_texture",
+     [](Scene& s) { textured_of(s).metallic_roughness_texture.transform[0][0] = 2.0f; }},
+    {"textured.emissive_texture", [](Scene& s) { textured_of(s).emissive_texture.texture.reset(); }},
+    {"slot.texture (one -> none)", [](Scene& s) { textured_of(s).emissive_texture.texture.reset(); }},
+    {"slot.transform", [](Scene& s) { textured_of(s).base_color_texture.transform[2][1] = 0.25f; }},
+    {"texture.width", [](Scene& s) { texture_of(s)->width = 1; }},
+    {"texture.height", [](Scene& s) { texture_of(s)->height = 1; }},
+    {"texture.rgba", [](Scene& s) { texture_of(s)->rgba[3] = 7; }},
+    {"texture.srgb", [](Scene& s) { texture_of(s)->srgb = false; }},
     {"material.glints (one -> none)", [](Scene& s) { s.materials[1].glints.reset(); }},
     {"glints.log_density", [](Scene& s) { s.materials[1].glints->log_density += 1; }},
     {"glints.relative_area", [](Scene& s) { s.materials[1].glints->relative_area *= 0.5f; }},
@@ -151,6 +190,8 @@ const std::vector<FieldChange> kNotHashed = {
     {"path.dolly_to", [](Scene& s) { s.path.dolly_to.x += 1; }},
     {"path.keys", [](Scene& s) { s.path.keys.push_back({}); }},
     {"material.name", [](Scene& s) { s.materials[0].name = "other"; }},
+    {"scene.warnings", [](Scene& s) { s.warnings.push_back("other"); }},
+    {"texture.description", [](Scene& s) { texture_of(s)->description = "other"; }},
     {"normal_map.description", [](Scene& s) { normal_map_of(s.materials[1])->description = "other"; }},
     {"shape.type", [](Scene& s) { s.shapes[0].type = "mesh"; }},
 };
@@ -191,8 +232,11 @@ TEST(SceneHash, EveryFieldIsListedOnce) {
   EXPECT_EQ(fields("camera."), static_cast<int>(field_count<Camera>()));
   EXPECT_EQ(fields("path."), static_cast<int>(field_count<CameraPath>()));
   EXPECT_EQ(fields("glints."), static_cast<int>(field_count<GlintParams>()));
-  // material.normal_map and material.glints are listed by what changes ("none -> one").
-  EXPECT_EQ(fields("material.") + 2, static_cast<int>(field_count<Material>()));
+  // material.normal_map, .glints and .textures are listed by what changes ("none -> one").
+  EXPECT_EQ(fields("material.") + 3, static_cast<int>(field_count<Material>()));
+  EXPECT_EQ(fields("textured."), static_cast<int>(field_count<TexturedMetalRough>()));
+  EXPECT_EQ(fields("slot.") + 1, static_cast<int>(field_count<TextureSlot>()));
+  EXPECT_EQ(fields("texture."), static_cast<int>(field_count<MaterialTexture>()));
   EXPECT_EQ(fields("normal_map."), static_cast<int>(field_count<NormalMap>()));
   EXPECT_EQ(fields("mesh."), static_cast<int>(field_count<Mesh>()));
   // shape.mesh: its contents are the mesh.* fields.

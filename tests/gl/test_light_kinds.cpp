@@ -32,6 +32,10 @@ struct Example {
 const std::map<std::string, Example>& examples() {
   static const std::map<std::string, Example> e = {
       {"point", {"type = \"point\"\nposition = [1, 2, 3]\nintensity = 2\n", {0.2f, -0.1f, 0.3f}}},
+      {"spot",
+       {"type = \"spot\"\nposition = [1, 2, 3]\ndirection = [-0.3, -0.7, -1.0]\nintensity = 2\ninner_angle = 5\n"
+        "outer_angle = 30\n",
+        {0.2f, -0.1f, 0.3f}}},
       {"directional", {"type = \"directional\"\ndirection = [0.3, -1.0, 0.2]\n", {0.2f, -0.1f, 0.3f}}},
       {"sun", {"type = \"sun\"\ndirection = [0.3, -1.0, 0.2]\nangular_radius = 2\n", {0.2f, -0.1f, 0.3f}}},
       {"sphere", {"type = \"sphere\"\nposition = [0.1, 0.2, -0.3]\nradius = 1\n", {0.5f, 0.3f, 2.6f}}},

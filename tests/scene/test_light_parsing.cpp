@@ -70,12 +70,46 @@ TEST(SceneParser, DirectionalLightWithAnAngularRadiusIsTheSun) {
 }
 
 TEST(SceneParser, UnknownLightTypeListsTheRegisteredKinds) {
-  const std::string msg = error_of("type = \"spot\"\nposition = [0, 1, 0]\n");
+  const std::string msg = error_of("type = \"lamp\"\nposition = [0, 1, 0]\n");
   ASSERT_FALSE(msg.empty());
   EXPECT_NE(msg.find("lights.toml"), std::string::npos) << msg;
-  EXPECT_NE(msg.find("spot"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("lamp"), std::string::npos) << msg;
   for (const auto& id : light_kind_ids()) EXPECT_NE(msg.find(id), std::string::npos) << id << " not in: " << msg;
-  EXPECT_THROW(find_light_kind("spot"), InputError);
+  EXPECT_THROW(find_light_kind("lamp"), InputError);
+}
+
+TEST(SceneParser, SpotLightReadsItsConeInDegrees) {
+  const Scene s = with_light("type = \"spot\"\nposition = [0, 2, 0]\ndirection = [0, -3, 0]\nintensity = [1, 2, 3]\n"
+                             "inner_angle = 10\nouter_angle = 20\n");
+  ASSERT_EQ(s.lights[0].kind, &find_light_kind("spot"));
+  EXPECT_FLOAT_EQ(s.lights[0].direction.y, -1.0f) << "normalised";
+  EXPECT_FLOAT_EQ(s.lights[0].colour.b, 3.0f);
+  EXPECT_FLOAT_EQ(s.lights[0].inner_angle_degrees, 10.0f);
+  EXPECT_FLOAT_EQ(s.lights[0].outer_angle_degrees, 20.0f);
+  const Scene defaults = with_light("type = \"spot\"\nposition = [0, 2, 0]\ndirection = [0, -1, 0]\n");
+  EXPECT_FLOAT_EQ(defaults.lights[0].inner_angle_degrees, 0.0f) << "KHR_lights_punctual's default";
+  EXPECT_FLOAT_EQ(defaults.lights[0].outer_angle_degrees, 45.0f) << "KHR_lights_punctual's default";
+  EXPECT_NO_THROW(with_light("type = \"spot\"\nposition = [0, 2, 0]\ndirection = [0, -1, 0]\nouter_angle = 90\n"));
+}
+
+TEST(SceneParser, SpotLightAnglesAndDirectionAreChecked) {
+  // Each error names the key, the value and what is allowed.
+  const std::string spot = "type = \"spot\"\nposition = [0, 2, 0]\n";
+  auto expect_error = [&](const std::string& keys, std::initializer_list<const char*> parts) {
+    const std::string msg = error_of(spot + keys);
+    ASSERT_FALSE(msg.empty()) << keys;
+    for (const char* part : parts) EXPECT_NE(msg.find(part), std::string::npos) << part << " not in: " << msg;
+  };
+  const std::string down = "direction = [0, -1, 0]\n";
+  expect_error(down + "inner_angle = 30\nouter_angle = 30\n", {"inner_angle", "30", "inner_angle < outer_angle"});
+  expect_error(down + "inner_angle = 50\n", {"inner_angle", "50", "45", "inner_angle < outer_angle"});
+  expect_error(down + "inner_angle = -1\n", {"inner_angle", "-1", "0 .. 90"});
+  expect_error(down + "outer_angle = 90.5\n", {"outer_angle", "90.5", "0 .. 90"});
+  expect_error(down + "outer_angle = 0\n", {"inner_angle", "inner_angle < outer_angle"});
+  expect_error("direction = [0, 0, 0]\n", {"direction", "zero vector"});
+  expect_error("", {"direction", "required"});
+  expect_error(down + "range = 10\n", {"range"});
+  EXPECT_NE(error_of("type = \"spot\"\n" + down).find("position"), std::string::npos);
 }
 
 TEST(SceneParser, LightHashSeesTheParametersItsKindReads) {
@@ -86,6 +120,11 @@ TEST(SceneParser, LightHashSeesTheParametersItsKindReads) {
   EXPECT_NE(with_light(quad + "visible = false\n").content_hash(), base);
   const std::string sun = "type = \"sun\"\ndirection = [0, -1, 0]\n";
   EXPECT_NE(with_light(sun + "angular_radius = 1\n").content_hash(), with_light(sun).content_hash());
+  const std::string spot = "type = \"spot\"\nposition = [0, 1, 0]\ndirection = [0, -1, 0]\n";
+  const auto spot_base = with_light(spot).content_hash();
+  EXPECT_NE(with_light(spot + "inner_angle = 1\n").content_hash(), spot_base);
+  EXPECT_NE(with_light(spot + "outer_angle = 40\n").content_hash(), spot_base);
+  EXPECT_NE(with_light("type = \"spot\"\nposition = [0, 1, 0]\ndirection = [0, -1, 0.1]\n").content_hash(), spot_base);
 }
 
 TEST(LightKinds, SceneFormatDocumentsEveryKind) {

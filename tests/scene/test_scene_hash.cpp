@@ -46,7 +46,7 @@ static_assert(field_count<MaterialTexture>() == 5);
 static_assert(field_count<NormalMap>() == 4);
 static_assert(field_count<Mesh>() == 5);
 static_assert(field_count<Shape>() == 4);
-static_assert(field_count<Light>() == 9);
+static_assert(field_count<Light>() == 11);
 static_assert(field_count<Scene>() == 10);
 
 struct FieldChange {
@@ -70,6 +70,7 @@ Scene base_scene() {
                 .light("quad", {{"position", {0, 2, 0}}, {"direction", {0, -1, 0}}, {"up", {1, 0, 0}}})
                 .disk_light({1, 2, 0}, {0, -1, 0}, 0.5, 1)
                 .light("sun", {{"direction", {0, -1, 0}}, {"irradiance", 1}, {"angular_radius", 1}})
+                .light("spot", {{"position", {0, 2, 1}}, {"direction", {0, -1, 0}}, {"inner_angle", 10}})
                 .scene();
   EXPECT_TRUE(s.materials[1].glints.has_value());
   EXPECT_NE(s.materials[1].normal_map, nullptr);
@@ -170,6 +171,8 @@ const std::vector<FieldChange> kHashed = {
     {"light.size", [](Scene& s) { s.lights[0].size.x += 0.1f; }},
     {"light.angular_radius_degrees", [](Scene& s) { s.lights[2].angular_radius_degrees += 1; }},
     {"light.visible", [](Scene& s) { s.lights[0].visible = !s.lights[0].visible; }},
+    {"light.inner_angle_degrees", [](Scene& s) { s.lights[3].inner_angle_degrees += 1; }},
+    {"light.outer_angle_degrees", [](Scene& s) { s.lights[3].outer_angle_degrees += 1; }},
     {"a material more", [](Scene& s) { s.materials.push_back(s.materials[0]); }},
     {"a shape more", [](Scene& s) { s.shapes.push_back(s.shapes[0]); }},
     {"a light more", [](Scene& s) { s.lights.push_back(s.lights[0]); }},

@@ -1,6 +1,5 @@
 #include "scene/mesh_io.hpp"
 
-#include <tiny_gltf.h>
 #include <tiny_obj_loader.h>
 
 #include <glm/geometric.hpp>
@@ -12,6 +11,7 @@
 #include <tuple>
 
 #include "core/error.hpp"
+#include "scene/gltf_import.hpp"
 #include "scene/obj_check.hpp"
 
 namespace glintlab {
@@ -31,143 +31,19 @@ void compute_normals(Mesh& m) {
   for (auto& n : m.normals) n = glm::dot(n, n) > 0 ? glm::normalize(n) : glm::vec3(0, 1, 0);
 }
 
-template <typename T>
-std::vector<T> read_accessor(const tinygltf::Model& model, int index, int components, const std::string& file) {
-  const auto& acc = model.accessors.at(static_cast<std::size_t>(index));
-  const auto& view = model.bufferViews.at(static_cast<std::size_t>(acc.bufferView));
-  const auto& buf = model.buffers.at(static_cast<std::size_t>(view.buffer));
-  const std::size_t elem = tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(acc.componentType)) *
-                           static_cast<std::size_t>(components);
-  const std::size_t stride = acc.ByteStride(view) > 0 ? static_cast<std::size_t>(acc.ByteStride(view)) : elem;
-  const std::size_t begin = view.byteOffset + acc.byteOffset;
-  if (acc.count > buf.data.size() || begin + stride * (acc.count ? acc.count - 1 : 0) + elem > buf.data.size())
-    throw InputError(file + ": accessor " + std::to_string(index) + " reads past the end of its buffer");
-  std::vector<T> out(acc.count);
-  for (std::size_t i = 0; i < acc.count; ++i) {
-    const unsigned char* p = buf.data.data() + begin + i * stride;
-    if constexpr (std::is_same_v<T, std::uint32_t>) {
-      switch (acc.componentType) {
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: out[i] = *p; break;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: out[i] = *reinterpret_cast<const std::uint16_t*>(p); break;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: out[i] = *reinterpret_cast<const std::uint32_t*>(p); break;
-        default: throw InputError(file + ": unsupported index component type " + std::to_string(acc.componentType));
-      }
-    } else {
-      if (acc.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
-        throw InputError(file + ": vertex attributes must be float (component type " +
-                         std::to_string(acc.componentType) + ")");
-      std::memcpy(&out[i], p, sizeof(T));
-    }
-  }
-  return out;
-}
-
-// An accessor's values must be finite: NaN or infinity would reach the rasteriser as holes.
-template <typename Vec>
-void require_finite(const std::vector<Vec>& values, int accessor, const char* attribute, const std::string& file) {
-  for (std::size_t i = 0; i < values.size(); ++i)
-    for (int c = 0; c < Vec::length(); ++c)
-      if (!std::isfinite(values[i][c]))
-        throw InputError(file + ": accessor " + std::to_string(accessor) + " (" + attribute + ") element " +
-                         std::to_string(i) + " has value " + std::to_string(values[i][c]) + "; allowed: finite numbers");
-}
-
-// A vertex attribute must give one value per POSITION.
-template <typename Vec>
-void require_count(const std::vector<Vec>& values, std::size_t positions, int accessor, const char* attribute,
-                   const std::string& file) {
-  if (values.size() != positions)
-    throw InputError(file + ": accessor " + std::to_string(accessor) + " (" + attribute + ") has " +
-                     std::to_string(values.size()) + " elements; allowed: " + std::to_string(positions) +
-                     ", the POSITION count");
-}
-
-void require_indices_in_range(const std::vector<std::uint32_t>& indices, std::size_t positions, int accessor,
-                              const std::string& file) {
-  for (std::size_t i = 0; i < indices.size(); ++i)
-    if (indices[i] >= positions)
-      throw InputError(file + ": accessor " + std::to_string(accessor) + " (indices) element " + std::to_string(i) +
-                       " has value " + std::to_string(indices[i]) + "; allowed: 0 to " +
-                       std::to_string(positions) + " - 1 (the POSITION count)");
-}
-
-glm::mat4 node_matrix(const tinygltf::Node& node) {
-  if (node.matrix.size() == 16) {
-    glm::dmat4 m = glm::make_mat4(node.matrix.data());
-    return glm::mat4(m);
-  }
-  glm::mat4 m(1.0f);
-  if (node.translation.size() == 3)
-    m = glm::translate(m, glm::vec3(glm::make_vec3(node.translation.data())));
-  if (node.rotation.size() == 4)
-    m *= glm::mat4_cast(glm::quat(static_cast<float>(node.rotation[3]), static_cast<float>(node.rotation[0]),
-                                  static_cast<float>(node.rotation[1]), static_cast<float>(node.rotation[2])));
-  if (node.scale.size() == 3) m = glm::scale(m, glm::vec3(glm::make_vec3(node.scale.data())));
-  return m;
-}
-
-void add_gltf_node(const tinygltf::Model& model, int index, const glm::mat4& parent, Mesh& out,
-                   const std::string& file, int depth) {
-  if (depth > 64) throw InputError(file + ": node hierarchy deeper than 64 (a cycle?)");
-  const auto& node = model.nodes.at(static_cast<std::size_t>(index));
-  const glm::mat4 world = parent * node_matrix(node);
-  if (node.mesh >= 0) {
-    const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(world)));
-    for (const auto& prim : model.meshes.at(static_cast<std::size_t>(node.mesh)).primitives) {
-      if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != -1) continue;
-      auto pos_it = prim.attributes.find("POSITION");
-      if (pos_it == prim.attributes.end()) throw InputError(file + ": a primitive has no POSITION");
-      Mesh part;
-      part.positions = read_accessor<glm::vec3>(model, pos_it->second, 3, file);
-      require_finite(part.positions, pos_it->second, "POSITION", file);
-      if (prim.indices >= 0) {
-        part.indices = read_accessor<std::uint32_t>(model, prim.indices, 1, file);
-        require_indices_in_range(part.indices, part.positions.size(), prim.indices, file);
-      } else {
-        for (std::uint32_t i = 0; i < part.positions.size(); ++i) part.indices.push_back(i);
-      }
-      if (auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end()) {
-        part.normals = read_accessor<glm::vec3>(model, it->second, 3, file);
-        require_count(part.normals, part.positions.size(), it->second, "NORMAL", file);
-        require_finite(part.normals, it->second, "NORMAL", file);
-      } else {
-        compute_normals(part);
-      }
-      if (auto it = prim.attributes.find("TEXCOORD_0"); it != prim.attributes.end()) {
-        part.uvs = read_accessor<glm::vec2>(model, it->second, 2, file);
-        require_count(part.uvs, part.positions.size(), it->second, "TEXCOORD_0", file);
-        require_finite(part.uvs, it->second, "TEXCOORD_0", file);
-      } else {
-        part.uvs.assign(part.positions.size(), glm::vec2(0.0f));
-      }
-      for (auto& p : part.positions) p = glm::vec3(world * glm::vec4(p, 1.0f));
-      for (auto& n : part.normals) n = glm::normalize(normal_matrix * n);
-      out.append(part);
-    }
-  }
-  for (int child : node.children) add_gltf_node(model, child, world, out, file, depth + 1);
-}
-
-Mesh load_gltf(const std::filesystem::path& path) {
-  tinygltf::TinyGLTF loader;
-  tinygltf::Model model;
-  std::string err, warn;
-  const bool binary = path.extension() == ".glb";
-  const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path.string())
-                         : loader.LoadASCIIFromFile(&model, &err, &warn, path.string());
-  if (!ok) throw InputError(path.string() + ": cannot read glTF: " + (err.empty() ? "unknown error" : err));
+/// A whole glTF file as one mesh: every primitive in the file's world (its node's transform
+/// applied; a mirroring one flips the tangent frame's handedness).
+Mesh flatten_gltf(const std::filesystem::path& path) {
   Mesh mesh;
-  try {
-    const int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
-    if (!model.scenes.empty()) {
-      for (int n : model.scenes.at(static_cast<std::size_t>(scene)).nodes)
-        add_gltf_node(model, n, glm::mat4(1.0f), mesh, path.string(), 0);
-    } else {
-      for (std::size_t n = 0; n < model.nodes.size(); ++n)
-        add_gltf_node(model, static_cast<int>(n), glm::mat4(1.0f), mesh, path.string(), 0);
-    }
-  } catch (const std::out_of_range&) {
-    throw InputError(path.string() + ": glTF refers to a missing node, mesh, accessor or buffer");
+  for (const GltfPrimitive& p : import_gltf(path).primitives) {
+    Mesh part = *p.mesh;
+    const glm::mat3 linear(p.transform);
+    const glm::mat3 normal_matrix = glm::transpose(glm::inverse(linear));
+    const float handedness = glm::determinant(linear) < 0.0f ? -1.0f : 1.0f;
+    for (auto& v : part.positions) v = glm::vec3(p.transform * glm::vec4(v, 1.0f));
+    for (auto& n : part.normals) n = glm::normalize(normal_matrix * n);
+    for (auto& t : part.tangents) t = glm::vec4(glm::normalize(linear * glm::vec3(t)), t.w * handedness);
+    mesh.append(part);
   }
   return mesh;
 }
@@ -232,7 +108,7 @@ Mesh load_mesh_file(const std::filesystem::path& path) {
   const auto ext = path.extension().string();
   Mesh mesh;
   if (ext == ".gltf" || ext == ".glb") {
-    mesh = load_gltf(path);
+    mesh = flatten_gltf(path);
   } else if (ext == ".obj") {
     mesh = load_obj(path);
   } else {
@@ -240,7 +116,7 @@ Mesh load_mesh_file(const std::filesystem::path& path) {
   }
   if (const auto problem = mesh.validate(); !problem.empty())
     throw InputError(path.string() + ": broken mesh: " + problem);
-  compute_tangents(mesh);
+  if (mesh.tangents.empty()) compute_tangents(mesh);
   return mesh;
 }
 

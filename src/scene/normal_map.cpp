@@ -14,11 +14,14 @@ NormalMap load_normal_map(const std::filesystem::path& path) {
   const Image img = read_ldr_image(path);
   NormalMap map{img.width(), img.height(), {}, "file " + path.filename().string()};
   map.normals.reserve(img.pixel_count());
-  for (const auto& c : img.pixels()) {
-    glm::vec3 n = 2.0f * c - 1.0f;
-    n.z = std::max(n.z, 1e-3f);  // never below the surface
-    map.normals.push_back(glm::normalize(n));
-  }
+  // +Y is up in the image (the OpenGL and glTF convention), which is glintlab's +v: the bottom
+  // row is v = 0 and comes first.
+  for (int y = img.height() - 1; y >= 0; --y)
+    for (int x = 0; x < img.width(); ++x) {
+      glm::vec3 n = 2.0f * img.at(x, y) - 1.0f;
+      n.z = std::max(n.z, 1e-3f);  // never below the surface
+      map.normals.push_back(glm::normalize(n));
+    }
   return map;
 }
 

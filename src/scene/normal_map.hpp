@@ -1,6 +1,6 @@
 #pragma once
-// Tangent-space normal maps (+z out of the surface, +y along +v: the OpenGL/glTF convention),
-// loaded from an image or generated procedurally. Procedural maps are periodic so they tile.
+// Tangent-space normal maps (+z out of the surface, +y along +v, which is up in an image file: the
+// OpenGL/glTF convention), loaded from an image or generated procedurally. Procedural maps are periodic so they tile.
 #include <cstdint>
 #include <filesystem>
 #include <glm/vec3.hpp>
@@ -12,7 +12,7 @@ namespace glintlab {
 struct NormalMap {
   int width = 0;
   int height = 0;
-  std::vector<glm::vec3> normals;  ///< unit vectors, row 0 at v = 0
+  std::vector<glm::vec3> normals;  ///< unit vectors, row 0 at v = 0 (an image file's bottom row)
   std::string description;         ///< where it came from (file or generator and parameters)
 };
 

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "scene/gltf_import.hpp"
 #include "scene/light_kind.hpp"
 #include "scene/mesh_io.hpp"
 #include "scene/scene_loader.hpp"
@@ -54,8 +55,21 @@ void parse_path(TomlReader r, CameraPath& path) {
   r.finish();
 }
 
-void parse_camera(TomlReader r, Camera& cam, CameraPath& path) {
-  const auto type = r.get_string("type", "perspective", {"perspective", "orthographic"});
+void parse_camera(TomlReader r, Camera& cam, CameraPath& path, const std::vector<GltfCamera>& gltf_cameras) {
+  if (r.has("gltf_camera")) {
+    // A camera of an imported glTF file as the starting point; the table's other keys override it.
+    const auto name = r.require_string("gltf_camera");
+    auto it = std::find_if(gltf_cameras.begin(), gltf_cameras.end(), [&](const GltfCamera& c) { return c.name == name; });
+    if (it == gltf_cameras.end()) {
+      std::string known;
+      for (const auto& c : gltf_cameras) known += (known.empty() ? "" : ", ") + c.name;
+      r.fail("gltf_camera", "value \"" + name + "\" names no camera of the scene's glTF files; they have: " +
+                                (known.empty() ? "none" : known));
+    }
+    cam = it->camera;
+  }
+  const auto type = r.get_string("type", cam.projection == Projection::Perspective ? "perspective" : "orthographic",
+                                 {"perspective", "orthographic"});
   cam.projection = type == "perspective" ? Projection::Perspective : Projection::Orthographic;
   cam.position = r.get_vec3("position", cam.position);
   cam.target = r.get_vec3("target", cam.target);
@@ -171,17 +185,107 @@ glm::mat4 parse_transform(TomlReader& r) {
   return glm::scale(m, s);
 }
 
-Shape parse_shape(TomlReader r, const std::map<std::string, int>& materials, const std::filesystem::path& base_dir) {
-  Shape shape;
-  shape.type = r.require_string("type", {"sphere", "plane", "disk", "torus", "tube", "cylinder", "mesh"});
-  const auto material = r.require_string("material");
-  auto it = materials.find(material);
+// The index of the [[material]] that `value` (of `key`) names.
+int material_named(const TomlReader& r, const std::string& key, const std::string& value,
+                   const std::map<std::string, int>& materials) {
+  auto it = materials.find(value);
   if (it == materials.end()) {
     std::string known;
     for (const auto& [k, v] : materials) known += (known.empty() ? "" : ", ") + k;
-    r.fail("material", "value \"" + material + "\" names no [[material]]; defined: " + (known.empty() ? "none" : known));
+    r.fail(key, "value \"" + value + "\" names no [[material]]; defined: " + (known.empty() ? "none" : known));
   }
-  shape.material = it->second;
+  return it->second;
+}
+
+bool is_gltf(const std::string& file) {
+  const auto ext = std::filesystem::path(file).extension().string();
+  return ext == ".gltf" || ext == ".glb";
+}
+
+/// A glTF file's place in the scene: its primitives as shapes with their own materials (or the
+/// scene's, by `material` for all or `materials` by mesh name / "mesh#primitive"), its lights and
+/// its cameras, all moved by the shape's transform.
+void add_gltf(TomlReader& r, const std::map<std::string, int>& materials, const std::filesystem::path& base_dir,
+              Scene& scene, std::vector<GltfCamera>& cameras) {
+  const glm::mat4 transform = parse_transform(r);
+  const auto file = r.require_string("file");
+  GltfAsset asset;
+  try {
+    asset = import_gltf(base_dir / file);
+  } catch (const InputError& e) {
+    r.fail("file", e.what());
+  }
+  std::optional<int> for_all;
+  if (r.has("material")) for_all = material_named(r, "material", r.require_string("material"), materials);
+  // Overrides by name: "mesh" (all its primitives) or "mesh#i" (one).
+  std::map<std::string, int> overrides;
+  if (const toml::table* t = r.get_table("materials")) {
+    for (auto&& [key, value] : *t) {
+      const auto name = value.value<std::string>();
+      if (!name) r.fail("materials", "entry \"" + std::string(key.str()) + "\" is not a string naming a [[material]]");
+      const std::string k(key.str());
+      const bool known = std::any_of(asset.primitives.begin(), asset.primitives.end(), [&](const GltfPrimitive& p) {
+        return p.mesh_name == k || p.mesh_name + "#" + std::to_string(p.primitive) == k;
+      });
+      if (!known) {
+        std::string names;
+        for (const auto& p : asset.primitives)
+          if (names.find(p.mesh_name) == std::string::npos) names += (names.empty() ? "" : ", ") + p.mesh_name;
+        r.fail("materials", "entry \"" + k + "\" names no mesh of " + file + "; its meshes: " + names +
+                                " (or MESH#N for one primitive)");
+      }
+      overrides[k] = material_named(r, "materials", *name, materials);
+    }
+  }
+  const bool with_lights = r.get_bool("lights", true);
+  const bool with_cameras = r.get_bool("cameras", true);
+  r.finish();
+
+  std::map<int, int> file_material;  // the file's material -> the scene's, added when first used
+  for (const GltfPrimitive& p : asset.primitives) {
+    Shape shape;
+    shape.type = "mesh";
+    shape.mesh = p.mesh;
+    shape.transform = transform * p.transform;
+    if (auto it = overrides.find(p.mesh_name + "#" + std::to_string(p.primitive)); it != overrides.end())
+      shape.material = it->second;
+    else if (auto it2 = overrides.find(p.mesh_name); it2 != overrides.end())
+      shape.material = it2->second;
+    else if (for_all)
+      shape.material = *for_all;
+    else {
+      auto [it3, added] = file_material.try_emplace(p.material, static_cast<int>(scene.materials.size()));
+      if (added) scene.materials.push_back(asset.materials[static_cast<std::size_t>(p.material)]);
+      shape.material = it3->second;
+    }
+    scene.shapes.push_back(std::move(shape));
+  }
+  const glm::mat3 linear(transform);
+  if (with_lights)
+    for (Light l : asset.lights) {
+      l.position = glm::vec3(transform * glm::vec4(l.position, 1.0f));
+      l.direction = glm::normalize(linear * l.direction);
+      scene.lights.push_back(l);
+    }
+  if (with_cameras)
+    for (GltfCamera c : asset.cameras) {
+      c.camera.position = glm::vec3(transform * glm::vec4(c.camera.position, 1.0f));
+      c.camera.target = glm::vec3(transform * glm::vec4(c.camera.target, 1.0f));
+      c.camera.up = glm::normalize(linear * c.camera.up);
+      cameras.push_back(c);
+    }
+  for (auto& w : asset.warnings) scene.warnings.push_back(std::move(w));
+}
+
+void parse_shape(TomlReader r, const std::map<std::string, int>& materials, const std::filesystem::path& base_dir,
+                 Scene& scene, std::vector<GltfCamera>& cameras) {
+  Shape shape;
+  shape.type = r.require_string("type", {"sphere", "plane", "disk", "torus", "tube", "cylinder", "mesh"});
+  if (shape.type == "mesh" && r.has("file") && is_gltf(r.require_string("file"))) {
+    add_gltf(r, materials, base_dir, scene, cameras);
+    return;
+  }
+  shape.material = material_named(r, "material", r.require_string("material"), materials);
   shape.transform = parse_transform(r);
   Mesh mesh;
   const std::string& type = shape.type;
@@ -230,7 +334,7 @@ Shape parse_shape(TomlReader r, const std::map<std::string, int>& materials, con
   // A generator's broken output comes from the key that shapes it (a tube's points), else from the type.
   if (const auto problem = shape.mesh->validate(); !problem.empty())
     r.fail(type == "tube" ? "points" : "type", "broken geometry: " + problem);
-  return shape;
+  scene.shapes.push_back(std::move(shape));
 }
 
 // The light's kind from `type` (the registered kinds), which reads its own keys.
@@ -259,8 +363,6 @@ Scene parse_scene(std::string_view text, const std::string& file, const std::fil
   TomlReader r(root, file, "");
   scene.description = r.get_string("description", "");
   if (const toml::table* film = r.get_table("film")) parse_film(TomlReader(*film, file, "[film]"), scene.film);
-  if (const toml::table* cam = r.get_table("camera"))
-    parse_camera(TomlReader(*cam, file, "[camera]"), scene.camera, scene.path);
   std::map<std::string, int> material_index;
   for (const toml::table* t : r.get_table_array("material")) {
     TomlReader mr(*t, file, "[[material]] #" + std::to_string(scene.materials.size() + 1));
@@ -269,20 +371,33 @@ Scene parse_scene(std::string_view text, const std::string& file, const std::fil
     material_index[m.name] = static_cast<int>(scene.materials.size());
     scene.materials.push_back(std::move(m));
   }
-  for (const toml::table* t : r.get_table_array("shape"))
-    scene.shapes.push_back(
-        parse_shape(TomlReader(*t, file, "[[shape]] #" + std::to_string(scene.shapes.size() + 1)), material_index, base_dir));
+  const std::size_t scene_file_materials = scene.materials.size();
+  std::vector<GltfCamera> gltf_cameras;
+  const auto shape_tables = r.get_table_array("shape");
+  for (std::size_t i = 0; i < shape_tables.size(); ++i)
+    parse_shape(TomlReader(*shape_tables[i], file, "[[shape]] #" + std::to_string(i + 1)), material_index, base_dir,
+                scene, gltf_cameras);
+  const std::size_t gltf_lights = scene.lights.size();
   for (const toml::table* t : r.get_table_array("light"))
-    scene.lights.push_back(parse_light(TomlReader(*t, file, "[[light]] #" + std::to_string(scene.lights.size() + 1))));
+    scene.lights.push_back(
+        parse_light(TomlReader(*t, file, "[[light]] #" + std::to_string(scene.lights.size() - gltf_lights + 1))));
+  // The camera: the [camera] table (which may start from a glTF camera), else the first camera of
+  // the glTF files, else the default.
+  if (const toml::table* cam = r.get_table("camera"))
+    parse_camera(TomlReader(*cam, file, "[camera]"), scene.camera, scene.path, gltf_cameras);
+  else if (!gltf_cameras.empty())
+    scene.camera = gltf_cameras.front().camera;
   r.finish();
   if (scene.shapes.empty()) throw InputError(file + ": the scene has no [[shape]]; at least one is required");
-  if (scene.lights.empty()) throw InputError(file + ": the scene has no [[light]]; at least one is required");
+  if (scene.lights.empty())
+    throw InputError(file + ": the scene has no light ([[light]] or a glTF file's); at least one is required");
   if (scene.lights.size() > static_cast<std::size_t>(kMaxLights))
-    throw InputError(file + ": " + std::to_string(scene.lights.size()) + " [[light]] tables; allowed: at most " +
-                     std::to_string(kMaxLights));
+    throw InputError(file + ": " + std::to_string(scene.lights.size()) + " lights (" + std::to_string(gltf_lights) +
+                     " from glTF files); allowed: at most " + std::to_string(kMaxLights));
   if (scene.materials.size() > static_cast<std::size_t>(kMaxMaterials))
-    throw InputError(file + ": " + std::to_string(scene.materials.size()) + " [[material]] tables; allowed: at most " +
-                     std::to_string(kMaxMaterials));
+    throw InputError(file + ": " + std::to_string(scene.materials.size()) + " materials (" +
+                     std::to_string(scene.materials.size() - scene_file_materials) +
+                     " from glTF files); allowed: at most " + std::to_string(kMaxMaterials));
   return scene;
 }
 

@@ -227,7 +227,7 @@ Document make_showcase_document() {
   sphere.translation = sphere_at;
   NodeDesc& torus = node("torus");
   torus.mesh = 2;
-  torus.translation = {0.8f, 0.55f, -0.1f};
+  torus.translation = {0.8f, 0.7f, -0.1f};
   torus.rotation = glm::angleAxis(1.1f, glm::vec3(1, 0, 0));
   torus.children = {5};
   NodeDesc& lantern = node("lantern");  // sits in the torus's hole

@@ -293,10 +293,12 @@ tinygltf::Model make_model(const Document& doc) {
   if (!doc.lights.empty()) used.add("KHR_lights_punctual");
   for (const auto& c : doc.cameras) model.cameras.push_back(make_camera(c));
   for (const auto& n : doc.nodes) model.nodes.push_back(make_node(n));
-  tinygltf::Scene scene;
-  scene.nodes = doc.scene_nodes;
-  model.scenes.push_back(std::move(scene));
-  model.defaultScene = 0;
+  if (!doc.scene_nodes.empty()) {  // a scene without nodes would be written as null
+    tinygltf::Scene scene;
+    scene.nodes = doc.scene_nodes;
+    model.scenes.push_back(std::move(scene));
+    model.defaultScene = 0;
+  }
   for (const auto& name : doc.extra_extensions_used) used.add(name);
   model.extensionsUsed = used.names();
   auto& buffer = model.buffers[0].data;

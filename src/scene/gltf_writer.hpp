@@ -109,7 +109,7 @@ struct Document {
   std::vector<LightDesc> lights;
   std::vector<CameraDesc> cameras;
   std::vector<NodeDesc> nodes;
-  std::vector<int> scene_nodes;  ///< roots of the one (default) scene
+  std::vector<int> scene_nodes;  ///< roots of the one (default) scene; empty: no scene written
   /// Listed in extensionsUsed without being used anywhere (tests an importer's warnings).
   std::vector<std::string> extra_extensions_used;
 };

@@ -107,12 +107,23 @@ Image8 lantern_emissive_image() {
   });
 }
 
+/// Fine streaks along u for the brushed torus (its anisotropy direction): a hash per row of
+/// texels, so the streaks are sharp across v and constant along u.
+Image8 brushed_image() {
+  return make_image(128, 64, [](glm::vec2 uv) {
+    std::uint32_t h = static_cast<std::uint32_t>(uv.y * 64.0f) * 2654435761u;
+    h ^= h >> 15;
+    const float streak = 0.8f + 0.2f * static_cast<float>(h % 1000u) / 999.0f;
+    return glm::vec4(glm::vec3(streak), 1.0f);
+  });
+}
+
 /// A node at `eye` whose -Z axis looks at `target` (glTF cameras and lights look along -Z).
 glm::quat look_at(glm::vec3 eye, glm::vec3 target) {
   return glm::quatLookAtRH(glm::normalize(target - eye), glm::vec3(0, 1, 0));
 }
 
-enum Image { kChecker, kRoughnessMetal, kDimples, kRibs, kLantern };
+enum Image { kChecker, kRoughnessMetal, kDimples, kRibs, kLantern, kBrushed };
 enum Material { kGround, kDimpledGold, kBrushedDielectric, kLanternGlow, kRibbedPanel };
 
 std::vector<MaterialDesc> showcase_materials() {
@@ -129,6 +140,7 @@ std::vector<MaterialDesc> showcase_materials() {
   m[kBrushedDielectric].base_color = {0.08f, 0.22f, 0.6f, 1.0f};
   m[kBrushedDielectric].metallic = 0.0f;
   m[kBrushedDielectric].roughness = 0.35f;
+  m[kBrushedDielectric].base_color_texture = {kBrushed, TextureTransform{{0.0f, 0.0f}, {4.0f, 1.0f}, 0.0f}};
   m[kBrushedDielectric].anisotropy = glm::vec2(0.7f, 0.5f);
   m[kBrushedDielectric].ior = 1.6f;
   m[kBrushedDielectric].specular = std::pair{0.8f, glm::vec3(1.0f, 0.9f, 0.8f)};
@@ -150,13 +162,13 @@ std::vector<MaterialDesc> showcase_materials() {
 
 std::vector<MeshDesc> showcase_meshes() {
   std::vector<MeshDesc> meshes;
-  meshes.push_back({"ground", {primitive_from_mesh(make_plane({4.0f, 4.0f}, 1.0f, 8), true, kGround)}});
+  meshes.push_back({"ground", {primitive_from_mesh(make_plane({4.0f, 4.0f}, 1.0f, 8), false, kGround)}});
   meshes.push_back({"sphere", {primitive_from_mesh(make_sphere(0.6f, 48, 24), true, kDimpledGold)}});
-  // No TANGENT: the importer must build the anisotropy frame itself.
+  // No TANGENT: the importer must build the anisotropy frame itself (from the uv, like a normal map's).
   meshes.push_back({"torus", {primitive_from_mesh(make_torus(0.45f, 0.15f, 48, 16), false, kBrushedDielectric)}});
   // Two primitives, two materials; the caps reuse the sphere's normal-mapped material without TANGENT.
   meshes.push_back({"lantern",
-                    {primitive_from_mesh(make_cube_faces(0.3f, true), true, kLanternGlow),
+                    {primitive_from_mesh(make_cube_faces(0.3f, true), false, kLanternGlow),
                      primitive_from_mesh(make_cube_faces(0.3f, false), false, kDimpledGold)}});
   meshes.push_back({"panel", {primitive_from_mesh(make_plane({1.2f, 0.8f}, 1.0f, 1), false, kRibbedPanel)}});
   return meshes;
@@ -202,7 +214,7 @@ PrimitiveDesc primitive_from_mesh(const Mesh& mesh, bool with_tangents, int mate
 Document make_showcase_document() {
   Document doc;
   doc.images = {checker_image(), roughness_metal_image(), dimple_normal_image(), rib_normal_image(),
-                lantern_emissive_image()};
+                lantern_emissive_image(), brushed_image()};
   doc.materials = showcase_materials();
   doc.meshes = showcase_meshes();
   doc.lights = showcase_lights();

@@ -94,8 +94,8 @@ TEST(GltfShowcase, GlbAndGltfHoldTheSameDataAsTheDocument) {
   const tinygltf::Model text = load_gltf_file(dir / "showcase.gltf");
   const tinygltf::Model& binary = showcase_glb();
   for (const tinygltf::Model* model : {&binary, &text}) {
-    EXPECT_EQ(model->images.size(), 5u);
-    EXPECT_EQ(model->textures.size(), 5u);
+    EXPECT_EQ(model->images.size(), 6u);
+    EXPECT_EQ(model->textures.size(), 6u);
     EXPECT_EQ(model->samplers.size(), 1u);
     EXPECT_EQ(model->materials.size(), 5u);
     EXPECT_EQ(model->meshes.size(), 5u);

@@ -371,8 +371,12 @@ class Importer {
       if (g.type == "directional") {
         l.kind = &find_light_kind("directional");
       } else {
-        const double inner = g.spot.innerConeAngle, outer = g.spot.outerConeAngle;
-        if (!(inner >= 0.0 && inner < outer && outer <= 0.5 * 3.14159265358979))
+        // A float-written pi/2 is 90.0000025 degrees: clamp what rounding puts above the limit.
+        constexpr double kHalfPi = 1.5707963267948966;
+        const double inner = g.spot.innerConeAngle;
+        double outer = g.spot.outerConeAngle;
+        if (outer > kHalfPi && outer <= kHalfPi * (1.0 + 1e-6)) outer = kHalfPi;
+        if (!(inner >= 0.0 && inner < outer && outer <= kHalfPi))
           c_.fail(where + " cone angles are " + std::to_string(inner) + " and " + std::to_string(outer) +
                   "; allowed: 0 <= innerConeAngle < outerConeAngle <= pi/2");
         l.kind = &find_light_kind("spot");

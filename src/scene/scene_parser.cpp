@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "scene/gltf_import.hpp"
+#include "scene/gltf_showcase.hpp"
 #include "scene/light_kind.hpp"
 #include "scene/mesh_io.hpp"
 #include "scene/scene_loader.hpp"
@@ -197,6 +198,15 @@ int material_named(const TomlReader& r, const std::string& key, const std::strin
   return it->second;
 }
 
+/// A glTF file of the scene: a path relative to the scene file, or one of glintlab's own models
+/// ("builtin:showcase.glb", made by the glTF writer in memory: no file, no download).
+GltfAsset import_gltf_file(const std::string& file, const std::filesystem::path& base_dir) {
+  if (file.rfind("builtin:", 0) != 0) return import_gltf(base_dir / file);
+  if (file != "builtin:showcase.glb")
+    throw InputError("value \"" + file + "\" names no built-in model; allowed: builtin:showcase.glb");
+  return import_glb(gltf::encode_glb(gltf::make_showcase_document()), file);
+}
+
 bool is_gltf(const std::string& file) {
   const auto ext = std::filesystem::path(file).extension().string();
   return ext == ".gltf" || ext == ".glb";
@@ -211,7 +221,7 @@ void add_gltf(TomlReader& r, const std::map<std::string, int>& materials, const 
   const auto file = r.require_string("file");
   GltfAsset asset;
   try {
-    asset = import_gltf(base_dir / file);
+    asset = import_gltf_file(file, base_dir);
   } catch (const InputError& e) {
     r.fail("file", e.what());
   }

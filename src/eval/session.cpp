@@ -1,6 +1,7 @@
 #include "eval/session.hpp"
 
 #include <cmath>
+#include <iostream>
 #include <limits>
 
 #include "core/cache_directory.hpp"
@@ -90,6 +91,8 @@ Session::Session(const CommonOptions& options)
     : options_(options),
       scene_(load_scene(options.scene.empty() ? kDefaultScene : options.scene)),
       cache_(options.no_cache ? std::filesystem::path() : ReferenceCache::default_directory()) {
+  // What loading ignored (a glTF extension, an occlusion texture...) is said, never dropped.
+  for (const auto& w : scene_.warnings) std::cerr << "glintlab: warning: " << w << "\n";
   if (!options.spp_text.empty()) parse_spp(options.spp_text, "--spp", options_);
   find_reference_backend(options.reference_backend);  // an unknown id fails before any GL work
   validate_spp(options_.spp);

@@ -422,6 +422,13 @@ Scene load_scene(const std::string& spec) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     throw InputError(spec + ": scene file does not exist or is not a file (or use builtin:NAME; see 'glintlab scenes')");
+  if (is_gltf(spec)) {
+    // A glTF file alone is the scene of one mesh shape: its materials, lights and first camera.
+    std::string file = path.filename().string(), quoted;
+    for (char ch : file) quoted += (ch == '"' || ch == '\\') ? std::string("\\") + ch : std::string(1, ch);
+    Scene scene = parse_scene("[[shape]]\ntype = \"mesh\"\nfile = \"" + quoted + "\"\n", spec, path.parent_path());
+    return scene;
+  }
   std::ifstream in(path, std::ios::binary);
   std::stringstream text;
   text << in.rdbuf();

@@ -75,20 +75,22 @@ double half_mean(const Image& img, bool right) {
 }  // namespace
 
 TEST(GltfMaterials, NormalMapTiltShadesLikeTheTiltedPlaneInGltfsFrame) {
-  ScratchDirectory dir("gltf-tilt");
+  ScratchDirectory dir;
   const float a = 0.5f;  // the tilt, radians
   for (const bool along_y : {false, true})
     for (const bool mirrored : {false, true})
       for (const bool tangents : {false, true}) {
         // The map's tangent-space normal, tilted towards +X (right in the image) or +Y (up).
-        const glm::vec3 mapped = along_y ? glm::vec3(0, std::sin(a), std::cos(a)) : glm::vec3(std::sin(a), 0, std::cos(a));
+        const glm::vec3 tilt = along_y ? glm::vec3(0, std::sin(a), std::cos(a)) : glm::vec3(std::sin(a), 0, std::cos(a));
+        // The normal the 8-bit map holds: 2 round(255 (n / 2 + 1 / 2)) / 255 - 1, renormalised.
+        const glm::vec3 mapped = glm::normalize(2.0f * glm::round(255.0f * (tilt * 0.5f + 0.5f)) / 255.0f - 1.0f);
         // Where that is on the quad: +X along dP/du (+x, or -x when mirrored), +Y up in the image (-z).
         const glm::vec3 t(mirrored ? -1 : 1, 0, 0), b(0, 0, -1), n(0, 1, 0);
         const glm::vec3 expected = mapped.x * t + mapped.y * b + mapped.z * n;
         const glm::vec3 wrong = mapped.x * t - mapped.y * b + mapped.z * n - (along_y ? glm::vec3(0) : 2.0f * mapped.x * t);
         for (const glm::vec3 twin_normal : {expected, wrong}) {
           Document doc = one_mesh({quad(-1, mirrored, tangents, n, 0), quad(1, mirrored, tangents, twin_normal, 1)});
-          doc.images.push_back(make_normal_image(8, 8, [&](glm::vec2) { return mapped; }));
+          doc.images.push_back(make_normal_image(8, 8, [&](glm::vec2) { return tilt; }));
           MaterialDesc m{.name = "mapped", .base_color = glm::vec4(0.8f), .metallic = 0.5f, .roughness = 0.45f};
           MaterialDesc plain = m;
           plain.name = "plain";
@@ -101,7 +103,7 @@ TEST(GltfMaterials, NormalMapTiltShadesLikeTheTiltedPlaneInGltfsFrame) {
           const std::string what = std::string(along_y ? "tilt along +Y" : "tilt along +X") +
                                    (mirrored ? ", mirrored uv" : "") + (tangents ? ", file TANGENT" : ", built frame");
           if (twin_normal == expected)
-            EXPECT_LT(difference, 0.01) << what << ": " << mapped_mean << " vs " << twin_mean;
+            EXPECT_LT(difference, 2e-3) << what << ": " << mapped_mean << " vs " << twin_mean;
           else
             EXPECT_GT(difference, 0.1) << what << ": the flipped tilt must look different";
         }
@@ -109,21 +111,21 @@ TEST(GltfMaterials, NormalMapTiltShadesLikeTheTiltedPlaneInGltfsFrame) {
 }
 
 TEST(GltfMaterials, TexturedMaterialEqualsTheMaterialOfItsTexelsInEveryMethodAndTheReference) {
-  // Left: base colour, metallic and roughness from uniform textures (factors 1); right: the same
-  // values as factors without textures. 8-bit texels k / 255 are exact in both.
-  ScratchDirectory dir("gltf-textured");
-  const glm::vec3 colour(200 / 255.0f, 120 / 255.0f, 60 / 255.0f);
+  // Left: base colour factor x texel, metallic and roughness from uniform textures; right: the
+  // same values as factors without textures. 8-bit texels k / 255 are exact in both; the base
+  // colour's texels are 0 and 255, whose sRGB decoding is exact on any driver (with texels
+  // (200, 120, 60) llvmpipe's decoding made the image 0.4% brighter than the sRGB formula's).
+  ScratchDirectory dir;
+  const glm::vec3 factor(0.6f, 0.5f, 0.3f), colour(1.0f, 1.0f, 0.0f);
   const float roughness = 100 / 255.0f, metallic = 150 / 255.0f;
   Document doc = one_mesh({quad(-1, false, false, {0, 1, 0}, 0), quad(1, false, false, {0, 1, 0}, 1)});
   doc.images.push_back(make_image(4, 4, [&](glm::vec2) { return glm::vec4(colour, 1); }));
   doc.images.push_back(make_image(4, 4, [&](glm::vec2) { return glm::vec4(0, roughness, metallic, 1); }));
-  MaterialDesc textured{.name = "textured"};
+  MaterialDesc textured{.name = "textured", .base_color = glm::vec4(factor, 1)};
   textured.base_color_texture.image = 0;
   textured.metallic_roughness_texture.image = 1;
-  // sRGB decoding is the sampler's: the factor must be the decoded texel.
-  auto decode = [](float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); };
-  MaterialDesc factors{.name = "factors", .base_color = glm::vec4(decode(colour.r), decode(colour.g), decode(colour.b), 1),
-                       .metallic = metallic, .roughness = roughness};
+  MaterialDesc factors{.name = "factors", .base_color = glm::vec4(factor * colour, 1), .metallic = metallic,
+                       .roughness = roughness};
   doc.materials = {textured, factors};
   SceneFixture f(two_quads(dir, doc));
   for (const auto& m : all_methods()) {
@@ -137,7 +139,7 @@ TEST(GltfMaterials, TexturedMaterialEqualsTheMaterialOfItsTexelsInEveryMethodAnd
 }
 
 TEST(GltfMaterials, EmissionAddsToTheTotalAndNotToTheSpecularImage) {
-  ScratchDirectory dir("gltf-emissive");
+  ScratchDirectory dir;
   Document doc = one_mesh({quad(-1, false, false, {0, 1, 0}, 0), quad(1, false, false, {0, 1, 0}, 1)});
   doc.images.push_back(make_image(4, 4, [](glm::vec2) { return glm::vec4(1, 1, 1, 1); }));
   MaterialDesc glowing{.name = "glowing", .base_color = glm::vec4(0.5f), .metallic = 0, .roughness = 0.5f};
@@ -156,7 +158,7 @@ TEST(GltfMaterials, EmissionAddsToTheTotalAndNotToTheSpecularImage) {
 }
 
 TEST(GltfMaterials, AnisotropyRotatedByAQuarterTurnIsTheSwappedRoughness) {
-  ScratchDirectory dir("gltf-anisotropy");
+  ScratchDirectory dir;
   Document doc = one_mesh({quad(-1, false, true, {0, 1, 0}, 0), quad(1, false, true, {0, 1, 0}, 1)});
   MaterialDesc turned{.name = "turned", .base_color = glm::vec4(0.9f), .metallic = 1, .roughness = 0.3f};
   turned.anisotropy = glm::vec2(0.8f, 0.5f * 3.14159265f);

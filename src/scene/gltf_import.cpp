@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -56,6 +58,41 @@ bool decode_image(tinygltf::Image* image, const int index, std::string* err, std
   image->image.assign(static_cast<const unsigned char*>(data), static_cast<const unsigned char*>(data) + n);
   stbi_image_free(data);
   return true;
+}
+
+// File access for external buffers and images: regular files only (a directory or a device named
+// by a uri would read forever or fail obscurely), paths taken as written (tinygltf's default
+// expands them with wordexp).
+bool regular_file_exists(const std::string& path, void*) {
+  std::error_code ec;
+  return std::filesystem::is_regular_file(path, ec);
+}
+
+std::string path_as_written(const std::string& path, void*) { return path; }
+
+bool read_regular_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    if (err) *err += "'" + path + "' is not a regular file\n";
+    return false;
+  }
+  std::ifstream in(path, std::ios::binary);
+  out->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  if (in.bad()) {
+    if (err) *err += "cannot read '" + path + "'\n";
+    return false;
+  }
+  return true;
+}
+
+bool refuse_writes(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {  // never called
+  if (err) *err += "glintlab's importer writes no files\n";
+  return false;
+}
+
+void configure(tinygltf::TinyGLTF& loader) {
+  loader.SetImageLoader(decode_image, nullptr);
+  loader.SetFsCallbacks({regular_file_exists, path_as_written, read_regular_file, refuse_writes, nullptr});
 }
 
 template <typename T>
@@ -413,7 +450,7 @@ GltfAsset import_gltf(const std::filesystem::path& path) {
   if (!std::filesystem::is_regular_file(path, ec))
     throw InputError(path.string() + ": glTF file does not exist or is not a file");
   tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(decode_image, nullptr);
+  configure(loader);
   tinygltf::Model model;
   std::string err, warn;
   const bool ok = path.extension() == ".glb" ? loader.LoadBinaryFromFile(&model, &err, &warn, path.string())
@@ -423,7 +460,7 @@ GltfAsset import_gltf(const std::filesystem::path& path) {
 
 GltfAsset import_glb(std::span<const std::uint8_t> bytes, const std::string& name) {
   tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(decode_image, nullptr);
+  configure(loader);
   tinygltf::Model model;
   std::string err, warn;
   const bool ok = loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), static_cast<unsigned int>(bytes.size()));

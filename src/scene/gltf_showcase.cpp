@@ -176,7 +176,7 @@ std::vector<MeshDesc> showcase_meshes() {
 
 std::vector<LightDesc> showcase_lights() {
   LightDesc sun{"sun", "directional", {1.0f, 0.96f, 0.9f}, 3.0f, std::nullopt};
-  LightDesc bulb{"bulb", "point", {1.0f, 0.8f, 0.6f}, 5.0f, 10.0f};
+  LightDesc bulb{"bulb", "point", {1.0f, 0.8f, 0.6f}, 5.0f, std::nullopt};  // no range: glintlab ignores it (a warning)
   LightDesc spot{"spot", "spot", {0.6f, 0.8f, 1.0f}, 15.0f, std::nullopt, 0.3f, 0.5f};
   return {sun, bulb, spot};
 }

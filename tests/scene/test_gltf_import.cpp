@@ -187,12 +187,19 @@ TEST(GltfImport, UnimplementedExtensionsAreNamedInWarningsAndRequiredOnesRejecte
   Document doc = quad_document();
   doc.extra_extensions_used = {"KHR_materials_clearcoat"};
   doc.materials[0].extra_extensions = {"KHR_materials_sheen"};
+  doc.lights.push_back({.name = "lamp", .type = "point", .range = 5.0f});
+  NodeDesc lamp;
+  lamp.name = "lamp";
+  lamp.light = 0;
+  doc.nodes.push_back(lamp);
+  doc.scene_nodes.push_back(1);
   const GltfAsset a = import_glb(encode_glb(doc), "quad.glb");
   std::string all;
   for (const auto& w : a.warnings) all += w + "\n";
   EXPECT_NE(all.find("KHR_materials_clearcoat"), std::string::npos) << all;
   EXPECT_NE(all.find("KHR_materials_sheen"), std::string::npos) << all;
   EXPECT_NE(all.find("quad.glb"), std::string::npos) << all;
+  EXPECT_NE(all.find("light ranges are ignored"), std::string::npos) << all;
 
   ScratchDirectory dir;
   std::string json = encode_gltf_json(quad_document());

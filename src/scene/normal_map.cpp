@@ -8,6 +8,7 @@
 
 #include "core/image_io.hpp"
 #include "scene/bump_waves.hpp"
+#include "scene/parallel_rows.hpp"
 
 namespace glintlab {
 
@@ -33,45 +34,55 @@ NormalMap generate_bumps(int resolution, float slope_sigma, int waves, int max_f
 }
 
 NormalMap generate_flakes(int resolution, int cells, float alpha, std::uint32_t seed) {
+  std::ostringstream d;
+  d << "flakes(resolution=" << resolution << ", cells=" << cells << ", alpha=" << alpha << ", seed=" << seed << ")";
+  const std::string what = d.str();
+  // The cells in order (their random numbers are one sequence), then the texels on every thread.
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> uni(0.0f, 1.0f);
   const auto count = static_cast<std::size_t>(cells) * static_cast<std::size_t>(cells);
   std::vector<glm::vec2> sites(count);
   std::vector<glm::vec3> normals(count);
-  for (std::size_t i = 0; i < count; ++i) {
-    sites[i] = glm::vec2(uni(rng), uni(rng));
-    // Beckmann sampling: tan^2(theta) = -alpha^2 ln(1 - u).
-    const float tan2 = -alpha * alpha * std::log(1.0f - uni(rng));
-    const float phi = glm::two_pi<float>() * uni(rng);
-    const float cos_t = 1.0f / std::sqrt(1.0f + tan2);
-    const float sin_t = std::sqrt(std::max(0.0f, 1.0f - cos_t * cos_t));
-    normals[i] = glm::vec3(sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t);
-  }
-  NormalMap map{resolution, resolution, {}, {}};
-  map.normals.resize(static_cast<std::size_t>(resolution) * static_cast<std::size_t>(resolution));
-  for (int y = 0; y < resolution; ++y)
-    for (int x = 0; x < resolution; ++x) {
-      const glm::vec2 p = (glm::vec2(x, y) + 0.5f) / static_cast<float>(resolution) * static_cast<float>(cells);
-      const glm::ivec2 c = glm::ivec2(glm::floor(p));
-      float best = 1e30f;
-      std::size_t best_i = 0;
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const glm::ivec2 q = c + glm::ivec2(dx, dy);
-          const glm::ivec2 w = (q % cells + cells) % cells;  // toroidal
-          const std::size_t i = static_cast<std::size_t>(w.y) * cells + w.x;
-          const glm::vec2 site = glm::vec2(q) + sites[i];
-          const float d = glm::dot(site - p, site - p);
-          if (d < best) {
-            best = d;
-            best_i = i;
-          }
-        }
-      map.normals[static_cast<std::size_t>(y) * resolution + x] = normals[best_i];
+  report_generation_progress(what + " cells", 0, cells);
+  for (int row = 0; row < cells; ++row) {
+    for (std::size_t i = static_cast<std::size_t>(row) * cells; i < static_cast<std::size_t>(row + 1) * cells; ++i) {
+      sites[i] = glm::vec2(uni(rng), uni(rng));
+      // Beckmann sampling: tan^2(theta) = -alpha^2 ln(1 - u).
+      const float tan2 = -alpha * alpha * std::log(1.0f - uni(rng));
+      const float phi = glm::two_pi<float>() * uni(rng);
+      const float cos_t = 1.0f / std::sqrt(1.0f + tan2);
+      const float sin_t = std::sqrt(std::max(0.0f, 1.0f - cos_t * cos_t));
+      normals[i] = glm::vec3(sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t);
     }
-  std::ostringstream d;
-  d << "flakes(resolution=" << resolution << ", cells=" << cells << ", alpha=" << alpha << ", seed=" << seed << ")";
-  map.description = d.str();
+    if ((row + 1) % 64 == 0 || row + 1 == cells) report_generation_progress(what + " cells", row + 1, cells);
+  }
+  // Toroidal cell index; no division for the cells inside the tile (most of them).
+  auto wrap = [cells](int q) { return q >= 0 && q < cells ? q : (q % cells + cells) % cells; };
+  NormalMap map{resolution, resolution, {}, what};
+  map.normals.resize(static_cast<std::size_t>(resolution) * static_cast<std::size_t>(resolution));
+  for_each_row(
+      resolution, row_workers(resolution),
+      [&](int y, int) {
+        for (int x = 0; x < resolution; ++x) {
+          const glm::vec2 p = (glm::vec2(x, y) + 0.5f) / static_cast<float>(resolution) * static_cast<float>(cells);
+          const glm::ivec2 c = glm::ivec2(glm::floor(p));
+          float best = 1e30f;
+          std::size_t best_i = 0;
+          for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+              const glm::ivec2 q = c + glm::ivec2(dx, dy);
+              const std::size_t i = static_cast<std::size_t>(wrap(q.y)) * cells + wrap(q.x);
+              const glm::vec2 site = glm::vec2(q) + sites[i];
+              const float dist = glm::dot(site - p, site - p);
+              if (dist < best) {
+                best = dist;
+                best_i = i;
+              }
+            }
+          map.normals[static_cast<std::size_t>(y) * resolution + x] = normals[best_i];
+        }
+      },
+      what);
   return map;
 }
 

@@ -9,7 +9,10 @@
 namespace glintlab {
 
 ProgressBar::ProgressBar(std::string label, bool enabled, std::string unit, std::chrono::steady_clock::time_point start)
-    : label_(std::move(label)), unit_(std::move(unit)), enabled_(enabled && ::isatty(STDERR_FILENO)), start_(start) {}
+    : label_(std::move(label)),
+      unit_(std::move(unit)),
+      enabled_(enabled && ::isatty(STDERR_FILENO)),
+      start_(start) {}
 
 void ProgressBar::update(int done, int total) {
   if (!enabled_ || total <= 0) return;

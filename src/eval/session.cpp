@@ -122,7 +122,9 @@ Session::Session(const CommonOptions& options, std::optional<Workload> workload)
   if (options.frames > 0) scene_.path.frames = options.frames;
   reference_.spp = options_.spp_auto ? kProgressivePassSpp * 4 : options_.spp;
   reference_.light_samples = options_.light_samples;
-  if (!workload) workload = Workload{static_cast<int>(parse_method_list(options_.methods).size()), true, false, true};
+  if (!workload)
+    workload = Workload{.methods = static_cast<int>(parse_method_list(options_.methods).size()), .reference = true,
+                        .outputs = true};
   workload->progressive = workload->reference && options_.spp_auto;
   if (const auto available = available_memory())
     require_memory(estimate_run_memory(*workload, width_, height_, scene_), *workload, width_, height_, *available);

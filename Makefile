@@ -2,7 +2,8 @@
 #   make demo   install missing Debian packages, build (Release), compare every method on the default scene
 #   make test   install missing Debian packages, build (Release), run the whole suite through ctest
 #   make bench-tables  time generating and loading each precomputed table (Google Benchmark; not in test)
-.PHONY: all deps build demo test bench bench-tables clean
+#   make bench-normal-maps  time the procedural normal-map generators at their largest inputs (the same)
+.PHONY: all deps build demo test bench bench-tables bench-normal-maps clean
 
 BUILD := build/release
 JOBS ?= $(shell nproc)
@@ -27,6 +28,9 @@ bench: build
 
 bench-tables: build
 	$(BUILD)/benchmarks/bench_tables
+
+bench-normal-maps: build
+	$(BUILD)/benchmarks/bench_normal_maps
 
 clean:
 	rm -rf build out

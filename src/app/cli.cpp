@@ -139,7 +139,7 @@ int render_command(const CommonOptions& o, const std::string& reference_arg, boo
   const FrameOutput target = o.out.empty() ? FrameOutput{default_out("render", o), name} : frame_output(o.out, name);
   const std::filesystem::path& dir = target.dir;
   const std::string& stem = target.stem;
-  Session session(opts);
+  Session session(opts, Workload{.methods = 1, .reference = reference_given});
   if (frame < 0 || frame >= session.frames())
     throw InputError("--frame " + std::to_string(frame) + ": allowed: 0 .. " + std::to_string(session.frames() - 1));
   const Frame method = session.render(methods[0], frame);
@@ -231,11 +231,13 @@ int run_cli(int argc, char** argv) {
     } else if (app.got_subcommand("animate")) {
       const auto methods = resolve_methods(animate_o.methods, animate_o.params);
       if (!animate_o.out.empty()) check_output_directory(animate_o.out);
-      Session session(animate_o);
+      // Kept from frame to frame: each method's last error, and the reference halves' last difference.
+      Session session(animate_o, Workload{.methods = static_cast<int>(methods.size()), .reference = true,
+                                          .outputs = true, .kept_images = static_cast<int>(methods.size()) + 1});
       run_animate(session, methods, animate_o.out.empty() ? default_out("animate", animate_o) : animate_o.out);
     } else if (app.got_subcommand("bench")) {
       const auto methods = resolve_methods(bench_o.methods, bench_o.params);
-      Session session(bench_o);
+      Session session(bench_o, Workload{.methods = 1});
       run_bench(session, methods, bench_frames, bench_warmup, bench_o.out);
     }
   } catch (const InputError& e) {

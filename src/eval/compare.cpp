@@ -48,16 +48,18 @@ std::vector<Region> worst_regions(const Image& error_sum, int size, int count) {
   return chosen;
 }
 
-/// Crops of the reference and each method side by side, enlarged, with 2-pixel gaps.
-Image side_by_side(const std::vector<const Image*>& displays, const Region& r, int zoom) {
+/// Crops of the reference and each method side by side, enlarged, with 2-pixel gaps: an empty
+/// strip for `columns` crops of `r`; paste_crop fills one column.
+Image side_by_side_strip(int columns, const Region& r, int zoom) {
   const int cell = r.size * zoom, gap = 2;
-  Image out(static_cast<int>(displays.size()) * (cell + gap) - gap, cell, glm::vec3(1.0f));
-  for (std::size_t i = 0; i < displays.size(); ++i) {
-    const Image crop = displays[i]->crop(r.x, r.y, r.size, r.size).upscale(zoom);
-    for (int y = 0; y < crop.height(); ++y)
-      for (int x = 0; x < crop.width(); ++x) out.at(static_cast<int>(i) * (cell + gap) + x, y) = crop.at(x, y);
-  }
-  return out;
+  return Image(columns * (cell + gap) - gap, cell, glm::vec3(1.0f));
+}
+
+void paste_crop(Image& strip, int column, const Image& display, const Region& r, int zoom) {
+  const int cell = r.size * zoom, gap = 2;
+  const Image crop = display.crop(r.x, r.y, r.size, r.size).upscale(zoom);
+  for (int y = 0; y < crop.height(); ++y)
+    for (int x = 0; x < crop.width(); ++x) strip.at(column * (cell + gap) + x, y) = crop.at(x, y);
 }
 
 std::string format_table(const std::vector<MethodMetrics>& rows, const ReferenceFrame& reference) {
@@ -92,17 +94,19 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
   const double energy_error = reference_estimate.relative_energy_error();
   const double energy_error_specular = reference_estimate.relative_energy_error(true);
 
+  // One method's images at a time (a film of many methods is several GiB): each error map is
+  // made for its metrics and the error sum, then dropped and made again when written.
   std::vector<MethodMetrics> rows;
-  std::vector<Image> errors;
   Image error_sum(session.width(), session.height());
   float error_scale = 0.0f;
   for (std::size_t i = 0; i < methods.size(); ++i) {
     rows.push_back({methods[i].method->id, measure(frames[i].total, frames[i].specular, reference.total, reference.specular)});
-    errors.push_back(abs_error_map(frames[i].total, reference.total));
+    const Image error = abs_error_map(frames[i].total, reference.total);
     std::vector<float> sorted;
-    for (std::size_t p = 0; p < errors.back().pixel_count(); ++p) {
-      error_sum.pixels()[p] += errors.back().pixels()[p];
-      sorted.push_back(errors.back().pixels()[p].r);
+    sorted.reserve(error.pixel_count());
+    for (std::size_t p = 0; p < error.pixel_count(); ++p) {
+      error_sum.pixels()[p] += error.pixels()[p];
+      sorted.push_back(error.pixels()[p].r);
     }
     // One colour scale for all maps (the largest 99.5th percentile) so they compare at a glance.
     auto nth = sorted.begin() + static_cast<std::ptrdiff_t>(0.995 * static_cast<double>(sorted.size() - 1));
@@ -110,25 +114,34 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
     error_scale = std::max(error_scale, *nth);
   }
   if (error_scale <= 0.0f) error_scale = 1.0f;
+  const auto regions = worst_regions(error_sum, std::max(16, std::min(session.width(), session.height()) / 8), 3);
+  const int columns = static_cast<int>(methods.size()) + 1;
+  std::vector<Image> strips;
+  std::vector<int> zooms;
+  for (const auto& r : regions) {
+    zooms.push_back(std::max(1, 192 / r.size));
+    strips.push_back(side_by_side_strip(columns, r, zooms.back()));
+  }
+  auto add_crops = [&](int column, const Image& display) {
+    for (std::size_t r = 0; r < regions.size(); ++r) paste_crop(strips[r], column, display, regions[r], zooms[r]);
+  };
 
   // Published as a unit: written into a staging folder, moved into `out` with the metrics last.
   OutputStage stage(out);
   const std::filesystem::path& staged = stage.path();
   const Film& film = session.scene().film;
   write_reference(staged, "reference", reference_estimate, film);
-  std::vector<Image> displays{tonemap_for_display(reference.total, film.exposure, film.bloom)};
+  add_crops(0, tonemap_for_display(reference.total, film.exposure, film.bloom));
   for (std::size_t i = 0; i < methods.size(); ++i) {
     write_frame(staged, methods[i].method->id, frames[i], film);
-    write_png(staged / (methods[i].method->id + "-error.png"), false_colour(errors[i], error_scale));
-    displays.push_back(tonemap_for_display(frames[i].total, film.exposure, film.bloom));
+    write_png(staged / (methods[i].method->id + "-error.png"),
+              false_colour(abs_error_map(frames[i].total, reference.total), error_scale));
+    add_crops(static_cast<int>(i) + 1, tonemap_for_display(frames[i].total, film.exposure, film.bloom));
   }
-  std::vector<const Image*> display_ptrs;
-  for (const auto& d : displays) display_ptrs.push_back(&d);
-  const auto regions = worst_regions(error_sum, std::max(16, std::min(session.width(), session.height()) / 8), 3);
   nlohmann::json crops = nlohmann::json::array();
   for (std::size_t r = 0; r < regions.size(); ++r) {
     const std::string name = "worst-region-" + std::to_string(r + 1) + ".png";
-    write_png(staged / name, side_by_side(display_ptrs, regions[r], std::max(1, 192 / regions[r].size)));
+    write_png(staged / name, strips[r]);
     crops.push_back({{"file", name}, {"x", regions[r].x}, {"y", regions[r].y}, {"size", regions[r].size}});
   }
 

@@ -8,11 +8,11 @@
 
 namespace glintlab {
 
-ProgressBar::ProgressBar(std::string label, bool enabled, std::string unit)
+ProgressBar::ProgressBar(std::string label, bool enabled, std::string unit, std::chrono::steady_clock::time_point start)
     : label_(std::move(label)),
       unit_(std::move(unit)),
       enabled_(enabled && ::isatty(STDERR_FILENO)),
-      start_(std::chrono::steady_clock::now()) {}
+      start_(start) {}
 
 void ProgressBar::update(int done, int total) {
   if (!enabled_ || total <= 0) return;
@@ -43,6 +43,22 @@ TableObserver terminal_table_observer(bool show_progress) {
       .warning = [](const TableSource& table, const std::string& message) {
         std::cerr << "glintlab: table " << table.id << ": " << message << "\n";
       },
+  };
+}
+
+GenerationObserver terminal_generation_observer(bool show_progress) {
+  struct State {
+    std::chrono::steady_clock::time_point start;
+    std::unique_ptr<ProgressBar> bar;
+  };
+  auto state = std::make_shared<State>();
+  return [state, show_progress](const std::string& what, int done, int total) {
+    const auto now = std::chrono::steady_clock::now();
+    if (done == 0) *state = {now, nullptr};  // a new generation
+    if (!state->bar && now - state->start >= std::chrono::seconds(1))
+      state->bar = std::make_unique<ProgressBar>("generating " + what, show_progress, "rows", state->start);
+    if (state->bar) state->bar->update(done, total);
+    if (done >= total) state->bar.reset();
   };
 }
 

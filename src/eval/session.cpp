@@ -87,9 +87,19 @@ void require_finite(const Frame& frame, const std::string& what) {
     throw RuntimeFailure(what + ": " + std::to_string(bad) + " pixels are NaN or Inf; no output was written for it");
 }
 
-Session::Session(const CommonOptions& options)
+namespace {
+
+/// load_scene, with a progress bar for procedural maps that take a while to generate.
+Scene load_scene_showing_progress(const std::string& spec, bool show_progress) {
+  const ScopedGenerationObserver observer(terminal_generation_observer(show_progress));
+  return load_scene(spec);
+}
+
+}  // namespace
+
+Session::Session(const CommonOptions& options, std::optional<Workload> workload)
     : options_(options),
-      scene_(load_scene(options.scene.empty() ? kDefaultScene : options.scene)),
+      scene_(load_scene_showing_progress(options.scene.empty() ? kDefaultScene : options.scene, !options.quiet)),
       cache_(options.no_cache ? std::filesystem::path() : ReferenceCache::default_directory()) {
   // What loading ignored (a glTF extension, an occlusion texture...) is said, never dropped.
   for (const auto& w : scene_.warnings) std::cerr << "glintlab: warning: " << w << "\n";
@@ -115,6 +125,12 @@ Session::Session(const CommonOptions& options)
   if (options.frames > 0) scene_.path.frames = options.frames;
   reference_.spp = options_.spp_auto ? kProgressivePassSpp * 4 : options_.spp;
   reference_.light_samples = options_.light_samples;
+  if (!workload)
+    workload = Workload{.methods = static_cast<int>(parse_method_list(options_.methods).size()), .reference = true,
+                        .outputs = true};
+  workload->progressive = workload->reference && options_.spp_auto;
+  if (const auto available = available_memory())
+    require_memory(estimate_run_memory(*workload, width_, height_, scene_), *workload, width_, height_, *available);
   context_ = GlContext::create_headless();
   device_ = context_->info().renderer;
   gpu_scene_ = std::make_unique<GpuScene>(

@@ -4,10 +4,12 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "gl/context.hpp"
+#include "eval/memory_budget.hpp"
 #include "gl/shader_library.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/reference_backend.hpp"
@@ -49,7 +51,10 @@ std::vector<MethodChoice> resolve_methods(const std::string& methods, const std:
 
 class Session {
  public:
-  explicit Session(const CommonOptions& options);
+  /// `workload`: what the command holds at once, checked against the memory available before
+  /// any GPU work (InputError when too large); default: every listed method's frame together,
+  /// a reference and compare's outputs.
+  explicit Session(const CommonOptions& options, std::optional<Workload> workload = std::nullopt);
 
   [[nodiscard]] const Scene& scene() const { return scene_; }
   [[nodiscard]] int width() const { return width_; }

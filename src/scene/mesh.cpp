@@ -155,6 +155,11 @@ Mesh make_torus(float major_radius, float minor_radius, int segments, int sides)
   return m;
 }
 
+std::uint64_t tube_vertex_count(std::size_t points, int segments_per_span, int sides) {
+  const std::uint64_t curve = points == 2 ? 2 : (points - 1) * static_cast<std::uint64_t>(segments_per_span) + 1;
+  return curve * static_cast<std::uint64_t>(sides + 1);
+}
+
 Mesh make_tube(const std::vector<glm::vec3>& points, float radius, int segments_per_span, int sides) {
   // Centripetal-free uniform Catmull-Rom through the points, with the end points duplicated.
   std::vector<glm::vec3> curve;

@@ -36,5 +36,11 @@ Mesh make_disk(float radius, int segments);
 Mesh make_torus(float major_radius, float minor_radius, int segments, int sides);
 /// Tube of constant radius around a Catmull-Rom curve through `points` (uv: u along, v around).
 Mesh make_tube(const std::vector<glm::vec3>& points, float radius, int segments_per_span, int sides);
+/// The vertices make_tube makes: known before generating, since many points with many segments
+/// and sides reach billions (beyond memory and 32-bit indices).
+std::uint64_t tube_vertex_count(std::size_t points, int segments_per_span, int sides);
+/// The most vertices one generated shape may have: above the largest sphere, torus and plane
+/// (4097^2); ~1.5 GiB of vertex data on the host, as much again on the GPU.
+inline constexpr std::uint64_t kMaxShapeVertices = std::uint64_t{1} << 25;
 
 }  // namespace glintlab

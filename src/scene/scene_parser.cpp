@@ -326,7 +326,13 @@ void parse_shape(TomlReader r, const std::map<std::string, int>& materials, cons
     }
     const auto radius = static_cast<float>(r.get_number("radius", 0.05, 1e-6, kBig));
     const int segments = r.get_int("segments", 16, 1, 1024);
-    mesh = make_tube(points, radius, segments, r.get_int("sides", 16, 3, 1024));
+    const int sides = r.get_int("sides", 16, 3, 1024);
+    if (const auto vertices = tube_vertex_count(points.size(), segments, sides); vertices > kMaxShapeVertices)
+      r.fail("points", std::to_string(points.size()) + " points x " + std::to_string(segments) + " segments x " +
+                           std::to_string(sides + 1) + " vertices around make " + std::to_string(vertices) +
+                           " vertices; allowed: at most " + std::to_string(kMaxShapeVertices) +
+                           " per shape (fewer points, segments or sides)");
+    mesh = make_tube(points, radius, segments, sides);
   } else if (type == "cylinder") {
     const auto radius = static_cast<float>(r.get_number("radius", 0.5, 1e-6, kBig));
     const auto height = static_cast<float>(r.get_number("height", 1.0, 1e-6, kBig));

@@ -37,7 +37,7 @@ class Cli : public ::testing::Test {
  protected:
   CliResult run_glintlab(const std::string& args) const {
     const fs::path err = scratch / "stderr.txt";
-    const std::string cmd = "GLINTLAB_CACHE_DIR='" + cache().string() + "' '" GLINTLAB_BINARY "' " + args +
+    const std::string cmd = env + " GLINTLAB_CACHE_DIR='" + cache().string() + "' '" GLINTLAB_BINARY "' " + args +
                             " >/dev/null 2>'" + err.string() + "'";
     const int status = std::system(cmd.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_bytes(err)};
@@ -61,6 +61,7 @@ class Cli : public ::testing::Test {
   }
 
   ScratchDirectory scratch;
+  std::string env;  ///< variables set for glintlab, "NAME=value ..."
 };
 
 }  // namespace
@@ -243,4 +244,19 @@ TEST_F(Cli, HostileMeshExitsWith2AndWritesNothing) {
   write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//2 3//1\n");
   const fs::path scene = write("hostile.toml", TestScene::minimal().film(16, 16).shape("mesh", "m", {{"file", "bad.obj"}}).toml());
   expect_bad_input("render --scene '" + scene.string() + "'", {"bad.obj:5", "normal index 2", "allowed: 1 to 1"});
+}
+
+TEST_F(Cli, ARunTooLargeForTheMemoryIsExit2BeforeRendering) {
+  // 3 spheres compared at 4096x4096 ended in std::bad_alloc (issue 13): the memory a run needs is
+  // estimated before the GPU work; GLINTLAB_MEMORY_MIB stands in for a small machine.
+  const fs::path scene = write("three.toml", TestScene::minimal().film(16, 16).sphere("m").sphere("m").toml());
+  env = "GLINTLAB_MEMORY_MIB=1024";
+  expect_bad_input("compare --methods all --scene '" + scene.string() + "' --width 4096 --height 4096",
+                   {"film 4096x4096 with", "methods and a reference needs", "available: 1.00 GiB", "--width/--height"});
+  expect_bad_input("render --scene '" + scene.string() + "' --width 4096 --height 4096", {"film 4096x4096 with 1 method needs"});
+  // A small film fits the same budget.
+  const CliResult fits = run_glintlab("render --scene '" + scene.string() + "' -o '" + (scratch / "ok").string() + "'");
+  EXPECT_EQ(fits.code, 0) << fits.err;
+  env = "GLINTLAB_MEMORY_MIB=lots";
+  expect_bad_input("render --scene '" + scene.string() + "'", {"GLINTLAB_MEMORY_MIB=lots", "allowed"});
 }

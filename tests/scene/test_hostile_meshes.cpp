@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <limits>
@@ -161,4 +162,24 @@ TEST(HostileMeshes, TubeWithCoincidentPointsNamesPoints) {
       EXPECT_NE(msg.find(f), std::string::npos) << "'" << f << "' not in: " << msg;
     EXPECT_EQ(msg.find("'type'"), std::string::npos) << msg;
   }
+}
+
+TEST(HostileMeshes, ATubeTooLargeToGenerateNamesItsSizeBeforeAllocating) {
+  // 5000 points x 1024 segments x 1025 vertices around are 5.2e9 vertices: std::bad_alloc (issue 13).
+  std::vector<glm::vec3> points;
+  for (int i = 0; i < 5000; ++i) points.emplace_back(0.01f * static_cast<float>(i), std::sin(0.1f * static_cast<float>(i)), 0.0f);
+  const std::string text =
+      TestScene::minimal().shape("tube", "m", {{"points", points}, {"segments", 1024}, {"sides", 1024}}).toml();
+  try {
+    parse_scene(text, "tube.toml", ".");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    for (const char* f : {"tube.toml", "key 'points'", "5000 points x 1024 segments x 1025", "5246951425 vertices",
+                          "allowed: at most 33554432"})
+      EXPECT_NE(msg.find(f), std::string::npos) << "'" << f << "' not in: " << msg;
+  }
+  // The same points with the default segments and sides are a modest mesh.
+  const std::string fine = TestScene::minimal().shape("tube", "m", {{"points", points}}).toml();
+  EXPECT_EQ(parse_scene(fine, "tube.toml", ".").shapes.back().mesh->positions.size(), tube_vertex_count(5000, 16, 16));
 }

@@ -140,17 +140,6 @@ TEST(SceneParser, ObjMeshLoadsWithTangents) {
   for (const auto& tg : s.shapes[0].mesh->tangents) EXPECT_NEAR(tg.x, 1.0f, 1e-5f);
 }
 
-TEST(NormalMaps, BumpsHaveTheRequestedSlopeSpread) {
-  const NormalMap m = generate_bumps(128, 0.3f, 64, 12, 5);
-  double sx = 0, sy = 0;
-  for (const auto& n : m.normals) {
-    sx += (n.x / n.z) * (n.x / n.z);
-    sy += (n.y / n.z) * (n.y / n.z);
-  }
-  // Slope variance over both axes = alpha^2 (Beckmann convention), within sampling error.
-  EXPECT_NEAR((sx + sy) / static_cast<double>(m.normals.size()), 0.09, 0.01);
-}
-
 TEST(SceneParser, APathFrameAtTheTargetIsRejectedLikeAStaticCameraThere) {
   // A static camera at its target is rejected; so is a path that reaches it (it rendered black).
   expect_error(TestScene::minimal().camera({0, 1, 4}, {0, 1, 4}, 40).toml(), {"target", "equals the position"});

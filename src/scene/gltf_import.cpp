@@ -165,19 +165,6 @@ void require_count(const ImportContext& c, const std::vector<Vec>& values, std::
            " elements; allowed: " + std::to_string(positions) + ", the POSITION count");
 }
 
-/// Smooth vertex normals (area-weighted) for primitives that come without them.
-void compute_normals(Mesh& m) {
-  m.normals.assign(m.positions.size(), glm::vec3(0.0f));
-  for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3) {
-    const auto a = m.indices[t], b = m.indices[t + 1], cc = m.indices[t + 2];
-    const glm::vec3 n = glm::cross(m.positions[b] - m.positions[a], m.positions[cc] - m.positions[a]);
-    m.normals[a] += n;
-    m.normals[b] += n;
-    m.normals[cc] += n;
-  }
-  for (auto& n : m.normals) n = glm::dot(n, n) > 0 ? glm::normalize(n) : glm::vec3(0, 1, 0);
-}
-
 /// One triangle primitive in glintlab's conventions (uv v up, tangent frame along +u and +v).
 Mesh import_primitive(const ImportContext& c, const tinygltf::Primitive& prim, const std::string& where) {
   auto pos_it = prim.attributes.find("POSITION");

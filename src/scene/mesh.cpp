@@ -31,6 +31,18 @@ std::string Mesh::validate() const {
   return {};
 }
 
+void compute_normals(Mesh& m) {
+  m.normals.assign(m.positions.size(), glm::vec3(0.0f));
+  for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+    const auto a = m.indices[t], b = m.indices[t + 1], c = m.indices[t + 2];
+    const glm::vec3 n = glm::cross(m.positions[b] - m.positions[a], m.positions[c] - m.positions[a]);
+    m.normals[a] += n;
+    m.normals[b] += n;
+    m.normals[c] += n;
+  }
+  for (auto& n : m.normals) n = glm::dot(n, n) > 0 ? glm::normalize(n) : glm::vec3(0, 1, 0);
+}
+
 void compute_tangents(Mesh& mesh) {
   const auto n = mesh.positions.size();
   std::vector<glm::vec3> tan(n, glm::vec3(0.0f)), bitan(n, glm::vec3(0.0f));

@@ -24,6 +24,8 @@ struct Mesh {
   [[nodiscard]] std::string validate() const;
 };
 
+/// Fills `normals` with smooth, area-weighted vertex normals (for meshes that come without them).
+void compute_normals(Mesh& mesh);
 /// Fills `tangents` from uv gradients (per-vertex accumulation, Gram-Schmidt against the normal).
 void compute_tangents(Mesh& mesh);
 

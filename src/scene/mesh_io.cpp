@@ -18,19 +18,6 @@ namespace glintlab {
 
 namespace {
 
-/// Smooth vertex normals (area-weighted) for meshes that come without them.
-void compute_normals(Mesh& m) {
-  m.normals.assign(m.positions.size(), glm::vec3(0.0f));
-  for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3) {
-    const auto a = m.indices[t], b = m.indices[t + 1], c = m.indices[t + 2];
-    const glm::vec3 n = glm::cross(m.positions[b] - m.positions[a], m.positions[c] - m.positions[a]);
-    m.normals[a] += n;
-    m.normals[b] += n;
-    m.normals[c] += n;
-  }
-  for (auto& n : m.normals) n = glm::dot(n, n) > 0 ? glm::normalize(n) : glm::vec3(0, 1, 0);
-}
-
 /// A whole glTF file as one mesh: every primitive in the file's world (its node's transform
 /// applied; a mirroring one flips the tangent frame's handedness).
 Mesh flatten_gltf(const std::filesystem::path& path) {

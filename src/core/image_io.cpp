@@ -21,6 +21,16 @@ namespace {
 std::string channel_name(const std::string& layer, char c) {
   return layer.empty() ? std::string(1, c) : layer + "." + c;
 }
+
+// A header's size, before anything is allocated for it: a few bytes can claim 60000x60000.
+void check_image_size(const std::filesystem::path& path, std::int64_t width, std::int64_t height) {
+  if (width >= 1 && height >= 1 && width <= kMaxImageSide && height <= kMaxImageSide &&
+      width * height <= kMaxImagePixels)
+    return;
+  throw InputError(path.string() + ": image size " + std::to_string(width) + "x" + std::to_string(height) +
+                   " is not allowed; allowed: 1 to " + std::to_string(kMaxImageSide) + " pixels per side, " +
+                   std::to_string(kMaxImagePixels) + " pixels (64 Mpixels) in all");
+}
 }  // namespace
 
 void write_exr(const std::filesystem::path& path, const std::vector<ImageLayer>& layers) {
@@ -54,6 +64,7 @@ Image read_exr(const std::filesystem::path& path, const std::string& layer) {
   try {
     Imf::InputFile in(path.c_str());
     const auto dw = in.header().dataWindow();
+    check_image_size(path, std::int64_t{dw.max.x} - dw.min.x + 1, std::int64_t{dw.max.y} - dw.min.y + 1);
     const int w = dw.max.x - dw.min.x + 1;
     const int h = dw.max.y - dw.min.y + 1;
     Image img(w, h);
@@ -92,6 +103,7 @@ void write_png(const std::filesystem::path& path, const Image& img) {
 
 Image read_ldr_image(const std::filesystem::path& path) {
   int w = 0, h = 0, channels = 0;
+  if (stbi_info(path.c_str(), &w, &h, &channels)) check_image_size(path, w, h);
   const bool is16 = stbi_is_16_bit(path.c_str());
   void* data = is16 ? static_cast<void*>(stbi_load_16(path.c_str(), &w, &h, &channels, 3))
                     : static_cast<void*>(stbi_load(path.c_str(), &w, &h, &channels, 3));

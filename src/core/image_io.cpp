@@ -11,9 +11,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <optional>
+#include <utility>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/exr_header_check.hpp"
 
 namespace glintlab {
 
@@ -22,7 +27,21 @@ std::string channel_name(const std::string& layer, char c) {
   return layer.empty() ? std::string(1, c) : layer + "." + c;
 }
 
-// A header's size, before anything is allocated for it: a few bytes can claim 60000x60000.
+// A PNG's size from its IHDR (stb_image refuses one over 2^30 bytes as "too large" without it).
+std::optional<std::pair<std::int64_t, std::int64_t>> png_header_size(const std::filesystem::path& path) {
+  unsigned char b[24] = {};
+  std::ifstream in(path, std::ios::binary);
+  if (!in.read(reinterpret_cast<char*>(b), sizeof b) || std::memcmp(b, "\x89PNG\r\n\x1a\n", 8) != 0 ||
+      std::memcmp(b + 12, "IHDR", 4) != 0)
+    return std::nullopt;
+  auto be32 = [&](int at) {
+    return std::int64_t{b[at]} << 24 | std::int64_t{b[at + 1]} << 16 | std::int64_t{b[at + 2]} << 8 | b[at + 3];
+  };
+  return std::pair{be32(16), be32(20)};
+}
+
+}  // namespace
+
 void check_image_size(const std::filesystem::path& path, std::int64_t width, std::int64_t height) {
   if (width >= 1 && height >= 1 && width <= kMaxImageSide && height <= kMaxImageSide &&
       width * height <= kMaxImagePixels)
@@ -31,7 +50,6 @@ void check_image_size(const std::filesystem::path& path, std::int64_t width, std
                    " is not allowed; allowed: 1 to " + std::to_string(kMaxImageSide) + " pixels per side, " +
                    std::to_string(kMaxImagePixels) + " pixels (64 Mpixels) in all");
 }
-}  // namespace
 
 void write_exr(const std::filesystem::path& path, const std::vector<ImageLayer>& layers) {
   if (layers.empty()) throw RuntimeFailure(path.string() + ": nothing to write");
@@ -61,6 +79,7 @@ void write_exr(const std::filesystem::path& path, const std::vector<ImageLayer>&
 }
 
 Image read_exr(const std::filesystem::path& path, const std::string& layer) {
+  check_exr_header(path);  // before OpenEXR allocates what the header claims
   try {
     Imf::InputFile in(path.c_str());
     const auto dw = in.header().dataWindow();
@@ -103,14 +122,19 @@ void write_png(const std::filesystem::path& path, const Image& img) {
 
 Image read_ldr_image(const std::filesystem::path& path) {
   int w = 0, h = 0, channels = 0;
-  if (stbi_info(path.c_str(), &w, &h, &channels)) check_image_size(path, w, h);
+  if (stbi_info(path.c_str(), &w, &h, &channels)) {
+    check_image_size(path, w, h);
+  } else if (const auto size = png_header_size(path)) {
+    check_image_size(path, size->first, size->second);
+  }
   const bool is16 = stbi_is_16_bit(path.c_str());
   void* data = is16 ? static_cast<void*>(stbi_load_16(path.c_str(), &w, &h, &channels, 3))
                     : static_cast<void*>(stbi_load(path.c_str(), &w, &h, &channels, 3));
   if (!data) {
     const char* why = stbi_failure_reason();
     throw InputError(path.string() + ": cannot read image (" + (why ? why : "unknown error") +
-                     "); allowed: PNG, JPEG, TGA or BMP, 8 or 16 bits per channel");
+                     "); allowed: PNG, JPEG, TGA or BMP, 8 or 16 bits per channel, up to " +
+                     std::to_string(kMaxImageSide) + " pixels per side");
   }
   Image img(w, h);
   const float scale = is16 ? 1.0f / 65535.0f : 1.0f / 255.0f;

@@ -1,5 +1,6 @@
 #pragma once
 // Image files: linear EXR (float, with named layers) and 8-bit sRGB PNG. All writes are atomic.
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -19,6 +20,9 @@ struct ImageLayer {
 /// allocated (a header can claim any size): the film limits of a scene file (docs/scene-format.md).
 inline constexpr int kMaxImageSide = 16384;
 inline constexpr long long kMaxImagePixels = 64ll << 20;
+/// Throws InputError naming the file, the size and the limits when width x height exceeds them
+/// (or is not a size at all: below 1).
+void check_image_size(const std::filesystem::path& path, std::int64_t width, std::int64_t height);
 
 void write_exr(const std::filesystem::path& path, const std::vector<ImageLayer>& layers);
 /// Reads one layer ("" = main RGB). Throws InputError naming the file if it is missing or broken,

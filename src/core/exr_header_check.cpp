@@ -24,6 +24,20 @@ std::optional<std::int64_t> lines_per_chunk(std::uint8_t compression) {
   return lines[compression];
 }
 
+// OpenEXR reads a value of a known type by its type, not by the size the header declares: the
+// declared size must then be that size, or the reading here and OpenEXR's would part ways (and a
+// later attribute's size seen by OpenEXR would go unchecked). Types whose size varies: nullopt.
+std::optional<std::int64_t> fixed_size(const std::string& type) {
+  static const std::pair<const char*, std::int64_t> sizes[] = {
+      {"box2i", 16}, {"box2f", 16}, {"chromaticities", 32}, {"compression", 1}, {"double", 8},
+      {"envmap", 1}, {"float", 4}, {"int", 4}, {"keycode", 28}, {"lineOrder", 1}, {"m33f", 36},
+      {"m33d", 72}, {"m44f", 64}, {"m44d", 128}, {"rational", 8}, {"tiledesc", 9}, {"timecode", 8},
+      {"v2i", 8}, {"v2f", 8}, {"v2d", 16}, {"v3i", 12}, {"v3f", 12}, {"v3d", 24}, {"deepImageState", 1}};
+  for (const auto& [name, size] : sizes)
+    if (type == name) return size;
+  return std::nullopt;
+}
+
 class HeaderReader {
  public:
   HeaderReader(const std::filesystem::path& path, std::ifstream& in, std::uintmax_t file_size)
@@ -92,6 +106,37 @@ bool read_header(HeaderReader& r, bool multipart, const std::filesystem::path& p
       r.fail("header attribute '" + *name + "' (" + *type + ") claims " + std::to_string(*size) +
              " bytes; allowed: at most the " + std::to_string(r.remaining()) + " bytes after it");
     const auto end = r.stream().tellg() + std::streamoff{*size};
+    std::int64_t holds = *size;  // what OpenEXR will read
+    if (const auto fixed = fixed_size(*type)) {
+      holds = *fixed;
+    } else if (*type == "chlist") {  // entries (a name, 16 bytes) up to an empty name
+      holds = 0;
+      for (;;) {
+        const auto channel = r.string();
+        if (!channel) return false;
+        holds += static_cast<std::int64_t>(channel->size()) + 1;
+        if (channel->empty()) break;
+        holds += 16;
+        r.stream().seekg(16, std::ios::cur);
+      }
+    } else if (*type == "preview") {  // width, height, then 4 bytes per pixel
+      const auto w = r.value<std::uint32_t>(), h = r.value<std::uint32_t>();
+      if (!w || !h) return false;
+      holds = 8 + 4 * std::int64_t{*w} * *h;
+    } else if (*type == "stringvector") {  // strings, each an int length and its characters
+      for (std::int64_t read = 0; read < *size;) {
+        const auto length = r.value<std::int32_t>();
+        if (!length) return false;
+        if (*length < 0 || *length > *size - read - 4)
+          r.fail("header attribute '" + *name + "' (stringvector) holds a string of " + std::to_string(*length) +
+                 " bytes; allowed: at most the " + std::to_string(*size - read - 4) + " bytes left of its value");
+        read += 4 + *length;
+        r.stream().seekg(*length, std::ios::cur);
+      }
+    }
+    if (holds != *size)
+      r.fail("header attribute '" + *name + "' (" + *type + ") declares " + std::to_string(*size) +
+             " bytes but holds " + std::to_string(holds) + "; allowed: the size of its value");
     if (*name == "dataWindow" && *type == "box2i" && *size == 16) {
       const auto x0 = r.value<std::int32_t>(), y0 = r.value<std::int32_t>();
       const auto x1 = r.value<std::int32_t>(), y1 = r.value<std::int32_t>();

@@ -11,33 +11,17 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
-#include <fstream>
-#include <optional>
-#include <utility>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/exr_header_check.hpp"
+#include "core/png_header_check.hpp"
 
 namespace glintlab {
 
 namespace {
 std::string channel_name(const std::string& layer, char c) {
   return layer.empty() ? std::string(1, c) : layer + "." + c;
-}
-
-// A PNG's size from its IHDR (stb_image refuses one over 2^30 bytes as "too large" without it).
-std::optional<std::pair<std::int64_t, std::int64_t>> png_header_size(const std::filesystem::path& path) {
-  unsigned char b[24] = {};
-  std::ifstream in(path, std::ios::binary);
-  if (!in.read(reinterpret_cast<char*>(b), sizeof b) || std::memcmp(b, "\x89PNG\r\n\x1a\n", 8) != 0 ||
-      std::memcmp(b + 12, "IHDR", 4) != 0)
-    return std::nullopt;
-  auto be32 = [&](int at) {
-    return std::int64_t{b[at]} << 24 | std::int64_t{b[at + 1]} << 16 | std::int64_t{b[at + 2]} << 8 | b[at + 3];
-  };
-  return std::pair{be32(16), be32(20)};
 }
 
 }  // namespace
@@ -122,10 +106,11 @@ void write_png(const std::filesystem::path& path, const Image& img) {
 
 Image read_ldr_image(const std::filesystem::path& path) {
   int w = 0, h = 0, channels = 0;
-  if (stbi_info(path.c_str(), &w, &h, &channels)) {
+  // Sizes before decoding: stb_image refuses one over 2^30 bytes only as "too large", without it.
+  if (const auto png_size = check_png_header(path)) {
+    check_image_size(path, png_size->first, png_size->second);
+  } else if (stbi_info(path.c_str(), &w, &h, &channels)) {
     check_image_size(path, w, h);
-  } else if (const auto size = png_header_size(path)) {
-    check_image_size(path, size->first, size->second);
   }
   const bool is16 = stbi_is_16_bit(path.c_str());
   void* data = is16 ? static_cast<void*>(stbi_load_16(path.c_str(), &w, &h, &channels, 3))

@@ -115,3 +115,48 @@ TEST(HostileImages, PngClaimingHugeSizeIsRefusedBeforeDecoding) {
   EXPECT_NE(message.find("60000x60000"), std::string::npos) << message;
   EXPECT_NE(message.find("16384"), std::string::npos) << message;
 }
+
+TEST(HostileImages, PngChunkLongerThanTheFileIsRefused) {
+  // 87 bytes whose IDAT declared 1459617804 bytes: stb_image allocated that before reading.
+  const test::ScratchDirectory dir;
+  Bytes png;
+  png.u8(0x89).text("PNG\r\n\x1a\n", false);
+  png.be32(13).text("IHDR", false).be32(2).be32(2).u8(8).u8(2).u8(0).u8(0).u8(0).be32(0);
+  png.be32(0x5700000c).text("IDAT", false).be32(0x789c6360).be32(0);
+  png.save(dir / "chunk.png");
+  const auto message = message_of([&] { (void)read_ldr_image(dir / "chunk.png"); });
+  EXPECT_NE(message.find("chunk.png"), std::string::npos) << message;
+  EXPECT_NE(message.find("'IDAT'"), std::string::npos) << message;
+  EXPECT_NE(message.find("1459617804"), std::string::npos) << message;
+}
+
+TEST(HostileImages, SmallPngStillReads) {
+  const test::ScratchDirectory dir;
+  const Image image(3, 2, glm::vec3(0.0f, 0.5f, 1.0f));
+  write_png(dir / "ok.png", image);
+  const Image read = read_ldr_image(dir / "ok.png");
+  ASSERT_EQ(read.width(), 3);
+  EXPECT_NEAR(read.at(2, 1).y, 128.0f / 255.0f, 1e-6f);
+}
+
+TEST(HostileImages, ExrAttributeWhoseValueDisagreesWithItsSizeIsRefused) {
+  // OpenEXR reads a channel list up to its empty name whatever size the header declares; 213
+  // bytes declared 51 for one holding 55, and the next attribute, as OpenEXR read on, claimed
+  // 1.7 GB that it allocated.
+  const test::ScratchDirectory dir;
+  Bytes b;
+  b.i32(20000630).i32(2).text("channels").text("chlist").i32(51);
+  for (const char* c : {"B", "G", "R"}) b.text(c).i32(2).u8(0).u8(0).u8(0).u8(0).i32(1).i32(1);
+  b.u8(0).text("junk").text("opaque").i32(0x696c6863).u8(0);
+  b.save(dir / "chlist.exr");
+  const auto message = message_of([&] { (void)read_exr(dir / "chlist.exr"); });
+  EXPECT_NE(message.find("chlist.exr"), std::string::npos) << message;
+  EXPECT_NE(message.find("'channels' (chlist) declares 51 bytes but holds 55"), std::string::npos) << message;
+}
+
+TEST(HostileImages, ExrPreviewLargerThanTheFileIsRefused) {
+  const test::ScratchDirectory dir;
+  exr_header(2, 2).text("preview").text("preview").i32(8).i32(60000).i32(60000).u8(0).save(dir / "preview.exr");
+  const auto message = message_of([&] { (void)read_exr(dir / "preview.exr"); });
+  EXPECT_NE(message.find("'preview' (preview) declares 8 bytes but holds 14400000008"), std::string::npos) << message;
+}

@@ -11,6 +11,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
+#include <string_view>
+#include <utility>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
@@ -22,6 +25,21 @@ namespace glintlab {
 namespace {
 std::string channel_name(const std::string& layer, char c) {
   return layer.empty() ? std::string(1, c) : layer + "." + c;
+}
+
+
+// stb_image reads more formats than glintlab documents; the others (PSD, GIF, HDR, PIC, PNM) are
+// refused by their magic before stb sees them: fewer decoders fed a user's bytes (stb's PNM
+// header parser overflows a signed int on long numbers).
+void require_documented_format(const std::filesystem::path& path) {
+  char magic[4] = {};
+  std::ifstream(path, std::ios::binary).read(magic, sizeof magic);
+  const std::pair<std::string_view, const char*> others[] = {
+      {"8BPS", "PSD"}, {"GIF8", "GIF"}, {"#?", "Radiance HDR"}, {"\x53\x80\xf6\x34", "Softimage PIC"},
+      {"P5", "PGM"}, {"P6", "PPM"}};
+  for (const auto& [prefix, format] : others)
+    if (std::string_view(magic, sizeof magic).substr(0, prefix.size()) == prefix)
+      throw InputError(path.string() + ": a " + format + " image; allowed: PNG, JPEG, TGA or BMP");
 }
 
 }  // namespace
@@ -106,6 +124,7 @@ void write_png(const std::filesystem::path& path, const Image& img) {
 
 Image read_ldr_image(const std::filesystem::path& path) {
   int w = 0, h = 0, channels = 0;
+  require_documented_format(path);
   // Sizes before decoding: stb_image refuses one over 2^30 bytes only as "too large", without it.
   if (const auto png_size = check_png_header(path)) {
     check_image_size(path, png_size->first, png_size->second);

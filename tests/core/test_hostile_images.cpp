@@ -160,3 +160,18 @@ TEST(HostileImages, ExrPreviewLargerThanTheFileIsRefused) {
   const auto message = message_of([&] { (void)read_exr(dir / "preview.exr"); });
   EXPECT_NE(message.find("'preview' (preview) declares 8 bytes but holds 14400000008"), std::string::npos) << message;
 }
+
+TEST(HostileImages, UndocumentedImageFormatsAreRefusedByTheirMagic) {
+  // A PPM header whose width overflowed stb_image's int parser (fuzz_png); PNG, JPEG, TGA and
+  // BMP are what docs/scene-format.md allows.
+  const test::ScratchDirectory dir;
+  Bytes ppm;
+  ppm.text("P6\n2222222222222222222222 1\n255\n", false).u8(0);
+  ppm.save(dir / "image.ppm");
+  const auto message = message_of([&] { (void)read_ldr_image(dir / "image.ppm"); });
+  EXPECT_NE(message.find("image.ppm: a PPM image; allowed: PNG, JPEG, TGA or BMP"), std::string::npos) << message;
+  Bytes gif;
+  gif.text("GIF89a", false).u8(1).u8(0).u8(1).u8(0).u8(0).u8(0).u8(0);
+  gif.save(dir / "image.gif");
+  EXPECT_NE(message_of([&] { (void)read_ldr_image(dir / "image.gif"); }).find("a GIF image"), std::string::npos);
+}

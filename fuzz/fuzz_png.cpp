@@ -8,14 +8,29 @@
 // them before decoding).
 #include <stb/stb_image.h>
 
+#include <string_view>
+
 #include "core/error.hpp"
 #include "core/image_io.hpp"
 #include "fuzz_input.hpp"
 #include "scene/normal_map.hpp"
 
+namespace {
+
+// The formats read_ldr_image refuses by their magic (PSD, GIF, HDR, PIC, PNM) never reach stb's
+// decoders, so they must not reach stbi_info here either.
+bool refused_format(const std::uint8_t* data, std::size_t size) {
+  const std::string_view bytes(reinterpret_cast<const char*>(data), size);
+  for (std::string_view magic : {"8BPS", "GIF8", "#?", "\x53\x80\xf6\x34", "P5", "P6"})
+    if (bytes.substr(0, magic.size()) == magic) return true;
+  return false;
+}
+
+}  // namespace
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   int width = 0, height = 0, channels = 0;
-  if (stbi_info_from_memory(data, static_cast<int>(size), &width, &height, &channels) &&
+  if (!refused_format(data, size) && stbi_info_from_memory(data, static_cast<int>(size), &width, &height, &channels) &&
       std::int64_t{width} * height > (1 << 20) && width <= glintlab::kMaxImageSide &&
       height <= glintlab::kMaxImageSide && std::int64_t{width} * height <= glintlab::kMaxImagePixels)
     return -1;  // not kept in the corpus

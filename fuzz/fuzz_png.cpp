@@ -31,8 +31,8 @@ bool refused_format(const std::uint8_t* data, std::size_t size) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   int width = 0, height = 0, channels = 0;
   if (!refused_format(data, size) && stbi_info_from_memory(data, static_cast<int>(size), &width, &height, &channels) &&
-      std::int64_t{width} * height > (1 << 20) && width <= glintlab::kMaxImageSide &&
-      height <= glintlab::kMaxImageSide && std::int64_t{width} * height <= glintlab::kMaxImagePixels)
+      width <= glintlab::kMaxImageSide && height <= glintlab::kMaxImageSide &&
+      std::int64_t{width} * height > (1 << 20) && std::int64_t{width} * height <= glintlab::kMaxImagePixels)
     return -1;  // not kept in the corpus
   const auto path = glintlab::fuzz::write_input(data, size, "input.png");
   try {

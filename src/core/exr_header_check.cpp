@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -122,7 +123,9 @@ bool read_header(HeaderReader& r, bool multipart, const std::filesystem::path& p
     } else if (*type == "preview") {  // width, height, then 4 bytes per pixel
       const auto w = r.value<std::uint32_t>(), h = r.value<std::uint32_t>();
       if (!w || !h) return false;
-      holds = 8 + 4 * std::int64_t{*w} * *h;
+      const std::uint64_t pixels = std::uint64_t{*w} * *h;  // cannot overflow; 4 * pixels can
+      holds = pixels > (std::uint64_t{1} << 40) ? std::numeric_limits<std::int64_t>::max()
+                                                 : 8 + 4 * static_cast<std::int64_t>(pixels);
     } else if (*type == "stringvector") {  // strings, each an int length and its characters
       for (std::int64_t read = 0; read < *size;) {
         const auto length = r.value<std::int32_t>();

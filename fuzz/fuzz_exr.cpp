@@ -22,7 +22,8 @@ bool large_but_allowed(const std::uint8_t* data, std::size_t size) {
     std::int32_t box[4];
     std::memcpy(box, data + at + attribute.size(), sizeof box);
     const std::int64_t width = std::int64_t{box[2]} - box[0] + 1, height = std::int64_t{box[3]} - box[1] + 1;
-    if (width <= glintlab::kMaxImageSide && height <= glintlab::kMaxImageSide && width * height > (1 << 20) &&
+    if (width >= 1 && height >= 1 && width <= glintlab::kMaxImageSide && height <= glintlab::kMaxImageSide &&
+        width * height > (1 << 20) &&
         width * height <= glintlab::kMaxImagePixels)
       return true;
   }

@@ -18,6 +18,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/exr_header_check.hpp"
+#include "core/jpeg_header_check.hpp"
 #include "core/png_header_check.hpp"
 
 namespace glintlab {
@@ -125,6 +126,7 @@ void write_png(const std::filesystem::path& path, const Image& img) {
 Image read_ldr_image(const std::filesystem::path& path) {
   int w = 0, h = 0, channels = 0;
   require_documented_format(path);
+  check_jpeg_header(path);
   // Sizes before decoding: stb_image refuses one over 2^30 bytes only as "too large", without it.
   if (const auto png_size = check_png_header(path)) {
     check_image_size(path, png_size->first, png_size->second);

@@ -175,3 +175,19 @@ TEST(HostileImages, UndocumentedImageFormatsAreRefusedByTheirMagic) {
   gif.save(dir / "image.gif");
   EXPECT_NE(message_of([&] { (void)read_ldr_image(dir / "image.gif"); }).find("a GIF image"), std::string::npos);
 }
+
+TEST(HostileImages, JpegHuffmanTableWithTooManyCodesIsRefused) {
+  // fuzz_png: a DHT segment whose 16 counts sum past 256 made stb_image 2.27 write past its
+  // Huffman table (UBSan: index 257 out of bounds).
+  const test::ScratchDirectory dir;
+  Bytes jpeg;
+  jpeg.u8(0xFF).u8(0xD8).u8(0xFF).u8(0xC4).u8(0x00).u8(2 + 17);
+  jpeg.u8(0x00);
+  for (int i = 0; i < 16; ++i) jpeg.u8(0xC4);  // 16 x 196 codes
+  jpeg.u8(0xFF).u8(0xD9);
+  jpeg.save(dir / "huffman.jpg");
+  const auto message = message_of([&] { (void)read_ldr_image(dir / "huffman.jpg"); });
+  EXPECT_NE(message.find("huffman.jpg: JPEG Huffman table declares 3136 codes; allowed: at most 256"),
+            std::string::npos)
+      << message;
+}

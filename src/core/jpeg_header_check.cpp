@@ -11,18 +11,22 @@ namespace glintlab {
 
 namespace {
 
-// The segments as stb_image walks them: a marker (0xFF, fill bytes, a code), a 16-bit length for
-// all but the standalone markers, and after a scan header its entropy-coded data up to the next
-// marker (0xFF followed by neither 0x00, a restart code, nor another fill byte).
+// The segments as stb_image walks them: a marker (0xFF, fill bytes, a code; stb_image skips any
+// other byte where a marker belongs), a 16-bit length for all but the standalone markers, and
+// after a scan header its entropy-coded data up to the next marker (0xFF followed by neither
+// 0x00, a restart code, nor another fill byte).
 class JpegWalker {
  public:
   JpegWalker(const std::filesystem::path& path, std::vector<unsigned char> bytes)
       : path_(path), bytes_(std::move(bytes)) {}
 
-  void check() const {
-    std::size_t at = 2;  // after the SOI marker
+  // From after the SOI marker at `at`.
+  void check(std::size_t at) const {
     while (at + 1 < bytes_.size()) {
-      if (bytes_[at] != 0xFF) return;  // not a marker where one belongs: stb_image will say so
+      if (bytes_[at] != 0xFF) {  // not a marker where one belongs: stb_image skips to the next 0xFF
+        ++at;
+        continue;
+      }
       while (at + 1 < bytes_.size() && bytes_[at + 1] == 0xFF) ++at;
       const unsigned char marker = byte(at + 1);
       at += 2;
@@ -70,8 +74,12 @@ class JpegWalker {
 void check_jpeg_header(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (bytes.size() < 3 || bytes[0] != 0xFF || bytes[1] != 0xD8 || bytes[2] != 0xFF) return;
-  JpegWalker(path, std::move(bytes)).check();
+  // SOI: 0xFF, any fill bytes 0xFF, 0xD8.
+  std::size_t at = 0;
+  if (bytes.empty() || bytes[0] != 0xFF) return;
+  while (at + 1 < bytes.size() && bytes[at + 1] == 0xFF) ++at;
+  if (at + 1 >= bytes.size() || bytes[at + 1] != 0xD8) return;
+  JpegWalker(path, std::move(bytes)).check(at + 2);
 }
 
 }  // namespace glintlab

@@ -191,3 +191,14 @@ TEST(HostileImages, JpegHuffmanTableWithTooManyCodesIsRefused) {
             std::string::npos)
       << message;
 }
+
+TEST(HostileImages, JpegHuffmanTableAfterFillBytesIsRefused) {
+  // The same table behind fill bytes before SOI and a stray byte before DHT, which stb_image skips.
+  const test::ScratchDirectory dir;
+  Bytes jpeg;
+  jpeg.u8(0xFF).u8(0xFF).u8(0xD8).u8(0x42).u8(0xFF).u8(0xC4).u8(0x01).u8(0x01);
+  for (int i = 0; i < 8; ++i) jpeg.u8(0xC4);
+  jpeg.save(dir / "fill.jpg");
+  EXPECT_NE(message_of([&] { (void)read_ldr_image(dir / "fill.jpg"); }).find("JPEG Huffman table declares"),
+            std::string::npos);
+}

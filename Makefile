@@ -1,11 +1,15 @@
 # glintlab: the two set-up commands (README) and a few conveniences.
 #   make demo   install missing Debian packages, build (Release), compare every method on the default scene
-#   make test   install missing Debian packages, build (Release), run the whole suite through ctest
+#   make test   install missing Debian packages, build (Release and the clang fuzz targets), run the whole
+#               suite through ctest, then the fuzz targets' smoke pass (docs/fuzzing.md)
+#   make fuzz   run every fuzz target for FUZZ_SECONDS each (default 600; docs/fuzzing.md)
 #   make bench-tables  time generating and loading each precomputed table (Google Benchmark; not in test)
 #   make bench-normal-maps  time the procedural normal-map generators at their largest inputs (the same)
-.PHONY: all deps build demo test bench bench-tables bench-normal-maps clean
+.PHONY: all deps build build-fuzz demo test fuzz bench bench-tables bench-normal-maps clean
 
 BUILD := build/release
+FUZZ_BUILD := build/fuzz
+FUZZ_SECONDS ?= 600
 JOBS ?= $(shell nproc)
 
 all: build
@@ -17,11 +21,21 @@ build: deps
 	cmake --preset release >/dev/null
 	cmake --build $(BUILD) -j $(JOBS)
 
+# The fuzz targets need clang with libFuzzer (installed by deps); without clang they are skipped.
+build-fuzz: deps
+	@if command -v clang++ >/dev/null; then \
+	  cmake --preset fuzz >/dev/null && cmake --build $(FUZZ_BUILD) -j $(JOBS); \
+	else echo "glintlab: clang++ not found: fuzz targets skipped"; fi
+
 demo: build
 	$(BUILD)/glintlab compare --scene builtin:spheres --methods all -o out/demo
 
-test: build
+test: build build-fuzz
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+	@if [ -f $(FUZZ_BUILD)/CTestTestfile.cmake ]; then cd $(FUZZ_BUILD) && ctest --output-on-failure -j $(JOBS); fi
+
+fuzz: build-fuzz
+	tools/fuzz.sh all $(FUZZ_SECONDS)
 
 bench: build
 	$(BUILD)/glintlab bench --scene builtin:spheres --methods all --width 1920 --height 1080

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages glintlab needs to build, test and run, if any are missing.
-# Usage: tools/install-deps.sh          what building, testing and running need (ffmpeg: animate's MP4s)
+# Usage: tools/install-deps.sh          what building, testing and running need (ffmpeg: animate's MP4s;
+#                                       clang and its libFuzzer runtime: the fuzz targets, docs/fuzzing.md)
 #        tools/install-deps.sh results  also what tools/make-results.sh uses (jq)
 # (as root, or with sudo available)
 set -euo pipefail
@@ -11,6 +12,7 @@ packages=(
   libglm-dev libopenexr-dev libstb-dev libtinygltf-dev libtinyobjloader-dev
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  clang libclang-rt-dev
   ffmpeg
 )
 if [[ "${1:-}" == results ]]; then packages+=(jq); fi

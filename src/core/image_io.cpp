@@ -11,9 +11,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
+#include <string_view>
+#include <utility>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/exr_header_check.hpp"
+#include "core/jpeg_header_check.hpp"
+#include "core/png_header_check.hpp"
 
 namespace glintlab {
 
@@ -21,7 +27,32 @@ namespace {
 std::string channel_name(const std::string& layer, char c) {
   return layer.empty() ? std::string(1, c) : layer + "." + c;
 }
+
+
+// stb_image reads more formats than glintlab documents; the others (PSD, GIF, HDR, PIC, PNM) are
+// refused by their magic before stb sees them: fewer decoders fed a user's bytes (stb's PNM
+// header parser overflows a signed int on long numbers).
+void require_documented_format(const std::filesystem::path& path) {
+  char magic[4] = {};
+  std::ifstream(path, std::ios::binary).read(magic, sizeof magic);
+  const std::pair<std::string_view, const char*> others[] = {
+      {"8BPS", "PSD"}, {"GIF8", "GIF"}, {"#?", "Radiance HDR"}, {"\x53\x80\xf6\x34", "Softimage PIC"},
+      {"P5", "PGM"}, {"P6", "PPM"}};
+  for (const auto& [prefix, format] : others)
+    if (std::string_view(magic, sizeof magic).substr(0, prefix.size()) == prefix)
+      throw InputError(path.string() + ": a " + format + " image; allowed: PNG, JPEG, TGA or BMP");
+}
+
 }  // namespace
+
+void check_image_size(const std::filesystem::path& path, std::int64_t width, std::int64_t height) {
+  if (width >= 1 && height >= 1 && width <= kMaxImageSide && height <= kMaxImageSide &&
+      width * height <= kMaxImagePixels)
+    return;
+  throw InputError(path.string() + ": image size " + std::to_string(width) + "x" + std::to_string(height) +
+                   " is not allowed; allowed: 1 to " + std::to_string(kMaxImageSide) + " pixels per side, " +
+                   std::to_string(kMaxImagePixels) + " pixels (64 Mpixels) in all");
+}
 
 void write_exr(const std::filesystem::path& path, const std::vector<ImageLayer>& layers) {
   if (layers.empty()) throw RuntimeFailure(path.string() + ": nothing to write");
@@ -51,9 +82,11 @@ void write_exr(const std::filesystem::path& path, const std::vector<ImageLayer>&
 }
 
 Image read_exr(const std::filesystem::path& path, const std::string& layer) {
+  check_exr_header(path);  // before OpenEXR allocates what the header claims
   try {
     Imf::InputFile in(path.c_str());
     const auto dw = in.header().dataWindow();
+    check_image_size(path, std::int64_t{dw.max.x} - dw.min.x + 1, std::int64_t{dw.max.y} - dw.min.y + 1);
     const int w = dw.max.x - dw.min.x + 1;
     const int h = dw.max.y - dw.min.y + 1;
     Image img(w, h);
@@ -92,13 +125,22 @@ void write_png(const std::filesystem::path& path, const Image& img) {
 
 Image read_ldr_image(const std::filesystem::path& path) {
   int w = 0, h = 0, channels = 0;
+  require_documented_format(path);
+  check_jpeg_header(path);
+  // Sizes before decoding: stb_image refuses one over 2^30 bytes only as "too large", without it.
+  if (const auto png_size = check_png_header(path)) {
+    check_image_size(path, png_size->first, png_size->second);
+  } else if (stbi_info(path.c_str(), &w, &h, &channels)) {
+    check_image_size(path, w, h);
+  }
   const bool is16 = stbi_is_16_bit(path.c_str());
   void* data = is16 ? static_cast<void*>(stbi_load_16(path.c_str(), &w, &h, &channels, 3))
                     : static_cast<void*>(stbi_load(path.c_str(), &w, &h, &channels, 3));
   if (!data) {
     const char* why = stbi_failure_reason();
     throw InputError(path.string() + ": cannot read image (" + (why ? why : "unknown error") +
-                     "); allowed: PNG, JPEG, TGA or BMP, 8 or 16 bits per channel");
+                     "); allowed: PNG, JPEG, TGA or BMP, 8 or 16 bits per channel, up to " +
+                     std::to_string(kMaxImageSide) + " pixels per side");
   }
   Image img(w, h);
   const float scale = is16 ? 1.0f / 65535.0f : 1.0f / 255.0f;

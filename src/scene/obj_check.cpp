@@ -45,7 +45,7 @@ struct ForwardReference {
 
 class ObjChecker {
  public:
-  explicit ObjChecker(std::string file) : file_(std::move(file)) {}
+  explicit ObjChecker(const std::filesystem::path& path) : file_(path.string()), directory_(path.parent_path().string()) {}
 
   void statement(std::size_t line, std::istringstream& tokens) {
     std::string command;
@@ -61,6 +61,8 @@ class ObjChecker {
       ++count_[index(ObjList::Uv)];
     } else if (command == "f") {
       for (std::string ref; tokens >> ref && ref[0] != '#';) check_face_reference(line, ref);
+    } else if (command == "mtllib") {
+      for (std::string name; tokens >> name && name[0] != '#';) check_material_library(line, name);
     }
   }
 
@@ -82,6 +84,23 @@ class ObjChecker {
         std::ostringstream s;
         s << file_ << ':' << line << ": `" << command << "` value " << token << " is not a finite number; allowed: "
           << "numbers of magnitude at most " << std::numeric_limits<float>::max();
+        throw InputError(s.str());
+      }
+    }
+  }
+
+  // tinyobjloader reads a material library wherever it opens, to its end: /dev/zero or a FIFO never
+  // ends. It looks in the OBJ's directory (split at ':', as a search path) joined with the name.
+  void check_material_library(std::size_t line, const std::string& name) const {
+    std::istringstream directories(directory_);
+    for (std::string directory; std::getline(directories, directory, ':');) {
+      const std::filesystem::path candidate =
+          directory.empty() || directory.back() == '/' ? directory + name : directory + '/' + name;
+      std::error_code ec;
+      if (std::filesystem::exists(candidate, ec) && !std::filesystem::is_regular_file(candidate, ec)) {
+        std::ostringstream s;
+        s << file_ << ':' << line << ": `mtllib` " << name << " is " << candidate.string()
+          << ", not a regular file; allowed: a regular file or none (glintlab ignores OBJ materials)";
         throw InputError(s.str());
       }
     }
@@ -130,6 +149,7 @@ class ObjChecker {
   }
 
   std::string file_;
+  std::string directory_;
   std::size_t count_[3] = {0, 0, 0};
   std::vector<ForwardReference> forward_;
 };
@@ -139,7 +159,7 @@ class ObjChecker {
 void check_obj_statements(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string() + ": cannot read OBJ file");
-  ObjChecker checker(path.string());
+  ObjChecker checker(path);
   std::size_t line_number = 0;
   for (std::string line; std::getline(in, line);) {
     ++line_number;

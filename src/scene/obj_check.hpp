@@ -8,7 +8,8 @@ namespace glintlab {
 
 /// Throws InputError "FILE:LINE: ..." for a `v`/`vn`/`vt` value that is not a finite float, and
 /// for an `f` index that is 0 or refers past the position, normal or uv lists (positive indices
-/// against the whole file, negative ones against the lines before the face, as OBJ defines them).
+/// against the whole file, negative ones against the lines before the face, as OBJ defines them),
+/// and for an `mtllib` naming something that is not a regular file (a device or FIFO never ends).
 void check_obj_statements(const std::filesystem::path& path);
 
 }  // namespace glintlab

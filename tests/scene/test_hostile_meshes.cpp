@@ -2,6 +2,7 @@
 // file is an InputError naming the file, the line or element, the value and what is allowed,
 // instead of a crash or a silently broken mesh. Each case is a small file written by the test.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <cmath>
@@ -182,4 +183,21 @@ TEST(HostileMeshes, ATubeTooLargeToGenerateNamesItsSizeBeforeAllocating) {
   // The same points with the default segments and sides are a modest mesh.
   const std::string fine = TestScene::minimal().shape("tube", "m", {{"points", points}}).toml();
   EXPECT_EQ(parse_scene(fine, "tube.toml", ".").shapes.back().mesh->positions.size(), tube_vertex_count(5000, 16, 16));
+}
+
+// fuzz/fuzz_obj.cpp (docs/fuzzing.md): tinyobjloader read `mtllib ../../dev/zero` to no end (a
+// hang growing memory); a FIFO blocks it forever. A library that is not a regular file is exit 2.
+TEST(HostileMeshes, ObjMaterialLibraryThatIsNotARegularFileIsRejected) {
+  const ScratchDirectory dir;
+  ASSERT_EQ(mkfifo((dir / "fifo.mtl").c_str(), 0600), 0);
+  expect_mesh_error(write_file(dir, "fifo.obj", "mtllib fifo.mtl\n" + kObjLists + "f 1 2 3\n"),
+                    {":1:", "`mtllib` fifo.mtl", "not a regular file"});
+  const auto dev_zero = std::filesystem::relative("/dev/zero", dir.path()).string();
+  expect_mesh_error(write_file(dir, "zero.obj", kObjLists + "mtllib missing.mtl " + dev_zero + "\nf 1 2 3\n"),
+                    {":6:", "`mtllib` " + dev_zero, "not a regular file"});
+  std::filesystem::create_directory(dir / "directory.mtl");
+  expect_mesh_error(write_file(dir, "dir.obj", "mtllib directory.mtl\n" + kObjLists + "f 1 2 3\n"), {":1:"});
+  // A missing library is only a warning in tinyobjloader, and a regular one is read.
+  write_file(dir, "ok.mtl", "newmtl a\nKd 1 1 1\n");
+  EXPECT_EQ(load_mesh_file(write_file(dir, "ok.obj", "mtllib ok.mtl none.mtl\n" + kObjLists + "f 1 2 3\n")).indices.size(), 3u);
 }

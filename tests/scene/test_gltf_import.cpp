@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
+#include <sys/stat.h>
 
 #include "core/error.hpp"
 #include "scene/gltf_import.hpp"
@@ -304,4 +305,20 @@ TEST(GltfImport, BrokenFilesAreInputErrorsNamingTheFile) {
   EXPECT_NE(e.find("huge.gltf"), std::string::npos) << e;
   EXPECT_NE(e.find("20000x100; allowed: 1 to 16384"), std::string::npos) << "checked before decoding: " << e;
   EXPECT_NE(error_of([&] { import_gltf(dir / "missing.glb"); }).find("missing.glb"), std::string::npos);
+}
+
+TEST(GltfImport, UrisThatAreNotRegularFilesAreInputErrors) {
+  // Found with fuzz/fuzz_gltf.cpp (docs/fuzzing.md, finding 11): tinygltf's own reader took a
+  // directory's size as LLONG_MAX (std::bad_alloc) and blocked on a FIFO.
+  ScratchDirectory dir;
+  std::string json = encode_gltf_json(quad_document());
+  const auto at = json.find("data:application/octet-stream;base64,");
+  ASSERT_NE(at, std::string::npos);
+  const auto end = json.find('"', at);
+  ASSERT_EQ(mkfifo((dir / "fifo.bin").c_str(), 0600), 0);
+  for (const std::string uri : {".", "fifo.bin", "missing.bin"}) {
+    std::ofstream(dir / "m.gltf") << json.substr(0, at) + uri + json.substr(end);
+    const std::string e = error_of([&] { import_gltf(dir / "m.gltf"); });
+    EXPECT_NE(e.find("m.gltf"), std::string::npos) << uri << ": " << e;
+  }
 }

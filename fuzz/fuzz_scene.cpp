@@ -33,11 +33,13 @@ bool expensive(const toml::node& node);
 bool expensive_table(const toml::table& table) {
   // A normal-map generator defaults to resolution 512: only an explicit small one is cheap.
   if (table.contains("generator")) {
-    const auto resolution = table["resolution"].value<std::int64_t>();
+    // value_exact: toml++'s value<int64_t>() casts a float such as 1e39 to an integer before
+    // checking it fits (UB, found by this target in its own filter).
+    const auto resolution = table["resolution"].value_exact<std::int64_t>();
     if (!resolution || (*resolution > kCheapSize && *resolution <= kLargestRangeMax)) return true;
   }
   for (const auto& [key, value] : table) {
-    if (const auto n = value.value<std::int64_t>(); n && sizes_work(key.str()) && *n > kCheapSize &&
+    if (const auto n = value.value_exact<std::int64_t>(); n && sizes_work(key.str()) && *n > kCheapSize &&
                                                     *n <= kLargestRangeMax)
       return true;
     if (expensive(value)) return true;

@@ -5,6 +5,7 @@
 #include "common/delta_lights.glsl"
 #include "common/lights.glsl"
 #include "common/lobe.glsl"
+#include "common/ltc_shading.glsl"
 #include "common/surface.glsl"
 
 // dl1, dl2: conjugate semi-axes of the light's outline as seen from p, as changes of the unit
@@ -57,4 +58,18 @@ Radiance shadeLobe(Surface s, LightData L, Lobe lobe) {
   float geometry = lobeG2OverCos(lobe, wo, wi) * dot(wo, h) / max(h.z, 1e-4);
   result.specular = fresnelSchlick(s.f0, dot(wo, h)) * (mass * geometry) * radiance;
   return result;
+}
+
+// The area-light integration a lobe method chose (its compile-time parameter `area_lights`,
+// src/shading/methods/shared_params.hpp): AREA_LIGHTS_LTC integrates GGX lobes' linearly
+// transformed cosines over the light (common/ltc_shading.glsl); otherwise shadeLobe above.
+#define AREA_LIGHTS_REPRESENTATIVE_POINT 0
+#define AREA_LIGHTS_LTC 1
+Radiance shadeLobe(Surface s, LightData L, Lobe lobe, float areaLights) {
+  if (int(areaLights) == AREA_LIGHTS_LTC && lightHasExtent(L) && lobe.ndf == NDF_GGX) {
+    vec3 wo = toLocal(s, s.view);
+    if (wo.z <= 0.0) return Radiance(vec3(0.0), vec3(0.0));
+    return shadeLobeLtc(s, L, lobe, wo);
+  }
+  return shadeLobe(s, L, lobe);
 }

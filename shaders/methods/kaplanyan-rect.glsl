@@ -11,5 +11,5 @@ Radiance shadeLight(Surface s, LightData L) {
   // centre, differenced across the pixel quad.
   vec2 h = slopeHalfVector(s, lightCentreDirection(L, s.position));
   Lobe lobe = kaplanyanRectLobe(materialLobe(s), dFdxFine(h), dFdyFine(h), param_fp_max);
-  return shadeLobe(s, L, lobe);
+  return shadeLobe(s, L, lobe, param_area_lights);
 }

@@ -13,4 +13,4 @@ void prepareSurface(inout Surface s) {
 #endif
 }
 
-Radiance shadeLight(Surface s, LightData L) { return shadeLobe(s, L, gLeanLobe); }
+Radiance shadeLight(Surface s, LightData L) { return shadeLobe(s, L, gLeanLobe, param_area_lights); }

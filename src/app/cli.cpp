@@ -83,7 +83,7 @@ void print_methods() {
     for (const auto& p : m.params)
       std::cout << "  --param " << p.name << "=" << p.default_text() << "  (" << p.allowed() << ") "
                 << p.description << "\n";
-    for (const auto& id : m.tables) {
+    for (const auto& id : all_tables_of(m)) {
       const TableSummary t = summarise_table(id, tables);
       std::cout << "  table " << id << ": " << table_size_text(t.table->gpu_bytes) << " on the GPU; "
                 << (t.cached_generation_ms ? "cached (generating took " + ms_text(*t.cached_generation_ms) + ")"

@@ -136,7 +136,7 @@ Session::Session(const CommonOptions& options, std::optional<Workload> workload)
   gpu_scene_ = std::make_unique<GpuScene>(
       scene_, TableCache(default_cache_directory(), terminal_table_observer(!options.quiet)));
   // The chosen methods' tables now, rather than inside their first (perhaps timed) frame.
-  for (const MethodDescriptor* m : parse_method_list(options_.methods)) gpu_scene_->require_tables(m->tables);
+  for (const MethodDescriptor* m : parse_method_list(options_.methods)) gpu_scene_->require_tables(all_tables_of(*m));
   renderer_ = std::make_unique<Renderer>(shaders_, *gpu_scene_);
   reference_backend_ = make_reference_backend(options.reference_backend, {shaders_, *gpu_scene_, *renderer_});
 }

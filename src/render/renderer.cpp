@@ -40,10 +40,10 @@ MaterialVariant material_variant(const GpuScene& scene, int material) {
   return {scene.normal_map(material) != 0, scene.glinty(material), scene.textured(material)};
 }
 
-std::string method_program_module(ShaderLibrary& shaders, const MethodDescriptor& method) {
-  const std::string path = generated_module_path(method);
+std::string method_program_module(ShaderLibrary& shaders, const MethodDescriptor& method, const ParamValues& params) {
+  const std::string path = generated_module_path(method, params);
   if (!shaders.exists(path))
-    shaders.add_source(path, generated_module_source(method, shaders.source(method.module_path())));
+    shaders.add_source(path, generated_module_source(method, shaders.source(method.module_path()), params));
   return path;
 }
 
@@ -114,8 +114,8 @@ Renderer::FrameUniforms Renderer::frame_uniforms(const Camera& camera, const glm
 }
 
 void Renderer::draw(const MethodDescriptor& method, const ParamValues& params, const Camera& camera, int width, int height) {
-  scene_.require_tables(method.tables);
-  draw_module(method_program_module(shaders_, method), params, camera, width, height);
+  scene_.require_tables(required_tables(method, params));
+  draw_module(method_program_module(shaders_, method, params), params, camera, width, height);
 }
 
 void Renderer::draw_module(const std::string& module, const ParamValues& params, const Camera& camera, int width,
@@ -133,8 +133,8 @@ void Renderer::draw_view(const std::string& module, const ParamValues& params, c
 }
 
 Frame Renderer::render(const MethodDescriptor& method, const ParamValues& params, const Camera& camera, int width, int height) {
-  scene_.require_tables(method.tables);
-  return render_module(method_program_module(shaders_, method), params, camera, width, height);
+  scene_.require_tables(required_tables(method, params));
+  return render_module(method_program_module(shaders_, method, params), params, camera, width, height);
 }
 
 Frame Renderer::render_module(const std::string& module, const ParamValues& params, const Camera& camera, int width,

@@ -37,7 +37,8 @@ ShaderDefines forward_variant(const std::string& module, const LightRanges& ligh
 /// generated from the descriptor, then shaders/methods/<id>.glsl (shading/method_module.hpp).
 /// Checks the module's parameters and adds the generated source to `shaders` on first use; throws
 /// RuntimeFailure naming the method, the parameter and the module's file.
-std::string method_program_module(ShaderLibrary& shaders, const MethodDescriptor& method);
+/// `params` choose the module's compile-time parameters (their defaults where absent).
+std::string method_program_module(ShaderLibrary& shaders, const MethodDescriptor& method, const ParamValues& params = {});
 
 class Renderer {
  public:

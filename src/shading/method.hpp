@@ -18,6 +18,13 @@ struct ParamDecl {
   float max;
   std::string description;
   std::vector<std::string> choices = {};
+  /// An enumeration that selects code rather than a value: the module sees `param_<name>` as a
+  /// constant and each choice is its own program, so no driver pays for the code of the choices
+  /// not taken (Mesa's llvmpipe runs both sides of every branch).
+  bool compile_time = false;
+  /// The precomputed tables each choice needs besides the method's own (indexed like `choices`;
+  /// empty: none), made resident only when that choice is rendered.
+  std::vector<std::vector<std::string>> choice_tables = {};
 
   /// "0 .. 1", or "a|b|c" for an enumeration.
   [[nodiscard]] std::string allowed() const;
@@ -41,6 +48,11 @@ struct MethodDescriptor {
 
 /// Parameter values by name, every declared parameter present.
 using ParamValues = std::map<std::string, float>;
+
+/// The tables rendering `method` with `values` needs: its own, then those of the chosen choices.
+std::vector<std::string> required_tables(const MethodDescriptor& method, const ParamValues& values);
+/// Every table some choice of `method` may need (for listings and for making tables resident up front).
+std::vector<std::string> all_tables_of(const MethodDescriptor& method);
 
 /// Defaults overridden by `overrides` ("name=value" strings already split). Throws InputError for
 /// an unknown parameter (listing the method's parameters) or a value out of range.

@@ -64,9 +64,21 @@ ParamUses param_uses(const std::string& source) {
 
 }  // namespace
 
-std::string generated_module_path(const MethodDescriptor& method) { return "generated/methods/" + method.id + ".glsl"; }
+std::string generated_module_path(const MethodDescriptor& method, const ParamValues& values) {
+  std::string path = "generated/methods/" + method.id;
+  for (const ParamDecl& p : method.params)
+    if (p.compile_time) path += "." + p.name + "-" + p.choices.at(compile_time_choice(p, values));
+  return path + ".glsl";
+}
 
-std::string generated_module_source(const MethodDescriptor& method, const std::string& module_source) {
+std::size_t compile_time_choice(const ParamDecl& param, const ParamValues& values) {
+  const auto it = values.find(param.name);
+  const float value = it == values.end() ? param.default_value : it->second;
+  return std::min(static_cast<std::size_t>(std::max(value, 0.0f)), param.choices.size() - 1);
+}
+
+std::string generated_module_source(const MethodDescriptor& method, const std::string& module_source,
+                                    const ParamValues& values) {
   const std::string where = "method '" + method.id + "': shaders/" + method.module_path();
   const ParamUses uses = param_uses(module_source);
   if (!uses.declared.empty())
@@ -87,7 +99,14 @@ std::string generated_module_source(const MethodDescriptor& method, const std::s
 
   std::string out = "// Generated from the descriptor of method '" + method.id +
                     "' (shading/method_module.hpp): its parameters, then its module.\n";
-  for (const ParamDecl& p : method.params) out += "uniform float " + std::string(kParamPrefix) + p.name + ";\n";
+  for (const ParamDecl& p : method.params) {
+    if (p.compile_time)
+      out += "const float " + std::string(kParamPrefix) + p.name + " = " +
+             std::to_string(compile_time_choice(p, values)) + ".0;  // " + p.choices[compile_time_choice(p, values)] +
+             "\n";
+    else
+      out += "uniform float " + std::string(kParamPrefix) + p.name + ";\n";
+  }
   return out + "#include \"" + method.module_path() + "\"\n";
 }
 

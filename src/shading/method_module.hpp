@@ -8,14 +8,21 @@
 
 namespace glintlab {
 
-/// "generated/methods/<id>.glsl": the path the generated source is known by in the shader library.
-std::string generated_module_path(const MethodDescriptor& method);
+/// "generated/methods/<id>.glsl": the path the generated source is known by in the shader library;
+/// with compile-time parameters, "<id>.<name>-<choice>...glsl", one per combination of their values.
+std::string generated_module_path(const MethodDescriptor& method, const ParamValues& values = {});
+
+/// The index of the choice a compile-time parameter takes in `values` (its default if absent).
+std::size_t compile_time_choice(const ParamDecl& param, const ParamValues& values);
 
 /// The generated source: one `uniform float param_<name>;` per declared parameter, then
 /// `#include` of the module. `module_source` is the module's own text (not its includes), checked
 /// first; throws RuntimeFailure naming the method, the parameter and the module's file when the
 /// module never reads a declared parameter (whatever the optimiser keeps of it in a variant),
 /// reads a `param_` identifier its descriptor does not declare, or declares one itself.
-std::string generated_module_source(const MethodDescriptor& method, const std::string& module_source);
+/// Compile-time parameters (ParamDecl::compile_time) become `const float param_<name>` of their
+/// value in `values` (the default where absent).
+std::string generated_module_source(const MethodDescriptor& method, const std::string& module_source,
+                                    const ParamValues& values = {});
 
 }  // namespace glintlab

@@ -21,9 +21,13 @@ std::string parameters_markdown(const MethodDescriptor& m) {
 }
 
 std::string tables_markdown(const MethodDescriptor& m) {
-  if (m.tables.empty()) return "Precomputed tables: none.\n";
+  if (all_tables_of(m).empty()) return "Precomputed tables: none.\n";
   std::string out = "Precomputed tables:\n\n";
   for (const std::string& table : m.tables) out += "- " + table + "\n";
+  for (const ParamDecl& p : m.params)
+    for (std::size_t c = 0; c < p.choice_tables.size(); ++c)
+      for (const std::string& table : p.choice_tables[c])
+        out += "- " + table + " (with `" + p.name + " = " + p.choices[c] + "`)\n";
   return out;
 }
 

@@ -48,6 +48,11 @@ void check_declaration(const MethodDescriptor& m, const char* file) {
       if (m.params[j].name == p.name) throw std::logic_error(where + ": parameter '" + p.name + "' is declared twice");
     if (!(p.min <= p.default_value && p.default_value <= p.max))
       throw std::logic_error(where + ": parameter '" + p.name + "' has its default outside " + p.allowed());
+    if (p.compile_time && p.choices.empty())
+      throw std::logic_error(where + ": parameter '" + p.name + "' is compile_time but has no choices");
+    if (!p.choice_tables.empty() && p.choice_tables.size() != p.choices.size())
+      throw std::logic_error(where + ": parameter '" + p.name + "' has " + std::to_string(p.choice_tables.size()) +
+                             " choice_tables for " + std::to_string(p.choices.size()) + " choices");
   }
 }
 
@@ -111,6 +116,32 @@ const ParamDecl* MethodDescriptor::find_param(const std::string& name) const {
   for (const auto& p : params)
     if (p.name == name) return &p;
   return nullptr;
+}
+
+namespace {
+void add_unique(std::vector<std::string>& list, const std::string& id) {
+  if (std::find(list.begin(), list.end(), id) == list.end()) list.push_back(id);
+}
+}  // namespace
+
+std::vector<std::string> required_tables(const MethodDescriptor& method, const ParamValues& values) {
+  std::vector<std::string> tables = method.tables;
+  for (const ParamDecl& p : method.params) {
+    const auto it = values.find(p.name);
+    if (p.choice_tables.empty() || it == values.end()) continue;
+    const auto choice = static_cast<std::size_t>(it->second);
+    if (choice < p.choice_tables.size())
+      for (const std::string& id : p.choice_tables[choice]) add_unique(tables, id);
+  }
+  return tables;
+}
+
+std::vector<std::string> all_tables_of(const MethodDescriptor& method) {
+  std::vector<std::string> tables = method.tables;
+  for (const ParamDecl& p : method.params)
+    for (const auto& ids : p.choice_tables)
+      for (const std::string& id : ids) add_unique(tables, id);
+  return tables;
 }
 
 const MethodDescriptor& find_method(const std::string& id) {

@@ -14,7 +14,7 @@ MethodDescriptor conventional_method() {
                  "Lights with extent: the lobe's mass over the light's image in slope space (closed form), "
                  "with Fresnel and masking at the representative point (Karis 2013); a mirror sees the "
                  "light's radiance where the reflected ray hits it, continuously in alpha.",
-      .params = {},
+      .params = {area_lights_param()},
       .tables = {},
   };
 }

@@ -10,7 +10,8 @@ MethodDescriptor kaplanyan_rect_method() {
       .title = "Kaplanyan et al. (axis-aligned rectangle)",
       .citation = kKaplanyan2016Citation,
       .summary = "Like kaplanyan-beckmann, but with the footprint's axis-aligned bounding rectangle, half sides fp = min((abs(dh/dx) + abs(dh/dy)) / 2, fp_max): R' = R + 2 diag(fp^2). Over-filters, for temporal stability: along each slope axis at least kaplanyan-beckmann's variance.",
-      .params = {fp_max_param()},
+      .params = {fp_max_param(),
+                 area_lights_param()},
       .tables = {},
   };
 }

@@ -13,7 +13,7 @@ MethodDescriptor lean_method() {
                  "averaging, give per pixel the mean normal and the slope covariance Sigma = M - B B^T "
                  "(correlation included); the lobe's roughness matrix is diag(alpha^2) + 2 J Sigma J^T, an "
                  "anisotropic, rotated lobe about the mean normal (J: base slopes to the mean normal's slopes). Without a normal map it equals conventional.",
-      .params = {},
+      .params = {area_lights_param()},
       .tables = {},
   };
 }

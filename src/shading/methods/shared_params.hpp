@@ -21,6 +21,22 @@ inline ParamDecl glint_lean_param(bool on_by_default) {
           {"off", "on"}};
 }
 
+/// How a lobe method integrates lights with extent (docs/methods.md, "Area lights"): the lobe's
+/// mass over the light's image with Fresnel and masking at the representative point, or the lobe's
+/// linearly transformed cosine integrated over the light's polygon or disk (Heitz et al. 2016).
+inline ParamDecl area_lights_param() {
+  return {.name = "area_lights",
+          .default_value = 0.0f,
+          .min = 0.0f,
+          .max = 1.0f,
+          .description = "lights with extent: the lobe's mass over the light's image with Fresnel and masking at "
+                         "the representative point, or the lobe's LTC integrated over the light's exact shape "
+                         "(Heitz et al. 2016; GGX lobes only, Beckmann keeps the representative point)",
+          .choices = {"representative-point", "ltc"},
+          .compile_time = true,
+          .choice_tables = {{}, {"ltc-ggx"}}};
+}
+
 inline constexpr const char* kChermain2020Citation =
     "X. Chermain, B. Sauvage, J.-M. Dischler, C. Dachsbacher, Procedural Physically based BRDF for Real-Time "
     "Rendering of Glints, Pacific Graphics 2020 (CGF 39(7))";

@@ -13,7 +13,7 @@ MethodDescriptor toksvig_method() {
                  "read from the length N of the trilinearly filtered, unnormalised normal: "
                  "beta'^2 = beta^2 + 2 (1 - N) / N with beta^2 = alpha^2 / (1 - alpha^2). "
                  "Without a normal map it equals conventional.",
-      .params = {},
+      .params = {area_lights_param()},
       .tables = {},
   };
 }

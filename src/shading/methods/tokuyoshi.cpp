@@ -18,7 +18,8 @@ MethodDescriptor tokuyoshi_method() {
       .params = {{"sigma2", 0.25f, 0.0f, 1.0f,
                   "variance of the Gaussian pixel filter in pixels^2 (0.25: I3D 2019; 1/(4 pi) reproduces "
                   "JCGT 2021's gain)"},
-                 {"kappa", 0.18f, 0.0f, 1.0f, "clamp of the kernel's largest eigenvalue"}},
+                 {"kappa", 0.18f, 0.0f, 1.0f, "clamp of the kernel's largest eigenvalue"},
+                 area_lights_param()},
       .tables = {},
   };
 }

@@ -13,7 +13,8 @@ MethodDescriptor vlachos_method() {
                  "scale * max(|dn/dx|^2, |dn/dy|^2)^exponent, n the interpolated vertex normal: "
                  "curvature aliasing only; normal maps are left as they are.",
       .params = {{"scale", 1.0f, 0.0f, 4.0f, "gain of the roughness floor"},
-                 {"exponent", 1.0f / 3.0f, 0.05f, 1.0f, "exponent of max(|dn/dx|^2, |dn/dy|^2) (1/3 in the talk)"}},
+                 {"exponent", 1.0f / 3.0f, 0.05f, 1.0f, "exponent of max(|dn/dx|^2, |dn/dy|^2) (1/3 in the talk)"},
+                 area_lights_param()},
       .tables = {},
   };
 }

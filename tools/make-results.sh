@@ -4,7 +4,7 @@
 #   tools/make-results.sh              everything (about 1.5 hours on 2 cores cold; references are
 #                                      cached, so a second run takes minutes)
 #   tools/make-results.sh SECTION      one section, spliced into docs/results.md between its
-#                                      markers: ground-truth, aa, podee, glints, speed
+#                                      markers: ground-truth, aa, podee, glints, area-lights, speed
 # It installs what it uses (jq, ffmpeg) and builds what it needs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -381,6 +381,87 @@ TEXT
   echo
 }
 
+# A glossy mirror-coloured plane and sphere (f0 = 1, no diffuse) of GGX roughness $2 under one light
+# of kind $1 (quad, disk, sphere) that crosses the sphere's horizon: area_light_scene KIND ALPHA.
+area_light_scene() {
+  local light
+  case $1 in
+    quad) light='type = "quad"
+position = [0.0, 1.6, -1.2]
+direction = [0.0, -1.0, 0.9]
+size = [1.2, 0.5]
+up = [0, 1, 0]' ;;
+    disk) light='type = "disk"
+position = [0.0, 1.6, -1.2]
+direction = [0.0, -1.0, 0.9]
+radius = 0.4' ;;
+    sphere) light='type = "sphere"
+position = [0.0, 1.6, -1.2]
+radius = 0.3' ;;
+  esac
+  cat <<TOML
+description = "area-light study: GGX alpha $2 under a $1 light"
+[film]
+width = 192
+height = 108
+[camera]
+position = [0.0, 1.0, 3.0]
+target = [0.0, 0.2, -0.6]
+fov = 40
+[[material]]
+name = "glossy"
+ndf = "ggx"
+alpha = $2
+f0 = 1
+diffuse = 0
+[[shape]]
+type = "plane"
+material = "glossy"
+size = 12
+[[shape]]
+type = "sphere"
+material = "glossy"
+radius = 0.45
+translate = [0.0, 0.45, -0.4]
+[[light]]
+$light
+radiance = 4
+visible = false
+TOML
+}
+
+area_lights_section() {
+  echo "## Area lights: representative point or LTC"
+  echo
+  echo "\`conventional\` with \`area_lights = representative-point\` (the lobe's mass over the light's"
+  echo "image, Fresnel and masking at the representative point) and \`area_lights = ltc\` (the GGX LTC of"
+  echo "\`ltc-ggx\` integrated over the light's polygon or disk, horizon clipped) against a 256-spp reference,"
+  echo "on a glossy plane and sphere (f0 = 1, no diffuse, 192x108) under one light of each kind that"
+  echo "crosses the sphere's horizon. RMSE on linear radiance; energy = mean ratio to the reference;"
+  echo "noise = the reference's own RMSE estimate. The default of every lobe method is the column with"
+  echo "the lower RMSE in most rows."
+  echo
+  echo "| light | alpha | reference noise | RMSE representative point | RMSE LTC | energy representative point | energy LTC |"
+  echo "| --- | --- | --- | --- | --- | --- | --- |"
+  local kind alpha dir
+  for kind in quad disk sphere; do
+    for alpha in 0.02 0.05 0.1 0.2 0.5 1.0; do
+      dir="$out/area-lights/$kind-$alpha"
+      mkdir -p "$dir"
+      area_light_scene "$kind" "$alpha" > "$dir/scene.toml"
+      $B compare -q --scene "$dir/scene.toml" --methods conventional --param area_lights=representative-point \
+        --spp 256 -o "$dir/rp" > /dev/null
+      $B compare -q --scene "$dir/scene.toml" --methods conventional --param area_lights=ltc --spp 256 \
+        -o "$dir/ltc" > /dev/null
+      echo "| $kind | $alpha | $(fmt %.4f "$(field "$dir/rp" reference_noise_rmse)")" \
+        "| $(fmt %.4f "$(metric "$dir/rp" conventional rmse)") | $(fmt %.4f "$(metric "$dir/ltc" conventional rmse)")" \
+        "| $(fmt %.3f "$(metric "$dir/rp" conventional energy_ratio)") | $(fmt %.3f "$(metric "$dir/ltc" conventional energy_ratio)") |"
+    done
+  done
+  echo
+  echo "Regenerate: \`tools/make-results.sh area-lights\`."
+}
+
 speed_section() {
   echo "## Speed"
   echo
@@ -433,7 +514,7 @@ header() {
 # Prints a section between its markers.
 section() { echo "<!-- section:$1 -->"; "${1//-/_}_section"; echo "<!-- /section:$1 -->"; }
 
-sections="ground-truth aa podee glints speed"
+sections="ground-truth aa podee glints area-lights speed"
 if [[ $# -gt 0 && "$1" != all ]]; then
   [[ " $sections " == *" $1 "* ]] || { echo "make-results: unknown section '$1'; allowed: all $sections" >&2; exit 2; }
   grep -q "^<!-- section:$1 -->\$" docs/results.md ||

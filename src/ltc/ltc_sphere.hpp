@@ -14,7 +14,7 @@ namespace glintlab {
 
 /// (1/pi) * the integral of max(0, w.z) over the cap (the clipped form factor). Exact in azimuth
 /// about the cap's centre and Gauss-Legendre in the polar angle, split where the rings start to
-/// cross the horizon: accurate to ~1e-12.
+/// cross the horizon: accurate to ~1e-11.
 double clipped_cap_form_factor(double z, double sin2_sigma);
 
 /// S(z, |F|) = clipped_cap_form_factor(z, |F|) / |F|; its limit max(z, 0) at |F| = 0.

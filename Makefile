@@ -5,7 +5,8 @@
 #   make fuzz   run every fuzz target for FUZZ_SECONDS each (default 600; docs/fuzzing.md)
 #   make bench-tables  time generating and loading each precomputed table (Google Benchmark; not in test)
 #   make bench-normal-maps  time the procedural normal-map generators at their largest inputs (the same)
-.PHONY: all deps build build-fuzz demo test fuzz bench bench-tables bench-normal-maps clean
+#   make ltc-fit-report  fit both LTC tables: generation time and the fit error over the grid (markdown)
+.PHONY: all deps build build-fuzz demo test fuzz bench bench-tables bench-normal-maps ltc-fit-report clean
 
 BUILD := build/release
 FUZZ_BUILD := build/fuzz
@@ -45,6 +46,9 @@ bench-tables: build
 
 bench-normal-maps: build
 	$(BUILD)/benchmarks/bench_normal_maps
+
+ltc-fit-report: build
+	$(BUILD)/benchmarks/ltc_fit_report
 
 clean:
 	rm -rf build out

@@ -63,8 +63,8 @@ Radiance shadeLobeLtc(Surface s, LightData L, Lobe lobe, vec3 wo) {
   float alpha = ltcLobeAlpha(lobe);
   mat3 Minv = ltcInverseMatrix(uLtcGgx, alpha, wo.z) * ltcViewFrame(wo);
   vec4 terms = ltcTerms(uLtcGgx, alpha, wo.z);
-  // Schlick: integral of f cos (f0 + (1 - f0)(1 - o.h)^5) = f0 (magnitude - fresnel) + fresnel.
-  vec3 albedo = s.f0 * (terms.x - terms.y) + terms.y;
+  // The lobe times Schlick's Fresnel integrated over the hemisphere (the tables' magnitude and Fresnel terms).
+  vec3 albedo = ltcSpecularScale(terms, s.f0);
   result.specular = albedo * ltcLightIntegral(s, L, Minv) * radiance;
   return result;
 }

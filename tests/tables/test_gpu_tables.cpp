@@ -67,18 +67,19 @@ TEST(Tables, TheUploadHasTheSizeTheTableDeclares) {
     tables.require(std::vector<std::string>{t.source.id});
     const GLuint texture = tables.texture(t.source.id);
     ASSERT_NE(texture, 0u) << t.source.id;
-    // RGB16F: 6 bytes a texel (the only internal format a table uses so far; checked here).
+    // The internal formats tables use: RGB16F (6 bytes a texel), RGBA32F (16; the LTC tables).
     GLint format = 0, levels = 0;
     glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
     glGetTextureParameteriv(texture, GL_TEXTURE_IMMUTABLE_LEVELS, &levels);
-    ASSERT_EQ(format, GL_RGB16F) << t.source.id;
+    ASSERT_TRUE(format == GL_RGB16F || format == GL_RGBA32F) << t.source.id << ": internal format " << format;
+    const std::size_t texel_bytes = format == GL_RGB16F ? 6 : 16;
     std::size_t base = 0, with_mips = 0;
     for (GLint level = 0; level < levels; ++level) {
       GLint w = 0, h = 0, d = 0;
       glGetTextureLevelParameteriv(texture, level, GL_TEXTURE_WIDTH, &w);
       glGetTextureLevelParameteriv(texture, level, GL_TEXTURE_HEIGHT, &h);
       glGetTextureLevelParameteriv(texture, level, GL_TEXTURE_DEPTH, &d);
-      const std::size_t bytes = static_cast<std::size_t>(w) * h * d * 6;
+      const std::size_t bytes = static_cast<std::size_t>(w) * h * d * texel_bytes;
       if (level == 0) base = bytes;
       with_mips += bytes;
     }
@@ -88,6 +89,11 @@ TEST(Tables, TheUploadHasTheSizeTheTableDeclares) {
   // The paper's dictionary: 64 texels x 1024 layers x 6 bytes, and its 1D chain of 7 levels.
   EXPECT_EQ(find_table("glint-dictionary").gpu_bytes.base, 393216u);
   EXPECT_EQ(find_table("glint-dictionary").gpu_bytes.with_mips, 780288u);
+  // The LTC tables: 64 x 64 texels x 2 layers x 16 bytes, no mips.
+  for (const char* id : {"ltc-ggx", "ltc-ndf"}) {
+    EXPECT_EQ(find_table(id).gpu_bytes.base, 131072u) << id;
+    EXPECT_EQ(find_table(id).gpu_bytes.with_mips, 131072u) << id;
+  }
 }
 
 TEST(Tables, ARequiredTableIsMadeResidentOnce) {

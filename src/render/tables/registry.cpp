@@ -8,11 +8,15 @@
 namespace glintlab {
 
 Table glint_dictionary_table();
+Table ltc_ggx_table();
+Table ltc_ndf_table();
 
 const std::vector<Table>& all_tables() {
   static const std::vector<Table> tables = [] {
     std::vector<Table> list = {
         glint_dictionary_table(),
+        ltc_ggx_table(),
+        ltc_ndf_table(),
     };
     for (std::size_t i = 0; i < list.size(); ++i) list[i].unit = kFirstTableUnit + static_cast<int>(i);
     return list;

@@ -98,8 +98,9 @@ vec3 ltcDiskVectorFormFactor(mat3 Minv, vec3 c, vec3 u, vec3 w) {
   float l1 = q + 2.0 * sqrtP * cos(phi);
   float l2 = q + 2.0 * sqrtP * cos(phi - TWO_PI / 3.0);
   float l3 = -(as * bs * inverseScale) / max(l1 * l2, 1e-30);
-  float L1sq = -l3 / l1, L2sq = -l3 / max(l2, 1e-30);
-  float formFactor = sqrt(L1sq * L2sq / ((1.0 + L1sq) * (1.0 + L2sq)));
+  // L^2 / (1 + L^2) as 1 / (1 + 1/L^2): 1 for a cone as wide as a half-space, 0 for a point.
+  float invL1sq = l1 / max(-l3, 1e-30), invL2sq = max(l2, 0.0) / max(-l3, 1e-30);
+  float formFactor = sqrt(1.0 / ((1.0 + invL1sq) * (1.0 + invL2sq)));
   vec3 axis = normalize(e1 * (as * x0 / (as - l3)) + e2 * (bs * y0 / (bs - l3)) + e3);
   return formFactor * axis;
 }

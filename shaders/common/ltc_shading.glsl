@@ -43,11 +43,16 @@ float ltcLightIntegral(Surface s, LightData L, mat3 Minv) {
     return ltcPolygonIntegral(Minv, vertex, count);
   }
   LightDisk disk = lightDiskForm(L, s.position);
+  // Inside a sphere light every direction sees it: the LTC integrates to 1 over the hemisphere.
+  if (disk.angularRadius >= 0.5 * PI - 1e-4) return 1.0;
   vec3 n = disk.normal;
   vec3 u = normalize(abs(n.x) < 0.9 ? cross(n, vec3(1.0, 0.0, 0.0)) : cross(n, vec3(0.0, 1.0, 0.0)));
   vec3 w = cross(n, u);
-  vec3 F = ltcDiskVectorFormFactor(Minv, toLocal(s, disk.centre - s.position), toLocal(s, u * disk.radius),
-                                   toLocal(s, w * disk.radius));
+  // Only the cone matters: the disk scaled to unit size keeps far and wide lights within float range.
+  vec3 c = disk.centre - s.position;
+  float scale = 1.0 / max(length(c), disk.radius);
+  vec3 F = ltcDiskVectorFormFactor(Minv, toLocal(s, c * scale), toLocal(s, u * (disk.radius * scale)),
+                                   toLocal(s, w * (disk.radius * scale)));
   return ltcSphereFormFactor(F);
 }
 

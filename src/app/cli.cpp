@@ -77,7 +77,7 @@ std::string ms_text(double ms) {
 }
 
 void print_methods() {
-  const TableCache tables(default_cache_directory());
+  const TableCache tables(default_table_cache_directory());
   for (const auto& m : all_methods()) {
     std::cout << m.id << " — " << m.title << "\n  " << m.summary << "\n  source: " << m.citation << "\n";
     for (const auto& p : m.params)
@@ -113,8 +113,8 @@ void print_info() {
             << "reference backends (--reference-backend; the first is the default):\n";
   for (const auto& b : reference_backends()) std::cout << "  " << b.id << ": " << b.description << "\n";
   // Every precomputed table, loaded from the cache or generated (and cached) now.
-  std::cout << "precomputed tables (cache: " << default_cache_directory().string() << "):\n";
-  for (const TableReport& r : build_every_table(TableCache(default_cache_directory(), terminal_table_observer(true)))) {
+  std::cout << "precomputed tables (cache: " << default_table_cache_directory().string() << "):\n";
+  for (const TableReport& r : build_every_table(TableCache(default_table_cache_directory(), terminal_table_observer(true)))) {
     const TableSource& source = r.table->source;
     std::cout << "  " << source.id << ": " << source.title << "; " << table_size_text(r.table->gpu_bytes) << "; "
               << (r.build.generated ? "generated now in " + ms_text(r.build.milliseconds)

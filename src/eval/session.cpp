@@ -134,7 +134,7 @@ Session::Session(const CommonOptions& options, std::optional<Workload> workload)
   context_ = GlContext::create_headless();
   device_ = context_->info().renderer;
   gpu_scene_ = std::make_unique<GpuScene>(
-      scene_, TableCache(default_cache_directory(), terminal_table_observer(!options.quiet)));
+      scene_, TableCache(default_table_cache_directory(), terminal_table_observer(!options.quiet)));
   // The chosen methods' tables now, rather than inside their first (perhaps timed) frame.
   for (const MethodDescriptor* m : parse_method_list(options_.methods)) gpu_scene_->require_tables(all_tables_of(*m));
   renderer_ = std::make_unique<Renderer>(shaders_, *gpu_scene_);

@@ -26,7 +26,8 @@ inline ParamDecl glint_lean_param(bool on_by_default) {
 /// linearly transformed cosine integrated over the light's polygon or disk (Heitz et al. 2016).
 inline ParamDecl area_lights_param() {
   return {.name = "area_lights",
-          .default_value = 0.0f,
+          .default_value = 1.0f,  // LTC: closer to the reference for every kind and roughness measured
+                                  // (docs/results.md, "Area lights: representative point or LTC")
           .min = 0.0f,
           .max = 1.0f,
           .description = "lights with extent: the lobe's mass over the light's image with Fresnel and masking at "

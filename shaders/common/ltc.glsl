@@ -10,8 +10,8 @@
 #include "common/constants.glsl"
 #include "common/light_shapes.glsl"
 
-// A polygon clipped to the upper hemisphere gains at most one vertex.
-#define LTC_CLIPPED_MAX_VERTICES (LIGHT_POLYGON_MAX_VERTICES + 1)
+// Clipping to a half-space adds at most one vertex; a polygon is clipped twice (below).
+#define LTC_CLIPPED_MAX_VERTICES (LIGHT_POLYGON_MAX_VERTICES + 2)
 
 // The edge's contribution to the vector form factor, times 2 pi (a, b need not be unit).
 vec3 ltcEdgeVector(vec3 a, vec3 b) {
@@ -22,31 +22,43 @@ vec3 ltcEdgeVector(vec3 a, vec3 b) {
   return c * (s > 1e-7 ? theta / s : 1.0);
 }
 
-// Form factor of the polygon v[0..count) clipped to z >= 0 (Sutherland-Hodgman against the horizon
-// plane), whatever its winding: (1/pi) times the integral of the cosine over its directions.
-float ltcClippedPolygonFormFactor(vec3 v[LIGHT_POLYGON_MAX_VERTICES], int count) {
+// The polygon v[0..count) clipped to z >= 0 in place (Sutherland-Hodgman against the plane z = 0);
+// returns the new count (0 when nothing is left).
+int ltcClipToUpperHalfSpace(inout vec3 v[LTC_CLIPPED_MAX_VERTICES], int count) {
   vec3 clipped[LTC_CLIPPED_MAX_VERTICES];
   int n = 0;
-  for (int i = 0; i < LIGHT_POLYGON_MAX_VERTICES; ++i) {
+  for (int i = 0; i < LTC_CLIPPED_MAX_VERTICES - 1; ++i) {
     if (i >= count) break;
     vec3 a = v[i], b = v[i + 1 < count ? i + 1 : 0];
     if (a.z >= 0.0) clipped[n++] = a;
     if ((a.z >= 0.0) != (b.z >= 0.0)) clipped[n++] = mix(a, b, a.z / (a.z - b.z));
   }
-  if (n < 3) return 0.0;
+  v = clipped;
+  return n < 3 ? 0 : n;
+}
+
+// Form factor of the polygon v[0..count) (already clipped to z >= 0), whatever its winding:
+// (1/pi) times the integral of the cosine over its directions.
+float ltcPolygonFormFactor(vec3 v[LTC_CLIPPED_MAX_VERTICES], int count) {
   float sum = 0.0;
   for (int i = 0; i < LTC_CLIPPED_MAX_VERTICES; ++i) {
-    if (i >= n) break;
-    sum += ltcEdgeVector(clipped[i], clipped[i + 1 < n ? i + 1 : 0]).z;
+    if (i >= count) break;
+    sum += ltcEdgeVector(v[i], v[i + 1 < count ? i + 1 : 0]).z;
   }
   return abs(sum) / TWO_PI;
 }
 
-// The polygon's form factor under the lobe M^-1: vertices mapped by M^-1, then clipped.
+// The polygon's integral under the lobe M^-1: clipped to the surface's horizon (the lobe it
+// replaces is zero below it, while the fitted LTC may reach there), mapped by M^-1, and clipped to
+// the cosine's horizon. M^-1 = identity gives the Lambert form factor.
 float ltcPolygonIntegral(mat3 Minv, vec3 v[LIGHT_POLYGON_MAX_VERTICES], int count) {
-  vec3 mapped[LIGHT_POLYGON_MAX_VERTICES];
-  for (int i = 0; i < LIGHT_POLYGON_MAX_VERTICES; ++i) mapped[i] = Minv * v[i];
-  return ltcClippedPolygonFormFactor(mapped, count);
+  vec3 p[LTC_CLIPPED_MAX_VERTICES];
+  for (int i = 0; i < LIGHT_POLYGON_MAX_VERTICES; ++i) p[i] = v[i];
+  for (int i = LIGHT_POLYGON_MAX_VERTICES; i < LTC_CLIPPED_MAX_VERTICES; ++i) p[i] = vec3(0.0);
+  int n = ltcClipToUpperHalfSpace(p, count);
+  for (int i = 0; i < LTC_CLIPPED_MAX_VERTICES; ++i) p[i] = Minv * p[i];
+  n = ltcClipToUpperHalfSpace(p, n);
+  return ltcPolygonFormFactor(p, n);
 }
 
 // The vector form factor of a disk (centre c, orthogonal semi-axes u, w of equal length) under the
@@ -88,16 +100,21 @@ vec3 ltcDiskVectorFormFactor(mat3 Minv, vec3 c, vec3 u, vec3 w) {
   // its principal 2x2 minors, with the cancelling terms removed, m = as bs (1 + x0^2 + y0^2) - (as + bs) / s.
   float tr = as * (1.0 + x0 * x0) + bs * (1.0 + y0 * y0) - inverseScale;
   float m = as * bs * (1.0 + x0 * x0 + y0 * y0) - (as + bs) * inverseScale;
-  // The two positive roots by the trigonometric solution of the depressed cubic; the negative one,
-  // tiny for small lights, from the determinant, which keeps its relative precision.
+  // The largest root by the trigonometric solution of the depressed cubic (all its terms add up);
+  // the other two from their sum (m - l2 l3) / l1 and product det / l1, which keep their relative
+  // precision where the cubic's own smaller roots would cancel (a sliver of a cone near the
+  // horizon of a sharp lobe: l1 ~ 1e5, l2 ~ 1).
+  float det = -as * bs * inverseScale;
   float q = tr / 3.0;
   float p = (tr * tr - 3.0 * m) / 9.0;  // > 0: three real roots
   float sqrtP = sqrt(max(p, 0.0));
-  float r = (2.0 * tr * tr * tr - 9.0 * tr * m - 27.0 * as * bs * inverseScale) / 54.0;
+  float r = (2.0 * tr * tr * tr - 9.0 * tr * m + 27.0 * det) / 54.0;
   float phi = acos(clamp(r / max(p * sqrtP, 1e-30), -1.0, 1.0)) / 3.0;
-  float l1 = q + 2.0 * sqrtP * cos(phi);
-  float l2 = q + 2.0 * sqrtP * cos(phi - TWO_PI / 3.0);
-  float l3 = -(as * bs * inverseScale) / max(l1 * l2, 1e-30);
+  float l1 = max(q + 2.0 * sqrtP * cos(phi), 1e-30);
+  float product = det / l1, sum = (m - product) / l1;  // l2 l3 < 0 and l2 + l3
+  float spread = sqrt(sum * sum - 4.0 * product);
+  float l2 = sum >= 0.0 ? 0.5 * (sum + spread) : product / (0.5 * (sum - spread));
+  float l3 = product / max(l2, 1e-30);
   // L^2 / (1 + L^2) as 1 / (1 + 1/L^2): 1 for a cone as wide as a half-space, 0 for a point.
   float invL1sq = l1 / max(-l3, 1e-30), invL2sq = max(l2, 0.0) / max(-l3, 1e-30);
   float formFactor = sqrt(1.0 / ((1.0 + invL1sq) * (1.0 + invL2sq)));

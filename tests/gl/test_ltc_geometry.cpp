@@ -21,9 +21,11 @@ const double kGl4Nodes[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810
 const double kGl4Weights[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538};
 
 /// The LTC distribution of the clamped cosine mapped by M (given M^-1), at the unit direction w
-/// (Heitz et al. 2016, eq. 3): D_o(w) = D_cos(M^-1 w / |M^-1 w|) |det M^-1| / |M^-1 w|^3.
+/// (Heitz et al. 2016, eq. 3): D_o(w) = D_cos(M^-1 w / |M^-1 w|) |det M^-1| / |M^-1 w|^3, above the
+/// surface's horizon (the disks tested lie above it).
 double ltc_density(const glm::dmat3& Minv, const glm::dvec3& w) {
   const glm::dvec3 m = Minv * w;
+  if (w.z < 0) return 0;  // below the surface's horizon, where the runtime clips polygons too
   const double len = glm::length(m);
   return std::max(m.z / len, 0.0) / M_PI * std::abs(glm::determinant(Minv)) / (len * len * len);
 }
@@ -70,7 +72,8 @@ double disk_integral(const glm::dmat3& Minv, glm::dvec3 c, glm::dvec3 u, glm::dv
 
 glm::vec4 column(const glm::dmat3& m, int i) { return glm::vec4(glm::dvec3(m[i]), 0.0); }
 
-/// Inverse matrices of lobes from the identity to sharp (1 / 0.02) and skewed, with det > 0.
+/// Inverse matrices of lobes from the identity to sharp (1 / 0.02) and skewed, with det > 0, and a
+/// mirror-like one.
 std::vector<glm::dmat3> lobe_matrices() {
   std::vector<glm::dmat3> out = {glm::dmat3(1.0)};
   for (double sharp : {2.0, 10.0, 50.0})
@@ -81,6 +84,11 @@ std::vector<glm::dmat3> lobe_matrices() {
       m[2][0] = -skew * sharp; // column 2, row 0: tilts the lobe towards -x
       out.push_back(m);
     }
+  // A mirror-like lobe as the tables store it (M^-1 / m11 = diag(1, 1, ~alpha)): a light off the
+  // mirror direction maps to a sliver of a cone along the horizon.
+  glm::dmat3 mirror(1.0);
+  mirror[2][2] = 1e-4;
+  out.push_back(mirror);
   return out;
 }
 
@@ -133,8 +141,14 @@ vec4 evaluate(vec4 a, vec4 b) {
   return vec4(ltcPolygonIntegral(kMinv[m], v, 4));
 })",
                                   a, b);
-  for (std::size_t i = 0; i < got.size(); ++i)
-    EXPECT_NEAR(got[i].x, expected[i], 2e-4 * expected[i] + 2e-6) << "matrix " << i / quads.size() << ", quad " << i % quads.size();
+  // The mirror-like lobe's peak (along z) inside the overhead quad is too narrow for the
+  // quadrature: there the whole lobe is inside, and the integral is 1.
+  const std::size_t mirror = lobe_matrices().size() - 1;
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    const bool peak_inside = i / quads.size() == mirror && i % quads.size() == 0;
+    EXPECT_NEAR(got[i].x, peak_inside ? 1.0 : expected[i], 2e-4 * expected[i] + 2e-6)
+        << "matrix " << i / quads.size() << ", quad " << i % quads.size();
+  }
 }
 
 namespace {
@@ -173,6 +187,7 @@ TEST(LtcGeometry, DiskVectorFormFactorMatchesQuadrature) {
       {{0.6, 0.3, 1.5}, glm::normalize(glm::dvec3(-0.6, -0.3, -1.5)), 0.3},  // facing the origin, off axis
       {{0.5, 0.0, 1.0}, glm::normalize(glm::dvec3(0.3, 0.2, -1.0)), 0.2},    // tilted: elliptic
       {{0.1, 0.1, 3.0}, {0.0, 0.0, -1.0}, 0.02},                         // small and far
+      {{0.74, 0.0, 5.0}, {0.0, 0.0, -1.0}, 0.53},                        // off the mirror direction
   };
   std::vector<glm::vec4> a, b;
   std::vector<double> expected;
@@ -196,7 +211,9 @@ vec4 evaluate(vec4 a, vec4 b) {
 })",
                                   a, b);
   double worst = 0;
+  const std::size_t mirror = matrices.size() - 1;
   for (std::size_t i = 0; i < got.size(); ++i) {
+    if (i / disks.size() == mirror && i % disks.size() == 0) expected[i] = 1.0;  // the whole lobe inside
     const double relative = std::abs(got[i].z - expected[i]) / expected[i];
     if (circular[i]) EXPECT_LT(relative, 1e-3) << "matrix " << i / disks.size() << ", disk " << i % disks.size();
     else worst = std::max(worst, relative);

@@ -86,4 +86,29 @@ double ltc_polygon_integral(const Ltc& ltc, std::span<const glm::dvec3> polygon,
   return sign * clipped_polygon_form_factor(vertices);
 }
 
+double ltc_disk_integral(const Ltc& ltc, const glm::dvec3& centre, const glm::dvec3& normal, double radius,
+                         int segments, bool clip_surface_horizon) {
+  const glm::dvec3 n = glm::normalize(normal);
+  const glm::dvec3 helper = std::abs(n.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
+  const glm::dvec3 e1 = glm::normalize(glm::cross(n, helper)), e2 = glm::cross(n, e1);
+  // A regular polygon of the disk's area: its circumradius is r sqrt(t / sin t), t = 2 pi / segments.
+  const double step = 2.0 * std::numbers::pi / segments;
+  const double circumradius = radius * std::sqrt(step / std::sin(step));
+  std::vector<glm::dvec3> polygon(static_cast<std::size_t>(segments));
+  for (int k = 0; k < segments; ++k)
+    polygon[static_cast<std::size_t>(k)] = centre + circumradius * (std::cos(k * step) * e1 + std::sin(k * step) * e2);
+  return std::abs(ltc_polygon_integral(ltc, polygon, clip_surface_horizon));
+}
+
+double ltc_sphere_integral(const Ltc& ltc, const glm::dvec3& centre, double radius, int segments,
+                           bool clip_surface_horizon) {
+  // The cap of angular radius sigma = asin(r / d) about c / d: on the unit sphere its boundary is
+  // the circle of centre cos(sigma) c / d and radius sin(sigma) in the plane normal to c.
+  const double d = glm::length(centre);
+  if (!(radius < d)) throw std::invalid_argument("LTC: the shading point is inside the sphere");
+  const double sin_sigma = radius / d, cos_sigma = std::sqrt(1.0 - sin_sigma * sin_sigma);
+  const glm::dvec3 axis = centre / d;
+  return ltc_disk_integral(ltc, cos_sigma * axis, axis, sin_sigma, segments, clip_surface_horizon);
+}
+
 }  // namespace glintlab

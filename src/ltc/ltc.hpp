@@ -63,4 +63,15 @@ double clipped_polygon_form_factor(std::span<const glm::dvec3> polygon);
 /// horizon z >= 0, where the fitted lobes live (the LTC may reach below it).
 double ltc_polygon_integral(const Ltc& ltc, std::span<const glm::dvec3> polygon, bool clip_surface_horizon = true);
 
+/// The integral of D_o over a disk (centre and unit normal relative to the shading point, radius),
+/// either side facing: the polygon integral of a regular polygon of `segments` vertices with the
+/// disk's area (relative error ~ (2 pi / segments)^4). A reference for the GLSL's closed-form disk
+/// (Heitz & Hill 2017), not a fast path.
+double ltc_disk_integral(const Ltc& ltc, const glm::dvec3& centre, const glm::dvec3& normal, double radius,
+                         int segments = 1024, bool clip_surface_horizon = true);
+/// The integral of D_o over the directions a sphere subtends (centre relative to the shading point,
+/// radius < |centre|): the disk of the cap's boundary circle, as ltc_disk_integral.
+double ltc_sphere_integral(const Ltc& ltc, const glm::dvec3& centre, double radius, int segments = 1024,
+                           bool clip_surface_horizon = true);
+
 }  // namespace glintlab

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <tuple>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -123,6 +124,44 @@ TEST(Ltc, AnInfinitePlaneAboveHasFormFactorOneAndOneBelowZero) {
   const auto half = quad({5e4, 0.0, 1.0}, {5e4, 0.0, 0.0}, {0.0, 1e5, 0.0});
   EXPECT_NEAR(clipped_polygon_form_factor(half), 0.5, 1e-4);
   EXPECT_EQ(clip_to_upper_half_space(below).size(), 0u);
+}
+
+TEST(Ltc, DiskAndSphereIntegralsMatchTheDensityIntegratedOverThem) {
+  const Ltc ltc(some_matrices()[2]);
+  // A disk by quadrature over its area (polar grid), dw = |cos| dA / r^2; with the surface horizon.
+  auto disk_by_quadrature = [&](glm::dvec3 c, glm::dvec3 n, double radius) {
+    n = glm::normalize(n);
+    const glm::dvec3 e1 = glm::normalize(glm::cross(n, glm::dvec3(0.3, 0.9, 0.1))), e2 = glm::cross(n, e1);
+    constexpr int kR = 600, kPhi = 1200;
+    double sum = 0.0;
+    for (int a = 0; a < kR; ++a)
+      for (int b = 0; b < kPhi; ++b) {
+        const double rho = radius * (a + 0.5) / kR, phi = 2.0 * kPi * (b + 0.5) / kPhi;
+        const glm::dvec3 p = c + rho * (std::cos(phi) * e1 + std::sin(phi) * e2);
+        const double r2 = glm::dot(p, p);
+        const glm::dvec3 w = p / std::sqrt(r2);
+        if (w.z > 0.0) sum += ltc.density(w) * std::abs(glm::dot(w, n)) / r2 * rho;
+      }
+    return sum * (radius / kR) * (2.0 * kPi / kPhi);
+  };
+  for (auto [c, n, r] : {std::tuple{glm::dvec3(0.3, 0.1, 1.0), glm::dvec3(0.0, 0.2, -1.0), 0.4},
+                         std::tuple{glm::dvec3(0.8, -0.2, 0.1), glm::dvec3(-1.0, 0.0, 0.3), 0.5}}) {  // crossing the horizon
+    const double truth = disk_by_quadrature(c, n, r);
+    EXPECT_NEAR(ltc_disk_integral(ltc, c, n, r), truth, 2e-4 * truth + 1e-5);
+  }
+  // A sphere: its cap in the cap's own polar coordinates.
+  for (auto [c, r] : {std::pair{glm::dvec3(0.2, 0.3, 1.5), 0.6}, std::pair{glm::dvec3(1.0, 0.0, 0.2), 0.5}}) {
+    const glm::dvec3 axis = glm::normalize(c);
+    const glm::dvec3 t1 = glm::normalize(glm::cross(glm::dvec3(0, 1, 0), axis)), t2 = glm::cross(axis, t1);
+    const double truth = test::integrate_band(
+        [&](const glm::dvec3& w) {
+          const glm::dvec3 d = w.x * t1 + w.y * t2 + w.z * axis;
+          return d.z > 0.0 ? ltc.density(d) : 0.0;
+        },
+        0.0, std::asin(r / glm::length(c)), 1500);
+    EXPECT_NEAR(ltc_sphere_integral(ltc, c, r), truth, 2e-4 * truth + 1e-5);
+  }
+  EXPECT_THROW((void)ltc_sphere_integral(ltc, glm::dvec3(0, 0, 1), 2.0), std::invalid_argument);
 }
 
 /// A cap of angular radius sigma about the direction with elevation cosine z.

@@ -29,13 +29,16 @@ TEST(Shaders, EveryMethodAndPassCompiles) {
   for (const auto& module : modules)
     for (bool normal_map : {false, true})
       for (bool glints : {false, true})
-        for (bool textures : {false, true}) {
-          if (glints && textures) continue;  // a glinty material's parameters are constants
-          EXPECT_NO_THROW(shaders().graphics("passes/forward.vert", "passes/forward.frag",
-                                             forward_variant(module, every_kind, {normal_map, glints, textures})))
-              << module << (normal_map ? " with a normal map" : "") << (glints ? ", glinty" : "")
-              << (textures ? ", textured" : "");
-        }
+        for (bool textures : {false, true})
+          for (bool binomial : {false, true}) {
+            // A glinty material's parameters are constants; a material has one kind of glints.
+            if ((glints || binomial) && textures) continue;
+            if (glints && binomial) continue;
+            EXPECT_NO_THROW(shaders().graphics("passes/forward.vert", "passes/forward.frag",
+                                               forward_variant(module, every_kind, {normal_map, glints, textures, binomial})))
+                << module << (normal_map ? " with a normal map" : "") << (glints ? ", glinty" : "")
+                << (textures ? ", textured" : "") << (binomial ? ", binomial glints" : "");
+          }
   EXPECT_NO_THROW(shaders().graphics("passes/forward.vert", "passes/emitter.frag"));
   EXPECT_NO_THROW(shaders().compute("passes/downsample.comp"));
 }

@@ -52,7 +52,8 @@ vec2 remainingLaw(float p, float n, float p1, int model) {
   float r = n * p / max(p1, 1e-37);
   float mean = max(r - 1.0, 0.0);
   float variance = max(r * (1.0 + others * p - r), 0.0);
-  float s2 = mean > 0.0 ? min(log(1.0 + variance / (mean * mean)), 30.0) : 0.0;
+  // (Below a mean of 1e-12 the others are 0: mean^2 would underflow fp32.)
+  float s2 = mean > 1e-12 ? min(log(1.0 + variance / (mean * mean)), 30.0) : 0.0;
   return vec2(mean, sqrt(s2));  // the lognormal's mean and the deviation of its logarithm
 }
 

@@ -10,7 +10,10 @@ struct MaterialData {
   vec4 alpha_rho;       // xy: alpha_x, alpha_y; z: slope correlation rho; w: anisotropy rotation
                         // (radians, from the tangent towards the bitangent)
   vec4 glints;          // glinty materials (a program variant, MATERIAL_GLINTS): x: ln microfacets
-                        // per uv area; y: relative area; z: max anisotropy; w: unused
+                        // per uv area; y: relative area; z: max anisotropy; w: unused.
+                        // Binomial glints (MATERIAL_BINOMIAL_GLINTS): x: ln microfacets per uv
+                        // area; y: microfacet roughness R; z: density randomization; w: slope
+                        // cells per unit of h.xy
   vec4 emission;        // rgb: emitted radiance; w: unused
   // Textured materials (a program variant, MATERIAL_TEXTURES; common/material_textures.glsl):
   vec4 base_color;      // rgba: factor of the base-colour texture

@@ -10,6 +10,11 @@
 #if MATERIAL_GLINTS
 #include "common/glint_shading.glsl"
 GlintSurface gGlint;  // the glinty BRDF with this sub-pixel's own footprint, no anti-aliasing
+#elif MATERIAL_BINOMIAL_GLINTS
+#include "common/binomial_shading.glsl"
+BinomialSurface gBinomial;  // the binomial glints with this sub-pixel's own footprint
+// Cells one sub-pixel across (Shannon's limit at the sub-pixel scale; the pixel averages them).
+const float REFERENCE_SCREEN_SPACE_SCALE = 1.0;
 #endif
 
 // Below this alpha the material is treated as a perfect mirror (a delta BRDF).
@@ -17,11 +22,13 @@ const float REFERENCE_MIRROR_ALPHA = 1e-4;
 
 uint gReferenceLightIndex = 0u;
 
-// Ground truth takes the surface as it is; a glinty material's patch-SDF is that of the
-// sub-pixel's footprint (the papers' protocol).
+// Ground truth takes the surface as it is; a glinty material's patch-SDF (or binomial grids) is
+// that of the sub-pixel's footprint (the papers' protocol).
 void prepareSurface(inout Surface s) {
 #if MATERIAL_GLINTS
   gGlint = prepareGlints(s, materials[uMaterial], false, true);
+#elif MATERIAL_BINOMIAL_GLINTS
+  gBinomial = prepareBinomialGlints(s, materials[uMaterial], REFERENCE_SCREEN_SPACE_SCALE);
 #endif
 }
 
@@ -29,6 +36,8 @@ void prepareSurface(inout Surface s) {
 vec3 materialSpecularCos(Surface s, vec3 wo, vec3 wi) {
 #if MATERIAL_GLINTS
   return glintSpecularCos(gGlint, wo, wi, s.f0, vec2(0.0), vec2(0.0), false);
+#elif MATERIAL_BINOMIAL_GLINTS
+  return binomialSpecularCos(gBinomial, wo, wi, s.f0, s.alpha, REMAINING_LOGNORMAL);
 #else
   return specularCos(s.ndf, wo, wi, s.alpha, s.f0);
 #endif
@@ -74,7 +83,7 @@ Radiance shadeLight(Surface s, LightData L) {
   vec2 rotLight = hashToUnit2(seed);
   vec2 rotBrdf = hashToUnit2(pcgHash(seed + 1u));
   vec3 radiance = lightRadiance(L);
-  bool mirror = max(s.alpha.x, s.alpha.y) < REFERENCE_MIRROR_ALPHA;  // never glinty: sigma >= 0.005
+  bool mirror = max(s.alpha.x, s.alpha.y) < REFERENCE_MIRROR_ALPHA;  // never glinty: sigma >= 0.005, binomial alpha >= 0.01
 
   for (uint j = 0u; j < n; ++j) {
     vec3 dir;

@@ -63,7 +63,9 @@ struct MaterialGpu {
   glm::vec4 f0_ndf;          ///< rgb: Schlick F0; a: kNdfGgx or kNdfBeckmann
   glm::vec4 diffuse_tiling;  ///< rgb: Lambert albedo; a: normal-map repeats per uv unit
   glm::vec4 alpha_rho;       ///< xy: alpha; z: slope correlation; w: anisotropy rotation (radians)
-  glm::vec4 glints;          ///< x: ln density; y: relative area; z: max anisotropy
+  glm::vec4 glints;          ///< x: ln density; y: relative area; z: max anisotropy (MATERIAL_GLINTS);
+                             ///< binomial glints (MATERIAL_BINOMIAL_GLINTS): x: ln density; y: R;
+                             ///< z: density randomization; w: slope-grid scale
   glm::vec4 emission;        ///< rgb: emitted radiance
   // Textured materials (a program variant, MATERIAL_TEXTURES): per-texel parameters' factors.
   glm::vec4 base_color;      ///< rgba factor

@@ -71,6 +71,17 @@ gl::Texture make_mipmapped_texture(GLenum format, GLenum channels, int width, in
   return tex;
 }
 
+/// MaterialGpu::glints: a glinty material's parameters (Chermain's or, in the MATERIAL_BINOMIAL_GLINTS
+/// variant, Deliot & Belcour's), the defaults of Chermain's otherwise.
+glm::vec4 glint_record(const Material& m) {
+  if (m.binomial_glints) {
+    const BinomialGlintParams& b = *m.binomial_glints;
+    return {b.log_density, b.microfacet_roughness, b.density_randomization, b.slope_grid_scale};
+  }
+  const GlintParams g = m.glints.value_or(GlintParams{});
+  return {g.log_density, g.relative_area, g.max_anisotropy, 0.0f};
+}
+
 /// A material's affine uv map as the column-major mat3x2 GLSL reads: columns x, y and the offset.
 void store_transform(const glm::mat3& m, float* out) {
   for (int c = 0; c < 3; ++c) {
@@ -163,16 +174,16 @@ GpuScene::GpuScene(const Scene& scene, TableCache tables) : tables_(std::move(ta
 
   std::vector<MaterialGpu> materials;
   for (const auto& m : scene.materials) {
-    const GlintParams g = m.glints.value_or(GlintParams{});
     const TexturedMetalRough x = m.textures.value_or(TexturedMetalRough{});
     const float ndf = static_cast<float>(m.ndf == Ndf::Beckmann ? kNdfBeckmann : kNdfGgx);
     materials.push_back({glm::vec4(m.f0, ndf), glm::vec4(m.diffuse, m.normal_map_tiling),
                          glm::vec4(m.alpha, m.rho, m.anisotropy_rotation),
-                         glm::vec4(g.log_density, g.relative_area, g.max_anisotropy, 0.0f), glm::vec4(m.emission, 0.0f),
+                         glint_record(m), glm::vec4(m.emission, 0.0f),
                          x.base_color, glm::vec4(x.metallic, x.roughness, x.anisotropy, 0.0f),
                          glm::vec4(x.dielectric_f0, 0.0f)});
     normal_maps_.push_back(m.normal_map ? upload_normal_map(*m.normal_map) : NormalMapTextures{});
     glinty_.push_back(m.glints.has_value());
+    binomial_glinty_.push_back(m.binomial_glints.has_value());
     textures_.push_back(material_textures(m));
   }
   for (const auto& m : scene.materials)

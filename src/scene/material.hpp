@@ -25,6 +25,16 @@ struct GlintParams {
   float max_anisotropy = 4.0f;   ///< clamp of the footprint ellipse's eccentricity (2021's default)
 };
 
+/// A glinty material of Deliot & Belcour 2023 (binomial laws on anisotropic grids): discrete
+/// microfacets counted by a binomial law whose expectation is the smooth GGX NDF of the material's
+/// alpha (docs/methods.md#deliot2023). Other methods shade its smooth GGX limit.
+struct BinomialGlintParams {
+  float log_density = 20.0f;           ///< ln of the number of microfacets per unit of uv area
+  float microfacet_roughness = 0.02f;  ///< the paper's R: p = R D(h) / D(0), a facet's share of the lobe
+  float density_randomization = 0.0f;  ///< standard deviation of ln density between surface cells
+  float slope_grid_scale = 16.0f;      ///< slope cells per unit of the projected half vector h.xy
+};
+
 /// An 8-bit RGBA texture of material parameters, row 0 at v = 0 (glintlab's uv: v up, so an image
 /// file's bottom row comes first).
 struct MaterialTexture {
@@ -68,6 +78,7 @@ struct Material {
   float normal_map_tiling = 1.0f; ///< repeats of the normal map per unit of uv
   glm::mat3 normal_map_transform{1.0f};  ///< then this affine map of uv (KHR_texture_transform)
   std::optional<GlintParams> glints;  ///< set for glinty materials (then ndf is Beckmann)
+  std::optional<BinomialGlintParams> binomial_glints;  ///< set for binomial-glints materials (ndf GGX)
   /// Set for materials whose parameters vary per texel (glTF); then f0, diffuse and alpha above
   /// are those of the factors alone.
   std::optional<TexturedMetalRough> textures;

@@ -32,6 +32,8 @@ std::uint64_t Scene::content_hash() const {
     h.value(m.rho);
     h.value(m.glints.has_value());
     if (m.glints) h.value(*m.glints);
+    h.value(m.binomial_glints.has_value());
+    if (m.binomial_glints) h.value(*m.binomial_glints);
     h.value(m.f0);
     h.value(m.diffuse);
     h.value(m.normal_map_tiling);

@@ -143,13 +143,32 @@ void parse_glints(TomlReader& r, Material& m) {
   m.glints = g;
 }
 
+// The keys of a binomial-glints material (docs/scene-format.md; Deliot & Belcour 2023): discrete
+// microfacets whose expected NDF is GGX of roughness alpha.
+void parse_binomial_glints(TomlReader& r, Material& m) {
+  if (r.has("ndf")) r.fail("ndf", "is not a key of a binomial-glints material; its NDF is GGX (of roughness alpha)");
+  m.ndf = Ndf::GGX;
+  m.alpha = r.get_vec2("alpha", glm::vec2(0.2f), 0.01, 1.0);
+  BinomialGlintParams g;
+  g.log_density = static_cast<float>(r.get_number("log_density", g.log_density, 0.0, 50.0));
+  g.microfacet_roughness =
+      static_cast<float>(r.get_number("microfacet_roughness", g.microfacet_roughness, 1e-4, 1.0));
+  g.density_randomization =
+      static_cast<float>(r.get_number("density_randomization", g.density_randomization, 0.0, 10.0));
+  g.slope_grid_scale = static_cast<float>(r.get_number("slope_grid_scale", g.slope_grid_scale, 0.1, 1000.0));
+  m.binomial_glints = g;
+}
+
 Material parse_material(TomlReader r, const std::filesystem::path& base_dir) {
   Material m;
   m.name = r.require_string("name");
-  if (r.get_string("type", "microfacet", {"microfacet", "glinty"}) == "glinty") {
+  const std::string type = r.get_string("type", "microfacet", {"microfacet", "glinty", "binomial-glints"});
+  if (type == "glinty") {
     for (const char* key : {"alpha", "ndf"})
       if (r.has(key)) r.fail(key, "is not a key of a glinty material; it has sigma (alpha = sqrt(2) sigma) and a Beckmann NDF");
     parse_glints(r, m);
+  } else if (type == "binomial-glints") {
+    parse_binomial_glints(r, m);
   } else {
     m.ndf = r.get_string("ndf", "ggx", {"ggx", "beckmann"}) == "ggx" ? Ndf::GGX : Ndf::Beckmann;
     m.alpha = r.get_vec2("alpha", m.alpha, 0.0, 1.0);

@@ -18,43 +18,70 @@ TEST(GlContext, IsOpenGL45Core) {
   EXPECT_FALSE(info.renderer.empty());
 }
 
-TEST(Shaders, EveryMethodAndPassCompiles) {
-  LightRanges every_kind;  // two lights of each kind
-  for (int k = 0; k < static_cast<int>(all_light_kinds().size()); ++k) every_kind.emplace_back(2 * k, 2 * k + 2);
+namespace {
+
+// Every method's module and the passes that take the $METHOD slot.
+std::vector<std::string> every_shading_module() {
   std::vector<std::string> modules{"passes/reference.glsl", "passes/unshaded.glsl"};
   for (const auto& m : all_methods()) {
     EXPECT_TRUE(shaders().exists(m.module_path())) << m.id;
     modules.push_back(method_program_module(shaders(), m));
   }
-  for (const auto& module : modules)
-    for (bool normal_map : {false, true})
-      for (bool glints : {false, true})
-        for (bool textures : {false, true}) {
-          if (glints && textures) continue;  // a glinty material's parameters are constants
-          EXPECT_NO_THROW(shaders().graphics("passes/forward.vert", "passes/forward.frag",
-                                             forward_variant(module, every_kind, {normal_map, glints, textures})))
-              << module << (normal_map ? " with a normal map" : "") << (glints ? ", glinty" : "")
-              << (textures ? ", textured" : "");
-        }
+  return modules;
+}
+
+LightRanges two_lights_of_every_kind() {
+  LightRanges every_kind;
+  for (int k = 0; k < static_cast<int>(all_light_kinds().size()); ++k) every_kind.emplace_back(2 * k, 2 * k + 2);
+  return every_kind;
+}
+
+void expect_compiles(const std::string& module, MaterialVariant v) {
+  EXPECT_NO_THROW(shaders().graphics("passes/forward.vert", "passes/forward.frag",
+                                     forward_variant(module, two_lights_of_every_kind(), v)))
+      << module << (v.normal_map ? " with a normal map" : "") << (v.glints ? ", glinty" : "")
+      << (v.textures ? ", textured" : "") << (v.binomial_glints ? ", binomial glints" : "");
+}
+
+}  // namespace
+
+// Every module in every material variant, one variant family per test: compiling them all in one
+// test outlasts ctest's timeout on llvmpipe under load.
+TEST(Shaders, EveryMethodAndPassCompiles) {
+  for (const auto& module : every_shading_module())
+    for (bool normal_map : {false, true}) expect_compiles(module, {normal_map, false, false, false});
   EXPECT_NO_THROW(shaders().graphics("passes/forward.vert", "passes/emitter.frag"));
   EXPECT_NO_THROW(shaders().compute("passes/downsample.comp"));
+}
+
+TEST(Shaders, EveryMethodAndPassCompilesForGlints) {
+  for (const auto& module : every_shading_module())
+    for (bool normal_map : {false, true}) expect_compiles(module, {normal_map, true, false, false});
+}
+
+// (A glinty material's parameters are constants: no textured glinty variant.)
+TEST(Shaders, EveryMethodAndPassCompilesForTextures) {
+  for (const auto& module : every_shading_module())
+    for (bool normal_map : {false, true}) expect_compiles(module, {normal_map, false, true, false});
+}
+
+// The binomial-glints variant: its parameters are constants and it has no Chermain glints, so it
+// varies only with the normal map.
+TEST(Shaders, EveryMethodAndPassCompilesForBinomialGlints) {
+  for (const auto& module : every_shading_module())
+    for (bool normal_map : {false, true}) expect_compiles(module, {normal_map, false, false, true});
 }
 
 // Every other choice of each method's compile-time parameters (ParamDecl::compile_time), the
 // others at their defaults, in the plain material variant: the choices select code that does not
 // depend on the material's variant, which EveryMethodAndPassCompiles covers at the defaults.
 TEST(Shaders, EveryChoiceOfACompileTimeParameterCompiles) {
-  LightRanges every_kind;  // two lights of each kind
-  for (int k = 0; k < static_cast<int>(all_light_kinds().size()); ++k) every_kind.emplace_back(2 * k, 2 * k + 2);
   int compiled = 0;
   for (const auto& m : all_methods())
     for (const auto& p : m.params)
       for (std::size_t c = 0; p.compile_time && c < p.choices.size(); ++c) {
         if (c == static_cast<std::size_t>(p.default_value)) continue;
-        const std::string module = method_program_module(shaders(), m, {{p.name, static_cast<float>(c)}});
-        EXPECT_NO_THROW(shaders().graphics("passes/forward.vert", "passes/forward.frag",
-                                           forward_variant(module, every_kind, {})))
-            << module;
+        expect_compiles(method_program_module(shaders(), m, {{p.name, static_cast<float>(c)}}), {});
         ++compiled;
       }
   EXPECT_GT(compiled, 0);

@@ -157,3 +157,26 @@ TEST(SceneParser, APathFrameAtTheTargetIsRejectedLikeAStaticCameraThere) {
                                .toml();
   expect_error(keys, {"path", "frame 2", "up"});
 }
+
+TEST(SceneParser, BinomialGlintsMaterialKeysAreCheckedAndNamed) {
+  auto binomial = [](TomlKeys keys) {
+    keys.insert(keys.begin(), {"type", "binomial-glints"});
+    return TestScene().material("g", std::move(keys)).sphere("g").point_light({0, 2, 3});
+  };
+  const Scene s = binomial({{"alpha", 0.3}, {"log_density", 12}, {"microfacet_roughness", 0.03},
+                            {"density_randomization", 0.5}, {"slope_grid_scale", 8}})
+                      .scene();
+  ASSERT_TRUE(s.materials[0].binomial_glints.has_value());
+  EXPECT_FALSE(s.materials[0].glints.has_value());
+  EXPECT_EQ(s.materials[0].ndf, Ndf::GGX);
+  EXPECT_FLOAT_EQ(s.materials[0].binomial_glints->microfacet_roughness, 0.03f);
+  EXPECT_FLOAT_EQ(s.materials[0].binomial_glints->slope_grid_scale, 8.0f);
+  expect_error(binomial({{"alpha", 0.0}}).toml(), {"alpha", "0.01 .. 1"});
+  expect_error(binomial({{"log_density", 60}}).toml(), {"log_density", "60", "0 .. 50"});
+  expect_error(binomial({{"microfacet_roughness", 2}}).toml(), {"microfacet_roughness", "2", "0.0001 .. 1"});
+  expect_error(binomial({{"density_randomization", -1}}).toml(), {"density_randomization", "-1", "0 .. 10"});
+  expect_error(binomial({{"slope_grid_scale", 0}}).toml(), {"slope_grid_scale", "0.1 .. 1000"});
+  expect_error(binomial({{"ndf", "beckmann"}}).toml(), {"ndf", "GGX"});
+  expect_error(binomial({{"sigma", 0.1}}).toml(), {"sigma", "not a known key"});
+  expect_error(TestScene().material("g", {{"type", "sparkly"}}).toml(), {"type", "glinty, binomial-glints"});
+}

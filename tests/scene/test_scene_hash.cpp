@@ -39,7 +39,8 @@ static_assert(field_count<Camera>() == 8);
 static_assert(field_count<CameraKey>() == 2);
 static_assert(field_count<CameraPath>() == 6);
 static_assert(field_count<GlintParams>() == 3);
-static_assert(field_count<Material>() == 13);
+static_assert(field_count<BinomialGlintParams>() == 4);
+static_assert(field_count<Material>() == 14);
 static_assert(field_count<TexturedMetalRough>() == 8);
 static_assert(field_count<TextureSlot>() == 2);
 static_assert(field_count<MaterialTexture>() == 5);
@@ -65,6 +66,7 @@ Scene base_scene() {
                                             {"rho", 0.2},
                                             {"f0", 0.9},
                                             {"normal_map", TomlKeys{{"generator", "bumps"}, {"resolution", 8}}}})
+                .material("binomial", {{"type", "binomial-glints"}, {"alpha", 0.3}})
                 .sphere("plain", {{"segments", 8}})
                 .plane("glinty")
                 .light("quad", {{"position", {0, 2, 0}}, {"direction", {0, -1, 0}}, {"up", {1, 0, 0}}})
@@ -74,6 +76,7 @@ Scene base_scene() {
                 .scene();
   EXPECT_TRUE(s.materials[1].glints.has_value());
   EXPECT_NE(s.materials[1].normal_map, nullptr);
+  EXPECT_TRUE(s.materials[2].binomial_glints.has_value());
   // A textured material (as glTF import makes them), every slot with a texture.
   Material textured = s.materials[0];
   textured.name = "textured";
@@ -86,7 +89,7 @@ Scene base_scene() {
   return s;
 }
 
-TexturedMetalRough& textured_of(Scene& s) { return *s.materials[2].textures; }
+TexturedMetalRough& textured_of(Scene& s) { return *s.materials[3].textures; }
 
 std::shared_ptr<MaterialTexture> texture_of(Scene& s) {
   auto t = std::make_shared<MaterialTexture>(*textured_of(s).base_color_texture.texture);
@@ -128,7 +131,7 @@ const std::vector<FieldChange> kHashed = {
     {"material.normal_map_transform", [](Scene& s) { s.materials[1].normal_map_transform[2][0] += 0.5f; }},
     {"material.anisotropy_rotation", [](Scene& s) { s.materials[0].anisotropy_rotation += 0.1f; }},
     {"material.emission", [](Scene& s) { s.materials[0].emission.r += 0.1f; }},
-    {"material.textures (one -> none)", [](Scene& s) { s.materials[2].textures.reset(); }},
+    {"material.textures (one -> none)", [](Scene& s) { s.materials[3].textures.reset(); }},
     {"textured.base_color", [](Scene& s) { textured_of(s).base_color.a *= 0.5f; }},
     {"textured.metallic", [](Scene& s) { textured_of(s).metallic *= 0.5f; }},
     {"textured.roughness", [](Scene& s) { textured_of(s).roughness *= 0.5f; }},
@@ -148,6 +151,11 @@ const std::vector<FieldChange> kHashed = {
     {"glints.log_density", [](Scene& s) { s.materials[1].glints->log_density += 1; }},
     {"glints.relative_area", [](Scene& s) { s.materials[1].glints->relative_area *= 0.5f; }},
     {"glints.max_anisotropy", [](Scene& s) { s.materials[1].glints->max_anisotropy += 1; }},
+    {"material.binomial_glints (one -> none)", [](Scene& s) { s.materials[2].binomial_glints.reset(); }},
+    {"binomial.log_density", [](Scene& s) { s.materials[2].binomial_glints->log_density += 1; }},
+    {"binomial.microfacet_roughness", [](Scene& s) { s.materials[2].binomial_glints->microfacet_roughness *= 0.5f; }},
+    {"binomial.density_randomization", [](Scene& s) { s.materials[2].binomial_glints->density_randomization += 1; }},
+    {"binomial.slope_grid_scale", [](Scene& s) { s.materials[2].binomial_glints->slope_grid_scale *= 2; }},
     {"normal_map.width", [](Scene& s) { normal_map_of(s.materials[1])->width += 1; }},
     {"normal_map.height", [](Scene& s) { normal_map_of(s.materials[1])->height += 1; }},
     {"normal_map.normals", [](Scene& s) { normal_map_of(s.materials[1])->normals[5].x += 0.01f; }},
@@ -235,8 +243,10 @@ TEST(SceneHash, EveryFieldIsListedOnce) {
   EXPECT_EQ(fields("camera."), static_cast<int>(field_count<Camera>()));
   EXPECT_EQ(fields("path."), static_cast<int>(field_count<CameraPath>()));
   EXPECT_EQ(fields("glints."), static_cast<int>(field_count<GlintParams>()));
-  // material.normal_map, .glints and .textures are listed by what changes ("none -> one").
-  EXPECT_EQ(fields("material.") + 3, static_cast<int>(field_count<Material>()));
+  EXPECT_EQ(fields("binomial."), static_cast<int>(field_count<BinomialGlintParams>()));
+  // material.normal_map, .glints, .binomial_glints and .textures are listed by what changes
+  // ("none -> one").
+  EXPECT_EQ(fields("material.") + 4, static_cast<int>(field_count<Material>()));
   EXPECT_EQ(fields("textured."), static_cast<int>(field_count<TexturedMetalRough>()));
   EXPECT_EQ(fields("slot.") + 1, static_cast<int>(field_count<TextureSlot>()));
   EXPECT_EQ(fields("texture."), static_cast<int>(field_count<MaterialTexture>()));

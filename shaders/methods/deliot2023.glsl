@@ -1,0 +1,27 @@
+// Method `deliot2023`: Deliot & Belcour 2023, glinty appearance by distributed binomial laws on
+// anisotropic grids, with the fixes of Kneiphof & Klein's code (common/binomial_*.glsl). Its
+// material is the binomial-glints kind (MATERIAL_BINOMIAL_GLINTS); every other material is shaded
+// as by `conventional`. Descriptor: src/shading/methods/deliot2023.cpp; docs/methods.md#deliot2023.
+#include "common/binomial_shading.glsl"
+#include "common/lobe.glsl"
+#include "common/lobe_shading.glsl"
+
+#if MATERIAL_BINOMIAL_GLINTS
+BinomialSurface gBinomial;
+#endif
+
+void prepareSurface(inout Surface s) {
+#if MATERIAL_BINOMIAL_GLINTS
+  gBinomial = prepareBinomialGlints(s, materials[uMaterial], param_screen_space_scale);
+#endif
+}
+
+Radiance shadeLight(Surface s, LightData L) {
+#if MATERIAL_BINOMIAL_GLINTS
+  vec3 l, irradiance;
+  binomialLightIncidence(L, s.position, l, irradiance);
+  return shadeBinomialGlints(s, gBinomial, l, irradiance, int(param_remaining_count + 0.5));
+#else
+  return shadeLobe(s, L, materialLobe(s));
+#endif
+}

@@ -1,0 +1,34 @@
+// Descriptor of `deliot2023`: glinty appearance by distributed binomial laws on anisotropic
+// grids (Deliot & Belcour 2023), with the fixes its public code needed.
+#include "shading/registry.hpp"
+
+namespace glintlab {
+
+MethodDescriptor deliot2023_method() {
+  return {
+      .id = "deliot2023",
+      .title = "Deliot & Belcour 2023 (binomial laws on anisotropic grids)",
+      .citation = "T. Deliot, L. Belcour, Real-Time Rendering of Glinty Appearance using Distributed Binomial Laws "
+                  "on Anisotropic Grids, HPG 2023 (CGF 42(8))",
+      .summary = "A binomial-glints material's discrete microfacets, counted: the pixel's uv footprint ellipse "
+                 "picks four anisotropic grids (level of detail, anisotropy and angle, interpolated "
+                 "tetrahedrally); in each, a triangle grid of surface cells with random density and slope-grid "
+                 "offset per vertex; per vertex and cell of a slope grid over the projected half vector, the "
+                 "facets that reflect, binomial with p = R D(h) / D(0), drawn as a gate and an approximation of "
+                 "the remaining count. The expected NDF is the material's GGX. Lights with extent are points at "
+                 "their centre (the paper's ad-hoc R stands for their size). Procedural random numbers: no "
+                 "table. Other materials are shaded as by conventional.",
+      .params = {{"screen_space_scale", 1.5f, 0.5f, 8.0f,
+                  "the glints' smallest size in pixels: grid cells this many pixels across the footprint's minor "
+                  "axis (1 aliases, at Shannon's limit; the paper recommends 1.5)"},
+                 {"remaining_count", 0, 0, 1,
+                  "the law of the reflecting facets besides the first: a lognormal with the binomial's exact "
+                  "conditional mean and variance (E[D_glint] = D(h) at every density), or the paper's Gaussian "
+                  "binomial(n - 1, p), clamped to [0, n - 1] (biased up where about one facet reflects)",
+                  {"lognormal", "gaussian"}}},
+  };
+}
+
+GLINTLAB_REGISTER_METHOD(deliot2023_method, 820);
+
+}  // namespace glintlab

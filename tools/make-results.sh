@@ -4,7 +4,8 @@
 #   tools/make-results.sh              everything (about 1.5 hours on 2 cores cold; references are
 #                                      cached, so a second run takes minutes)
 #   tools/make-results.sh SECTION      one section, spliced into docs/results.md between its
-#                                      markers: ground-truth, aa, podee, glints, area-lights, speed
+#                                      markers: ground-truth, aa, podee, glints, binomial-glints,
+#                                      area-lights, speed
 # It installs what it uses (jq, ffmpeg) and builds what it needs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -381,6 +382,81 @@ TEXT
   echo
 }
 
+# A method's field in an animate output directory: anim DIR METHOD KEY (mean_rmse, flicker).
+anim() { jq -r --arg m "$2" --arg k "$3" '.methods[] | select(.method == $m) | .[$k]' "$1/metrics.json"; }
+
+binomial_glints_section() {
+  local dir="$out/binomial" S="--width 320 --height 180" A="--width 160 --height 90 --frames 8 --spp 64"
+  local B2="--width 640 --height 360 --bench-frames 5"
+  mkdir -p "$dir"
+  # The same scene for the Chermain methods: type glinty, the same ln density per uv area and
+  # sigma = alpha / sqrt(2) (Beckmann alpha = sqrt(2) sigma = the GGX alpha); R has no counterpart.
+  $B scenes --print glint-binomial | sed -e 's/type = "binomial-glints"/type = "glinty"/' \
+    -e 's/^alpha = 0.25$/sigma = 0.1768/' -e 's/^alpha = 0.35$/sigma = 0.2475/' \
+    -e '/^microfacet_roughness/d; /^density_randomization/d; /^slope_grid_scale/d' > "$dir/beckmann.toml"
+  $B compare -q --scene builtin:glint-binomial --methods conventional,deliot2023 --spp 256 $S -o "$dir/bin" > /dev/null
+  $B compare -q --scene builtin:glint-binomial --methods deliot2023 --param deliot2023.remaining_count=gaussian \
+    --spp 256 $S -o "$dir/bin-gauss" > /dev/null
+  $B compare -q --scene "$dir/beckmann.toml" --methods conventional,chermain2020,chermain2021 --spp 256 $S \
+    -o "$dir/beck" > /dev/null
+  $B animate -q --scene builtin:glint-binomial --methods conventional,deliot2023 $A -o "$dir/anim-bin" > /dev/null
+  $B animate -q --scene builtin:glint-binomial --methods deliot2023 --param deliot2023.remaining_count=gaussian $A \
+    -o "$dir/anim-bin-gauss" > /dev/null
+  $B animate -q --scene "$dir/beckmann.toml" --methods conventional,chermain2020,chermain2021 $A -o "$dir/anim-beck" > /dev/null
+  $B bench -q --scene builtin:glint-binomial --methods conventional,deliot2023 $B2 -o "$dir/bench-bin" > /dev/null
+  $B bench -q --scene "$dir/beckmann.toml" --methods conventional,chermain2020,chermain2021 $B2 -o "$dir/bench-beck" > /dev/null
+  cp "$dir/bin/reference.png" docs/images/glint-binomial-reference.png
+  cp "$dir/bin/deliot2023.png" docs/images/glint-binomial-deliot2023.png
+  cp "$dir/beck/reference.png" docs/images/glint-binomial-beckmann-reference.png
+  cp "$dir/beck/chermain2021.png" docs/images/glint-binomial-beckmann-chermain2021.png
+  row() {  # row LABEL COMPARE_DIR ANIMATE_DIR METHOD
+    echo "| $1 | $(fmt %.4f "$(metric "$2" "$4" rmse)") | $(fmt %.3f "$(metric "$2" "$4" energy_ratio)")" \
+      "| $(fmt %.4f "$(anim "$3" "$4" mean_rmse)") | $(fmt %.4f "$(anim "$3" "$4" flicker)") |"
+  }
+  echo "## Binomial glints: Deliot & Belcour 2023"
+  echo
+  echo "builtin:glint-binomial (binomial-glints materials) and the same scene made glinty for the Chermain"
+  echo "methods: \`type = \"glinty\"\`, the same ln density per uv area and sigma = alpha / sqrt(2) (Beckmann"
+  echo "alpha = sqrt(2) sigma = the GGX alpha). R has no counterpart in Chermain's model (its facets' own"
+  echo "lobe, sigma_lobe / sigma_dict = 0.057, corresponds to R ~ 0.003; the scene uses 0.02 and 0.01)."
+  echo "Each method is measured against the reference of the material it renders. RMSE: 320x180,"
+  echo "frame 0, 256 spp. Mean RMSE and flicker: 8 frames at 160x90 against 64-spp references."
+  echo
+  echo "| scene / method | RMSE | energy ratio | mean RMSE (8 frames) | flicker |"
+  echo "| --- | --- | --- | --- | --- |"
+  row "glint-binomial: conventional (smooth GGX limit)" "$dir/bin" "$dir/anim-bin" conventional
+  row "glint-binomial: deliot2023 (lognormal count, default)" "$dir/bin" "$dir/anim-bin" deliot2023
+  row "glint-binomial: deliot2023 (remaining_count=gaussian, the paper's)" "$dir/bin-gauss" "$dir/anim-bin-gauss" deliot2023
+  echo "| (reference noise; flicker floor) | $(fmt %.4f "$(field "$dir/bin" reference_noise_rmse)") | | | $(fmt %.4f "$(field "$dir/anim-bin" flicker_floor)") |"
+  row "matched Beckmann: conventional (smooth limit)" "$dir/beck" "$dir/anim-beck" conventional
+  row "matched Beckmann: chermain2020" "$dir/beck" "$dir/anim-beck" chermain2020
+  row "matched Beckmann: chermain2021" "$dir/beck" "$dir/anim-beck" chermain2021
+  echo "| (reference noise; flicker floor) | $(fmt %.4f "$(field "$dir/beck" reference_noise_rmse)") | | | $(fmt %.4f "$(field "$dir/anim-beck" flicker_floor)") |"
+  echo
+  echo "Pixel RMSE does not reward sparkle (the smooth limit has none); the energy ratio shows the"
+  echo "paper's Gaussian count's bias (docs/methods.md, deliot2023)."
+  echo
+  echo "| builtin:glint-binomial reference | deliot2023 | matched Beckmann reference | chermain2021 |"
+  echo "| --- | --- | --- | --- |"
+  echo "| ![](images/glint-binomial-reference.png) | ![](images/glint-binomial-deliot2023.png) | ![](images/glint-binomial-beckmann-reference.png) | ![](images/glint-binomial-beckmann-chermain2021.png) |"
+  echo
+  echo "Speed: median per frame at 640x360 (\`glintlab bench\`, 5 frames), wall / GL timer ms:"
+  echo
+  echo "| scene | method | wall ms | GL timer ms |"
+  echo "| --- | --- | --- | --- |"
+  local m
+  for m in conventional deliot2023; do
+    echo "| glint-binomial | $m | $(fmt %.1f "$(bench_ms "$dir/bench-bin/bench.json" $m)") | $(fmt %.1f "$(jq -r --arg m $m '.methods[] | select(.method == $m) | .gpu_ms_median' "$dir/bench-bin/bench.json")") |"
+  done
+  for m in conventional chermain2020 chermain2021; do
+    echo "| matched Beckmann | $m | $(fmt %.1f "$(bench_ms "$dir/bench-beck/bench.json" $m)") | $(fmt %.1f "$(jq -r --arg m $m '.methods[] | select(.method == $m) | .gpu_ms_median' "$dir/bench-beck/bench.json")") |"
+  done
+  echo
+  echo "Memory: \`deliot2023\` reads no table and no noise texture (its random numbers are a procedural"
+  echo "pcg4d hash): 0 bytes; the material record stays 128 bytes. The Chermain methods read the glint"
+  echo "dictionary (\`glintlab info\`). Regenerate: \`tools/make-results.sh binomial-glints\`."
+}
+
 # A glossy mirror-coloured plane and sphere (f0 = 1, no diffuse) of GGX roughness $2 under one light
 # of kind $1 (quad, disk, sphere) that crosses the sphere's horizon: area_light_scene KIND ALPHA.
 area_light_scene() {
@@ -459,6 +535,23 @@ area_lights_section() {
     done
   done
   echo
+  # Cost: the same method with each choice on the quad and sphere scenes (alpha 0.1) at 640x360.
+  local choice rp_ms ltc_ms
+  echo "Cost of the choice (\`glintlab bench\`, 640x360, 10 frames, median wall ms per frame):"
+  echo
+  echo "| light | representative point | LTC | LTC / representative point |"
+  echo "| --- | --- | --- | --- |"
+  for kind in quad sphere; do
+    dir="$out/area-lights/$kind-0.1"
+    for choice in representative-point ltc; do
+      $B bench -q --scene "$dir/scene.toml" --methods conventional --param area_lights=$choice --width 640 \
+        --height 360 --bench-frames 10 -o "$dir/bench-$choice" > /dev/null
+    done
+    rp_ms=$(bench_ms "$dir/bench-representative-point/bench.json" conventional)
+    ltc_ms=$(bench_ms "$dir/bench-ltc/bench.json" conventional)
+    echo "| $kind | $(fmt %.1f "$rp_ms") | $(fmt %.1f "$ltc_ms") | $(calc "$ltc_ms / $rp_ms" | xargs printf '%.2f')x |"
+  done
+  echo
   echo "Regenerate: \`tools/make-results.sh area-lights\`."
 }
 
@@ -514,7 +607,7 @@ header() {
 # Prints a section between its markers.
 section() { echo "<!-- section:$1 -->"; "${1//-/_}_section"; echo "<!-- /section:$1 -->"; }
 
-sections="ground-truth aa podee glints area-lights speed"
+sections="ground-truth aa podee glints binomial-glints area-lights speed"
 if [[ $# -gt 0 && "$1" != all ]]; then
   [[ " $sections " == *" $1 "* ]] || { echo "make-results: unknown section '$1'; allowed: all $sections" >&2; exit 2; }
   grep -q "^<!-- section:$1 -->\$" docs/results.md ||

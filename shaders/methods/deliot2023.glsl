@@ -22,6 +22,6 @@ Radiance shadeLight(Surface s, LightData L) {
   binomialLightIncidence(L, s.position, l, irradiance);
   return shadeBinomialGlints(s, gBinomial, l, irradiance, int(param_remaining_count + 0.5));
 #else
-  return shadeLobe(s, L, materialLobe(s));
+  return shadeLobe(s, L, materialLobe(s), float(AREA_LIGHTS_LTC));  // conventional's default
 #endif
 }

@@ -61,6 +61,14 @@ float ltcPolygonIntegral(mat3 Minv, vec3 v[LIGHT_POLYGON_MAX_VERTICES], int coun
   return ltcPolygonFormFactor(p, n);
 }
 
+// The Lambert form factor of the polygon (M^-1 = identity: one clip).
+float ltcPolygonFormFactorClipped(vec3 v[LIGHT_POLYGON_MAX_VERTICES], int count) {
+  vec3 p[LTC_CLIPPED_MAX_VERTICES];
+  for (int i = 0; i < LIGHT_POLYGON_MAX_VERTICES; ++i) p[i] = v[i];
+  for (int i = LIGHT_POLYGON_MAX_VERTICES; i < LTC_CLIPPED_MAX_VERTICES; ++i) p[i] = vec3(0.0);
+  return ltcPolygonFormFactor(p, ltcClipToUpperHalfSpace(p, count));
+}
+
 // The vector form factor of a disk (centre c, orthogonal semi-axes u, w of equal length) under the
 // lobe M^-1, without horizon clipping (Heitz & Hill 2017, sec. 5): M^-1 maps the disk to an ellipse,
 // whose cone from the origin is elliptic. In the ellipse's principal frame (e1, e2 in its plane, e3

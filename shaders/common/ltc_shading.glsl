@@ -34,22 +34,28 @@ mat3 ltcViewFrame(vec3 wo) {
 }
 
 // The form factor of the light seen from s.position under the lobe M^-1 (a matrix acting on
-// local-frame vectors), clipped at the horizon.
-float ltcLightIntegral(Surface s, LightData L, mat3 Minv) {
+// local-frame vectors), clipped at the horizon. `lambert` (a constant at every call): M^-1 is the
+// identity, so a polygon needs one clip and a disk form facing the point (spheres, suns) is a
+// circular cone, whose vector form factor is sin^2 of its half-angle along its axis.
+float ltcLightIntegral(Surface s, LightData L, mat3 Minv, const bool lambert) {
   if (lightForm(L) == LIGHT_FORM_POLYGON) {
     vec3 vertex[LIGHT_POLYGON_MAX_VERTICES];
     int count = lightPolygonForm(L, vertex);
     for (int i = 0; i < LIGHT_POLYGON_MAX_VERTICES; ++i) vertex[i] = toLocal(s, vertex[i] - s.position);
-    return ltcPolygonIntegral(Minv, vertex, count);
+    return lambert ? ltcPolygonFormFactorClipped(vertex, count) : ltcPolygonIntegral(Minv, vertex, count);
   }
   LightDisk disk = lightDiskForm(L, s.position);
   // Inside a sphere light every direction sees it: the LTC integrates to 1 over the hemisphere.
   if (disk.angularRadius >= 0.5 * PI - 1e-4) return 1.0;
+  vec3 c = disk.centre - s.position;
+  if (lambert && disk.facing) {
+    float sinHalf = sin(disk.angularRadius);
+    return ltcSphereFormFactor(sinHalf * sinHalf * normalize(toLocal(s, c)));
+  }
   vec3 n = disk.normal;
   vec3 u = normalize(abs(n.x) < 0.9 ? cross(n, vec3(1.0, 0.0, 0.0)) : cross(n, vec3(0.0, 1.0, 0.0)));
   vec3 w = cross(n, u);
   // Only the cone matters: the disk scaled to unit size keeps far and wide lights within float range.
-  vec3 c = disk.centre - s.position;
   float scale = 1.0 / max(length(c), disk.radius);
   vec3 F = ltcDiskVectorFormFactor(Minv, toLocal(s, c * scale), toLocal(s, u * (disk.radius * scale)),
                                    toLocal(s, w * (disk.radius * scale)));
@@ -63,13 +69,13 @@ Radiance shadeLobeLtc(Surface s, LightData L, Lobe lobe, vec3 wo) {
   vec3 centreDir = lightCentreDirection(L, s.position);
   if (lightSolidAngle(L, s.position, centreDir) <= 0.0) return result;  // the emitting side faces away
   vec3 radiance = lightRadiance(L);
-  result.diffuse = s.diffuse * ltcLightIntegral(s, L, mat3(1.0)) * radiance;
+  result.diffuse = s.diffuse * ltcLightIntegral(s, L, mat3(1.0), true) * radiance;
 
   float alpha = ltcLobeAlpha(lobe);
   mat3 Minv = ltcInverseMatrix(uLtcGgx, alpha, wo.z) * ltcViewFrame(wo);
   vec4 terms = ltcTerms(uLtcGgx, alpha, wo.z);
   // The lobe times Schlick's Fresnel integrated over the hemisphere (the tables' magnitude and Fresnel terms).
   vec3 albedo = ltcSpecularScale(terms, s.f0);
-  result.specular = albedo * ltcLightIntegral(s, L, Minv) * radiance;
+  result.specular = albedo * ltcLightIntegral(s, L, Minv, false) * radiance;
   return result;
 }

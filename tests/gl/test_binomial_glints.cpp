@@ -9,6 +9,7 @@
 #include <map>
 #include <random>
 
+#include "brdf_sweep.hpp"
 #include "gl_fixture.hpp"
 
 using namespace glintlab;
@@ -224,19 +225,7 @@ TEST(BinomialFootprint, GridWeightsSumToOneAndChangeContinuouslyWithTheFootprint
 }
 
 TEST(BinomialGlints, BrdfIsFiniteAndNonNegativeInARandomizedSweep) {
-  std::mt19937 rng(23);
-  std::uniform_real_distribution<float> u(0.0f, 1.0f);
-  auto dir = [&] {
-    glm::vec3 v(2 * u(rng) - 1, 2 * u(rng) - 1, 2.2f * u(rng) - 0.2f);
-    return glm::length(v) > 1e-3f ? glm::normalize(v) : glm::vec3(0, 0, 1);
-  };
-  auto magnitude = [&] { return u(rng) < 0.1f ? 0.0f : std::pow(10.0f, -9.0f + 12.0f * u(rng)); };
-  std::vector<glm::vec4> a, b;
-  for (int i = 0; i < 1 << 13; ++i) {
-    const glm::vec3 wo = dir(), wi = dir();
-    a.emplace_back(wo, magnitude());
-    b.emplace_back(wi, static_cast<float>(i));
-  }
+  const BrdfSweepInputs in = brdf_sweep_inputs(23, 1 << 13, 3.0f);
   const auto r = evaluate_glsl(kIncludes, R"(
 float rand(float i, float k) { return fract(sin(i * 12.9898 + k * 78.233) * 43758.5453); }
 vec4 evaluate(vec4 a, vec4 b) {
@@ -255,7 +244,7 @@ vec4 evaluate(vec4 a, vec4 b) {
   bool below = a.z <= 0.0 || b.z <= 0.0;
   return vec4(l.x, g.x, below ? max(l.x, g.x) : 0.0, 0.0);
 })",
-                               a, b);
+                               in.a, in.b);
   int lit = 0;
   for (std::size_t i = 0; i < r.size(); ++i) {
     ASSERT_TRUE(std::isfinite(r[i].x) && std::isfinite(r[i].y)) << "case " << i;

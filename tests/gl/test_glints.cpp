@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "brdf_sweep.hpp"
 #include "gl_fixture.hpp"
 #include "glints/glint_dictionary.hpp"
 #include "render/tables/gpu_tables.hpp"
@@ -147,20 +148,7 @@ TEST(Glints, PatchDistributionConvergesToRotatedAnisotropicBeckmannWithRho) {
 
 TEST(Glints, BrdfIsFiniteAndNonNegativeInARandomizedSweep) {
   bind_dictionary();
-  std::mt19937 rng(17);
-  std::uniform_real_distribution<float> u(0.0f, 1.0f);
-  auto dir = [&] {
-    glm::vec3 v(2 * u(rng) - 1, 2 * u(rng) - 1, 2.2f * u(rng) - 0.2f);
-    return glm::length(v) > 1e-3f ? glm::normalize(v) : glm::vec3(0, 0, 1);
-  };
-  auto magnitude = [&] { return u(rng) < 0.1f ? 0.0f : std::pow(10.0f, -9.0f + 11.0f * u(rng)); };
-  std::vector<glm::vec4> a, b;
-  for (int i = 0; i < 1 << 14; ++i) {
-    const glm::vec3 wo = dir(), wi = dir();
-    // a: wo and the footprint's scale; b: wi and the case's index (the GLSL draws the rest).
-    a.emplace_back(wo, magnitude());
-    b.emplace_back(wi, static_cast<float>(i));
-  }
+  const BrdfSweepInputs in = brdf_sweep_inputs(17, 1 << 14, 2.0f);
   const auto r = evaluate_glsl(kIncludes, R"(
 float rand(float i, float k) { return fract(sin(i * 12.9898 + k * 78.233) * 43758.5453); }
 vec4 evaluate(vec4 a, vec4 b) {
@@ -181,7 +169,7 @@ vec4 evaluate(vec4 a, vec4 b) {
   bool below = a.z <= 0.0 || b.z <= 0.0;
   return vec4(plain.x, filtered.x, below ? max(plain.x, filtered.x) : 0.0, 0.0);
 })",
-                               a, b);
+                               in.a, in.b);
   int lit = 0;
   for (std::size_t i = 0; i < r.size(); ++i) {
     ASSERT_TRUE(std::isfinite(r[i].x) && std::isfinite(r[i].y)) << "case " << i;

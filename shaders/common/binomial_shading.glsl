@@ -24,19 +24,6 @@ vec3 binomialSpecularCos(BinomialSurface b, vec3 wo, vec3 wi, vec3 f0, vec2 alph
   return fresnelSchlick(f0, dot(wo, h)) * (0.25 * d * smithG2OverCos(NDF_GGX, wo, wi, alpha));
 }
 
-// Where a light shines from, and its irradiance at normal incidence, as the paper has it: delta
-// lights exactly; lights with extent as a point at their centre carrying radiance x solid angle,
-// their size left to the ad-hoc R (the same as glint_shading.glsl's for Chermain's glints; a
-// representative point would move with each glint's own lobe, and the glints with it).
-void binomialLightIncidence(LightData L, vec3 p, out vec3 l, out vec3 irradiance) {
-  if (!lightHasExtent(L)) {
-    deltaLightIncidence(L, p, l, irradiance);
-  } else {
-    l = lightCentreDirection(L, p);
-    irradiance = lightRadiance(L) * lightSolidAngle(L, p, l);
-  }
-}
-
 // Diffuse and glinty specular radiance from light direction l with the given irradiance.
 Radiance shadeBinomialGlints(Surface s, BinomialSurface b, vec3 l, vec3 irradiance, int model) {
   vec3 wo = toLocal(s, s.view), wi = toLocal(s, l);

@@ -47,18 +47,6 @@ vec3 glintSpecularCos(GlintSurface g, vec3 wo, vec3 wi, vec3 f0, vec2 kernelDx, 
   return fresnelSchlick(f0, dot(wo, h)) * (d * masking / (4.0 * wo.z));
 }
 
-// Where a light shines from, and the irradiance it gives at normal incidence: exact for delta
-// lights; lights with extent as a point at their centre carrying radiance x solid angle (the
-// glinty BRDFs of 2020/2021 are defined for point and directional lights only).
-void glintLightIncidence(LightData L, vec3 p, out vec3 l, out vec3 irradiance) {
-  if (!lightHasExtent(L)) {
-    deltaLightIncidence(L, p, l, irradiance);
-  } else {
-    l = lightCentreDirection(L, p);
-    irradiance = lightRadiance(L) * lightSolidAngle(L, p, l);
-  }
-}
-
 // Diffuse and glinty specular radiance from light direction l with the given irradiance.
 Radiance shadeGlints(Surface s, GlintSurface g, vec3 l, vec3 irradiance, vec2 kernelDx, vec2 kernelDy, bool filtered) {
   vec3 wo = toLocal(s, s.view), wi = toLocal(s, l);

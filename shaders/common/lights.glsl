@@ -26,3 +26,16 @@
 #include "common/light_data.glsl"
 #include "common/light_shapes.glsl"
 #include "generated/light_kinds.glsl"
+
+// Where a light shines from and its irradiance at normal incidence, a light with extent taken as a
+// point at its centre carrying radiance x solid angle: the form the glint models are defined for
+// (Chermain et al.'s BRDFs and Deliot & Belcour's counting take point and directional lights; a
+// representative point would move with each glint's own lobe, and the glints with it).
+void centreLightIncidence(LightData L, vec3 p, out vec3 l, out vec3 irradiance) {
+  if (!lightHasExtent(L)) {
+    deltaLightIncidence(L, p, l, irradiance);
+  } else {
+    l = lightCentreDirection(L, p);
+    irradiance = lightRadiance(L) * lightSolidAngle(L, p, l);
+  }
+}

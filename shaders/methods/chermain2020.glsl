@@ -16,7 +16,7 @@ void prepareSurface(inout Surface s) {
 Radiance shadeLight(Surface s, LightData L) {
 #if MATERIAL_GLINTS
   vec3 l, irradiance;
-  glintLightIncidence(L, s.position, l, irradiance);
+  centreLightIncidence(L, s.position, l, irradiance);
   return shadeGlints(s, gGlint, l, irradiance, vec2(0.0), vec2(0.0), false);
 #else
   return shadeLobe(s, L, materialLobe(s));

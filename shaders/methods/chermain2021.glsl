@@ -27,7 +27,7 @@ void prepareSurface(inout Surface s) {
 Radiance shadeLight(Surface s, LightData L) {
 #if MATERIAL_GLINTS
   vec3 l, irradiance;
-  glintLightIncidence(L, s.position, l, irradiance);
+  centreLightIncidence(L, s.position, l, irradiance);
   vec2 dx, dy;
   halfVectorDerivatives(s, l, param_derivatives > 0.5, dx, dy);  // first: uniform control flow
   return shadeGlints(s, gGlint, l, irradiance, param_kernel * dx, param_kernel * dy, true);

@@ -19,7 +19,7 @@ void prepareSurface(inout Surface s) {
 Radiance shadeLight(Surface s, LightData L) {
 #if MATERIAL_BINOMIAL_GLINTS
   vec3 l, irradiance;
-  binomialLightIncidence(L, s.position, l, irradiance);
+  centreLightIncidence(L, s.position, l, irradiance);
   return shadeBinomialGlints(s, gBinomial, l, irradiance, int(param_remaining_count + 0.5));
 #else
   return shadeLobe(s, L, materialLobe(s), float(AREA_LIGHTS_LTC));  // conventional's default

@@ -65,18 +65,11 @@ BinomialSurface binomialSurface(vec2 uv, BinomialFootprint footprint, float logD
   return b;
 }
 
-// D_glint(h) for the GGX NDF of roughness alpha with REMAINING_* model `model`. A facet reflects
-// with probability p = R D(h) / D(0) = R / e^2 (GGX: D = 1 / (pi ax ay e^2), e = 1 at h = n).
-// Each vertex's slope grid gives every cell its own uniform (the gate) and normal (the count)
-// numbers; the counts at the four cells around h.xy are blended bilinearly. E[gate x count] =
-// n p, so E[sum] = p and E[D_glint] = p D(0) / R = D(h).
-float binomialNdf(BinomialSurface b, vec3 h, vec2 alpha, int model) {
-  if (h.z <= 0.0) return 0.0;
-  vec2 a = max(alpha, vec2(MIN_ALPHA));
-  float e = (h.x * h.x) / (a.x * a.x) + (h.y * h.y) / (a.y * a.y) + h.z * h.z;
-  float R = b.microfacetRoughness;
-  float p = min(R / (e * e), 1.0);
-  vec2 slope = h.xy * b.slopeGridScale;
+// Of the footprint's facets, the share that reflect, each with probability p, counted at the
+// slope-grid position `slope` (h.xy x slopeGridScale): each vertex's slope grid gives every cell its
+// own uniform (the gate) and normal (the count) numbers; the counts at the four cells around the
+// position are blended bilinearly. E[gate x count] = n p, so E[share] = p.
+float binomialReflectingShare(BinomialSurface b, vec2 slope, float p, int model) {
   float sum = 0.0;
   for (int i = 0; i < BINOMIAL_VERTICES; ++i) {
     BinomialVertex v = b.vertices[i];
@@ -95,5 +88,17 @@ float binomialNdf(BinomialSurface b, vec3 h, vec2 alpha, int model) {
     }
     sum += v.perFacet * count;
   }
-  return sum / (PI * a.x * a.y * R);
+  return sum;
+}
+
+// D_glint(h) for the GGX NDF of roughness alpha with REMAINING_* model `model`. A facet reflects
+// with probability p = R D(h) / D(0) = R / e^2 (GGX: D = 1 / (pi ax ay e^2), e = 1 at h = n), so
+// E[D_glint] = E[share] D(0) / R = D(h).
+float binomialNdf(BinomialSurface b, vec3 h, vec2 alpha, int model) {
+  if (h.z <= 0.0) return 0.0;
+  vec2 a = max(alpha, vec2(MIN_ALPHA));
+  float e = (h.x * h.x) / (a.x * a.x) + (h.y * h.y) / (a.y * a.y) + h.z * h.z;
+  float R = b.microfacetRoughness;
+  float p = min(R / (e * e), 1.0);
+  return binomialReflectingShare(b, h.xy * b.slopeGridScale, p, model) / (PI * a.x * a.y * R);
 }

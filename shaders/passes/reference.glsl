@@ -7,14 +7,21 @@
 #include "common/lights.glsl"
 #include "common/sampling.glsl"
 #include "common/surface.glsl"
+// Included once whatever the variant: includes are expanded once, before the preprocessor drops
+// a branch, so a module both branches below include must come before them.
+#include "common/ltc_shading.glsl"
 #if MATERIAL_GLINTS
 #include "common/glint_shading.glsl"
 GlintSurface gGlint;  // the glinty BRDF with this sub-pixel's own footprint, no anti-aliasing
 #elif MATERIAL_BINOMIAL_GLINTS
-#include "common/binomial_shading.glsl"
+#include "common/binomial_area_shading.glsl"
 BinomialSurface gBinomial;  // the binomial glints with this sub-pixel's own footprint
 // Cells one sub-pixel across (Shannon's limit at the sub-pixel scale; the pixel averages them).
 const float REFERENCE_SCREEN_SPACE_SCALE = 1.0;
+// Samples of each strategy for the probability that a facet reflects a light with extent: enough
+// that p's own error (< 1% relative where glints show, tests/render/test_kneiphof.cpp) stays far
+// below the counting's.
+const uint REFERENCE_GLINT_P_SAMPLES = 128u;
 #endif
 
 // Below this alpha the material is treated as a perfect mirror (a delta BRDF).
@@ -32,7 +39,8 @@ void prepareSurface(inout Surface s) {
 #endif
 }
 
-// The material's specular BRDF times the cosine.
+// The material's specular BRDF times the cosine (binomial glints: under delta lights; lights with
+// extent scale the smooth BRDF's integral by the glint factor, see glintReferenceFactor).
 vec3 materialSpecularCos(Surface s, vec3 wo, vec3 wi) {
 #if MATERIAL_GLINTS
   return glintSpecularCos(gGlint, wo, wi, s.f0, vec2(0.0), vec2(0.0), false);
@@ -59,6 +67,52 @@ float powerHeuristic(float pdf, float other) {
 vec3 sampleBrdfNormal(Surface s, vec3 wo, vec2 u) {
   return s.ndf == NDF_BECKMANN ? sampleBeckmannNormal(s.alpha, u) : sampleGGXVisibleNormal(wo, s.alpha, u);
 }
+
+// The specular BRDF times the cosine integrated over a light with extent: the material's, or the
+// smooth GGX of a binomial-glints material, whose integral the glint factor then scales.
+vec3 extentSpecularCos(Surface s, vec3 wo, vec3 wi) {
+#if MATERIAL_BINOMIAL_GLINTS
+  return specularCos(NDF_GGX, wo, wi, s.alpha, s.f0);
+#else
+  return materialSpecularCos(s, wo, wi);
+#endif
+}
+
+#if MATERIAL_BINOMIAL_GLINTS
+// The binomial-glints model under a light with extent (Kneiphof & Klein 2024's, without its
+// approximations): the probability that a facet reflects the light, p = integral over the light of
+// D(h) / (4 |l.h|) dl (above the horizon) / T, by MIS of light and visible-normal sampling with
+// REFERENCE_GLINT_P_SAMPLES of each (sub-pixel `sub` of k^2 takes its slice of the pixel's
+// sequence), then the glint factor at the half vector towards the light's centre, as the method
+// draws it.
+float glintReferenceFactor(Surface s, LightData L, vec3 wo, uint sub, vec2 rotLight, vec2 rotBrdf) {
+  float sum = 0.0;
+  uint first = sub * REFERENCE_GLINT_P_SAMPLES;
+  for (uint j = 0u; j < REFERENCE_GLINT_P_SAMPLES; ++j) {
+    vec3 dir;
+    float dist, pdfLight;
+    if (sampleLightDirection(L, s.position, r2Point(first + j, rotLight), dir, dist, pdfLight) && pdfLight > 0.0) {
+      vec3 wi = toLocal(s, dir);
+      if (wi.z > 0.0) {
+        vec3 h = normalize(wo + wi);
+        float f = ndfGGX(h, s.alpha) / (4.0 * abs(dot(wi, h)));
+        sum += f * powerHeuristic(pdfLight, ggxVisibleReflectionPdf(wo, wi, s.alpha)) / pdfLight;
+      }
+    }
+    vec3 h = sampleGGXVisibleNormal(wo, s.alpha, r2Point(first + j, rotBrdf));
+    vec3 wi = reflect(-wo, h);
+    vec3 dirWorld = toWorld(s, wi);
+    if (wi.z > 0.0 && lightHit(L, s.position, dirWorld, dist)) {
+      float pdfBrdf = ggxVisibleReflectionPdf(wo, wi, s.alpha);
+      float f = ndfGGX(h, s.alpha) / (4.0 * abs(dot(wi, h)));
+      if (pdfBrdf > 0.0) sum += f * powerHeuristic(pdfBrdf, lightPdf(L, s.position, dirWorld, dist)) / pdfBrdf;
+    }
+  }
+  float p = sum / (float(REFERENCE_GLINT_P_SAMPLES) * ggxTotalNdf(glintIsotropicAlpha(s.alpha)));
+  vec3 h = normalize(wo + toLocal(s, lightCentreDirection(L, s.position)));
+  return glintFactor(gBinomial, h, p, REMAINING_LOGNORMAL);
+}
+#endif
 
 Radiance shadeLight(Surface s, LightData L) {
   uint lightIndex = gReferenceLightIndex++;
@@ -94,7 +148,7 @@ Radiance shadeLight(Surface s, LightData L) {
         result.diffuse += diffuseCos(s.diffuse, wi) * radiance / pdfLight;
         if (!mirror) {
           float w = powerHeuristic(pdfLight, brdfSamplePdf(s, wo, wi));
-          result.specular += materialSpecularCos(s, wo, wi) * radiance * (w / pdfLight);
+          result.specular += extentSpecularCos(s, wo, wi) * radiance * (w / pdfLight);
         }
       }
     }
@@ -105,12 +159,15 @@ Radiance shadeLight(Surface s, LightData L) {
       if (wi.z > 0.0 && lightHit(L, s.position, dirWorld, dist)) {
         float pdfBrdf = brdfSamplePdf(s, wo, wi);
         float pdfL = lightPdf(L, s.position, dirWorld, dist);
-        if (pdfBrdf > 0.0) result.specular += materialSpecularCos(s, wo, wi) * radiance * (powerHeuristic(pdfBrdf, pdfL) / pdfBrdf);
+        if (pdfBrdf > 0.0) result.specular += extentSpecularCos(s, wo, wi) * radiance * (powerHeuristic(pdfBrdf, pdfL) / pdfBrdf);
       }
     }
   }
   result.diffuse /= float(n);
   result.specular /= float(n);
+#if MATERIAL_BINOMIAL_GLINTS
+  result.specular *= glintReferenceFactor(s, L, wo, uint(sub.y * k + sub.x), rotLight, rotBrdf);
+#endif
   if (mirror) {
     float dist;
     vec3 r = reflect(-s.view, s.normal);

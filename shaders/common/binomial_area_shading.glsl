@@ -1,0 +1,60 @@
+// Glints under lights with extent by Kneiphof & Klein 2024 (docs/methods.md#kneiphof2024), on the
+// binomial-glints material of Deliot & Belcour 2023: the facets that reflect a light are counted
+// with the probability p of common/glint_light_probability.glsl instead of Deliot's R D(h) / D(0),
+// and their share found over the share expected, the glint factor g = share / p (E[g] = 1),
+// scales the smooth GGX's light integral: specular = g x integral over the light of f cos L dl.
+// The count is drawn at the slope-grid cell of the half vector towards the light's centre.
+#include "common/binomial_shading.glsl"
+#include "common/glint_light_probability.glsl"
+
+// The smooth specular integral over a light with extent (per unit radiance, Fresnel included) and
+// p, each as the LTC's for large lights and the point form's (the BRDF at the centre x solid
+// angle; the small-cap p) for small ones, blended by glintCapWeight.
+struct GlintLightIntegral {
+  vec3 specular;  // integral of f cos over the light / radiance
+  float p;        // unclamped
+  vec3 hCentre;   // local half vector towards the light's centre: where the count is drawn
+};
+
+GlintLightIntegral glintLightIntegral(Surface s, LightData L, vec3 wo, vec3 centreDir, float solidAngle) {
+  float alpha = glintIsotropicAlpha(s.alpha);
+  float totalNdf = ggxTotalNdf(alpha);
+  mat3 frame = ltcViewFrame(wo);
+  float pLtc = ltcTerms(uLtcNdf, alpha, wo.z).x * ltcLightIntegral(s, L, ltcInverseMatrix(uLtcNdf, alpha, wo.z) * frame, false) / totalNdf;
+  vec3 specularLtc = ltcSpecularScale(ltcTerms(uLtcGgx, alpha, wo.z), s.f0) *
+                     ltcLightIntegral(s, L, ltcInverseMatrix(uLtcGgx, alpha, wo.z) * frame, false);
+  vec3 wi = toLocal(s, centreDir);
+  vec3 h = normalize(wo + wi);
+  float pCap = glintCapProbability(wo, wi, solidAngle, s.alpha, totalNdf);
+  vec3 specularPoint = specularCos(NDF_GGX, wo, wi, s.alpha, s.f0) * solidAngle;
+  float w = glintCapWeight(solidAngle, abs(dot(wi, h)), alpha);
+  return GlintLightIntegral(mix(specularLtc, specularPoint, w), mix(pLtc, pCap, w), h);
+}
+
+// The glint factor g = share / p of the footprint's facets for probability p at half vector h
+// (p > 1 can come from the small-cap estimate of a large light on a sharp lobe: clamped, as the
+// paper does, so every facet reflects and g = 1; p = 0: nothing reflects).
+float glintFactor(BinomialSurface b, vec3 h, float p, int model) {
+  if (!(p > 0.0)) return 0.0;
+  float pc = min(p, 1.0);
+  return binomialReflectingShare(b, h.xy * b.slopeGridScale, pc, model) / pc;
+}
+
+// A delta light: p = R D(h) / D(0) as the material defines it for lights of no size (Deliot &
+// Belcour's, as in deliot2023 and the reference), or the small cap of solid angle
+// `pointSolidAngle` > 0 (Kneiphof & Klein's sun, 6.8e-5 sr).
+Radiance shadeBinomialDeltaGlints(Surface s, BinomialSurface b, LightData L, float pointSolidAngle, int model) {
+  vec3 l, irradiance;
+  deltaLightIncidence(L, s.position, l, irradiance);
+  vec3 wo = toLocal(s, s.view), wi = toLocal(s, l);
+  Radiance result = Radiance(diffuseCos(s.diffuse, wi) * irradiance, vec3(0.0));
+  if (wo.z <= 0.0 || wi.z <= 0.0) return result;
+  vec3 h = normalize(wo + wi);
+  vec2 a = max(s.alpha, vec2(MIN_ALPHA));
+  float e = (h.x * h.x) / (a.x * a.x) + (h.y * h.y) / (a.y * a.y) + h.z * h.z;
+  float p = pointSolidAngle > 0.0
+                ? glintCapProbability(wo, wi, pointSolidAngle, s.alpha, ggxTotalNdf(glintIsotropicAlpha(s.alpha)))
+                : b.microfacetRoughness / (e * e);
+  result.specular = glintFactor(b, h, p, model) * specularCos(NDF_GGX, wo, wi, s.alpha, s.f0) * irradiance;
+  return result;
+}

@@ -1,0 +1,44 @@
+// Method `kneiphof2024`: Kneiphof & Klein 2024, glints under area lights: the binomial counting of
+// deliot2023 driven by the probability that a facet reflects the light (the D-only LTC for large
+// lights, the small-cap NDF for small ones), the glint factor scaling the light's LTC integral;
+// optionally the light cut into 2 x 2 or 4 x 4 cells split hierarchically. Other materials are
+// shaded as by `conventional`. Descriptor: src/shading/methods/kneiphof2024.cpp;
+// docs/methods.md#kneiphof2024.
+#include "common/lobe.glsl"
+#include "common/lobe_shading.glsl"
+
+#if MATERIAL_BINOMIAL_GLINTS
+const int LIGHT_CELLS = 1 << (2 * int(param_subdivision + 0.5));  // 1 (none), 4 or 16
+#include "common/binomial_area_shading.glsl"
+#include "common/binomial_subdivision.glsl"
+BinomialSurface gBinomial;
+#endif
+
+void prepareSurface(inout Surface s) {
+#if MATERIAL_BINOMIAL_GLINTS
+  gBinomial = prepareBinomialGlints(s, materials[uMaterial], param_screen_space_scale);
+#endif
+}
+
+Radiance shadeLight(Surface s, LightData L) {
+#if MATERIAL_BINOMIAL_GLINTS
+  const int model = int(param_remaining_count + 0.5);
+  if (!lightHasExtent(L)) return shadeBinomialDeltaGlints(s, gBinomial, L, param_point_light_solid_angle, model);
+  Radiance result = Radiance(vec3(0.0), vec3(0.0));
+  vec3 wo = toLocal(s, s.view);
+  vec3 centreDir = lightCentreDirection(L, s.position);
+  float solidAngle = lightSolidAngle(L, s.position, centreDir);
+  if (wo.z <= 0.0 || solidAngle <= 0.0) return result;
+  vec3 radiance = lightRadiance(L);
+  result.diffuse = s.diffuse * ltcLightIntegral(s, L, mat3(1.0), true) * radiance;
+  if (LIGHT_CELLS > 1 && lightForm(L) == LIGHT_FORM_POLYGON) {
+    result.specular = subdividedGlintSpecular(s, gBinomial, L, wo, model) * radiance;
+  } else {
+    GlintLightIntegral g = glintLightIntegral(s, L, wo, centreDir, solidAngle);
+    result.specular = glintFactor(gBinomial, g.hCentre, g.p, model) * g.specular * radiance;
+  }
+  return result;
+#else
+  return shadeLobe(s, L, materialLobe(s), float(AREA_LIGHTS_LTC));  // conventional's default
+#endif
+}

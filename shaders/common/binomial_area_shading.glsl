@@ -16,19 +16,25 @@ struct GlintLightIntegral {
   vec3 hCentre;   // local half vector towards the light's centre: where the count is drawn
 };
 
-GlintLightIntegral glintLightIntegral(Surface s, LightData L, vec3 wo, vec3 centreDir, float solidAngle) {
+// The two estimates of p and the cap's weight: (LTC, small cap, weight of the cap).
+vec3 glintProbabilityEstimates(Surface s, LightData L, vec3 wo, vec3 centreDir, float solidAngle) {
   float alpha = glintIsotropicAlpha(s.alpha);
   float totalNdf = ggxTotalNdf(alpha);
-  mat3 frame = ltcViewFrame(wo);
-  float pLtc = ltcTerms(uLtcNdf, alpha, wo.z).x * ltcLightIntegral(s, L, ltcInverseMatrix(uLtcNdf, alpha, wo.z) * frame, false) / totalNdf;
-  vec3 specularLtc = ltcSpecularScale(ltcTerms(uLtcGgx, alpha, wo.z), s.f0) *
-                     ltcLightIntegral(s, L, ltcInverseMatrix(uLtcGgx, alpha, wo.z) * frame, false);
+  mat3 Minv = ltcInverseMatrix(uLtcNdf, alpha, wo.z) * ltcViewFrame(wo);
+  float pLtc = ltcTerms(uLtcNdf, alpha, wo.z).x * ltcLightIntegral(s, L, Minv, false) / totalNdf;
   vec3 wi = toLocal(s, centreDir);
-  vec3 h = normalize(wo + wi);
   float pCap = glintCapProbability(wo, wi, solidAngle, s.alpha, totalNdf);
+  return vec3(pLtc, pCap, glintCapWeight(solidAngle, abs(dot(wi, normalize(wo + wi))), alpha));
+}
+
+GlintLightIntegral glintLightIntegral(Surface s, LightData L, vec3 wo, vec3 centreDir, float solidAngle) {
+  float alpha = glintIsotropicAlpha(s.alpha);
+  vec3 p = glintProbabilityEstimates(s, L, wo, centreDir, solidAngle);
+  vec3 specularLtc = ltcSpecularScale(ltcTerms(uLtcGgx, alpha, wo.z), s.f0) *
+                     ltcLightIntegral(s, L, ltcInverseMatrix(uLtcGgx, alpha, wo.z) * ltcViewFrame(wo), false);
+  vec3 wi = toLocal(s, centreDir);
   vec3 specularPoint = specularCos(NDF_GGX, wo, wi, s.alpha, s.f0) * solidAngle;
-  float w = glintCapWeight(solidAngle, abs(dot(wi, h)), alpha);
-  return GlintLightIntegral(mix(specularLtc, specularPoint, w), mix(pLtc, pCap, w), h);
+  return GlintLightIntegral(mix(specularLtc, specularPoint, p.z), mix(p.x, p.y, p.z), normalize(wo + wi));
 }
 
 // The glint factor g = share / p of the footprint's facets for probability p at half vector h

@@ -69,3 +69,10 @@ float beckmannReflectionPdf(vec3 wo, vec3 wi, vec2 alpha) {
   if (oh <= 0.0) return 0.0;
   return ndfBeckmann(h, alpha) * h.z / (4.0 * oh);
 }
+
+// Power-heuristic weight of a strategy of density `pdf` against one of density `other` (Veach
+// 1997), as 1 / (1 + r^2) with r = other / pdf, finite for any pair with pdf > 0.
+float powerHeuristic(float pdf, float other) {
+  float r = other / pdf;
+  return 1.0 / (1.0 + r * r);
+}

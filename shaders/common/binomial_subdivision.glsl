@@ -10,7 +10,13 @@
 // Before including, define LIGHT_CELLS (4 or 16: 2 x 2 or 4 x 4 cells; a power of 4 so that the
 // leaves in Morton order make square blocks at every level of the tree).
 #include "common/binomial_glints.glsl"
+#include "common/fragment_inputs.glsl"
 #include "common/glint_light_probability.glsl"
+
+// n, as a loop bound the compiler cannot see through: keeps the loops below rolled. Unrolled,
+// the 4 x 4 split (12 vertices x 4 cells x 15 splits) and the 16 cells' LTC integrals make a
+// shader llvmpipe takes minutes to compile. (uMaterial is an index, never negative.)
+int rolledCount(int n) { return uMaterial >= 0 ? n : 0; }
 
 const int LIGHT_TREE_NODES = 2 * LIGHT_CELLS - 1;  // heap order: node j has children 2j + 1, 2j + 2
 const int LIGHT_FIRST_LEAF = LIGHT_CELLS - 1;
@@ -34,7 +40,7 @@ void binomialReflectingSharesSplit(BinomialSurface b, vec2 slope, float pNode[LI
                                    out float share[LIGHT_CELLS]) {
   for (int i = 0; i < LIGHT_CELLS; ++i) share[i] = 0.0;
   float p = pNode[0];
-  for (int i = 0; i < BINOMIAL_VERTICES; ++i) {
+  for (int i = 0; i < rolledCount(BINOMIAL_VERTICES); ++i) {
     BinomialVertex v = b.vertices[i];
     float p1 = probabilityAnyReflects(p, v.facets);
     vec2 law = remainingLaw(p, v.facets, p1, model);
@@ -84,7 +90,7 @@ vec3 subdividedGlintSpecular(Surface s, BinomialSurface b, LightData L, vec3 wo,
   const int side = LIGHT_CELLS == 4 ? 2 : 4;
   float pNode[LIGHT_TREE_NODES];
   float integral[LIGHT_CELLS];
-  for (int i = 0; i < LIGHT_CELLS; ++i) {
+  for (int i = 0; i < rolledCount(LIGHT_CELLS); ++i) {
     vec2 cell = vec2(lightCellOfLeaf(i)) / float(side);
     float step = 1.0 / float(side);
     vec3 corner = quad[0] + cell.x * du + cell.y * dv;

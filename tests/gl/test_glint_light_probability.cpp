@@ -250,7 +250,9 @@ TEST(GlintLightProbability, ErrorTableOverLightSizesAndRoughnesses) {
       // The blend is never much worse than the better estimate, and within 11% on average anywhere.
       EXPECT_LE(e.z, std::min(e.x, e.y) + 0.015) << "alpha " << kAlphas[i] << " solid angle " << omega;
       EXPECT_LT(e.z, 0.11) << "alpha " << kAlphas[i] << " solid angle " << omega;
-      if (omega >= 0.05 && kAlphas[i] <= 0.2) EXPECT_LT(e.x, e.y) << "alpha " << kAlphas[i] << " solid angle " << omega;
+      if (omega >= 0.05 && kAlphas[i] <= 0.2) {
+        EXPECT_LT(e.x, e.y) << "alpha " << kAlphas[i] << " solid angle " << omega;
+      }
     }
   }
 }

@@ -1,0 +1,166 @@
+// kneiphof2024 in the renderer (docs/methods.md#kneiphof2024): dense glints converge to the
+// smooth LTC render (method, subdivided method and reference), a tiny light is the method's point
+// form, subdivision keeps the mean, the method is closer to the reference than deliot2023's
+// point-at-the-centre under area lights, and no NaN for random lights across the horizon.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include "core/metrics.hpp"
+#include "gl_fixture.hpp"
+
+using namespace glintlab;
+using namespace glintlab::test;
+
+namespace {
+
+// A flat binomial-glints patch seen straight down by an orthographic camera (size x size pixels),
+// lit by lights with extent above it, whose lobes spread over the patch.
+TestScene area_lit_patch(double log_density, int size = 64) {
+  TestScene s;
+  s.film(size, size)
+      .orthographic_camera({0, 3, 0}, {0, 0, 0}, 2.0, {{"up", {0, 0, -1}}})
+      .material("glitter", {{"type", "binomial-glints"},
+                            {"alpha", 0.2},
+                            {"log_density", log_density},
+                            {"microfacet_roughness", 0.02},
+                            {"slope_grid_scale", 12},
+                            {"f0", 0.9}})
+      .plane("glitter", {{"size", 4}, {"uv_scale", 2}})
+      .light("quad", {{"position", {0.2, 1.2, 0.1}},
+                      {"direction", {0, -1, 0}},
+                      {"size", {0.8, 0.4}},
+                      {"up", {0, 0, 1}},
+                      {"radiance", {2, 1.5, 1}}})
+      .disk_light({-0.5, 0.9, -0.3}, {0.3, -1, 0.2}, 0.15, {4, 5, 6});
+  return s;
+}
+
+double mean_luminance(const Image& img) { return luminance(glm::vec3(img.mean())); }
+
+double block_mean(const Image& img, int x0, int y0, int n) {
+  double sum = 0;
+  for (int y = y0; y < y0 + n; ++y)
+    for (int x = x0; x < x0 + n; ++x) sum += luminance(img.at(x, y));
+  return sum / (n * n);
+}
+
+// Mean within 2%, and each 8x8-pixel block where the lobe is within 6%, of the smooth render.
+void expect_matches_smooth(const Image& glints, const Image& smooth, const std::string& what) {
+  const double g = mean_luminance(glints), c = mean_luminance(smooth);
+  EXPECT_NEAR(g, c, 0.02 * c) << what;
+  for (int by = 0; by + 8 <= glints.height(); by += 8)
+    for (int bx = 0; bx + 8 <= glints.width(); bx += 8) {
+      const double gb = block_mean(glints, bx, by, 8), cb = block_mean(smooth, bx, by, 8);
+      if (cb > 0.05 * c) {
+        EXPECT_NEAR(gb, cb, 0.06 * cb) << what << " block " << bx << ", " << by;
+      }
+    }
+}
+
+TEST(Kneiphof, DenseGlintsConvergeToTheSmoothLtcRender) {
+  // ln density 40: ~1e14 facets per grid cell. `conventional` shades the smooth GGX by LTC.
+  SceneFixture dense(area_lit_patch(40.0));
+  const Image smooth = dense.method("conventional").specular;
+  expect_matches_smooth(dense.method("kneiphof2024").specular, smooth, "kneiphof2024");
+  expect_matches_smooth(dense.method("kneiphof2024", {{"subdivision", "4x4"}}).specular, smooth, "subdivided 4x4");
+  // Sparse glints are not the smooth lobe pixel by pixel (the test can fail).
+  SceneFixture sparse(area_lit_patch(10.0));
+  EXPECT_GT(rmse(sparse.method("kneiphof2024").specular, smooth),
+            5.0 * rmse(dense.method("kneiphof2024").specular, smooth));
+}
+
+TEST(Kneiphof, DenseGlintsConvergeToTheSmoothRenderInTheReference) {
+  // The reference's model (p integrated over the light) against the smooth material's reference.
+  SceneFixture dense(area_lit_patch(40.0, 32));
+  const Image glinty = dense.reference(4).specular;
+  dense.scene.materials[0].binomial_glints.reset();
+  SceneFixture smooth(dense.scene);
+  expect_matches_smooth(glinty, smooth.reference(4).specular, "reference");
+}
+
+TEST(Kneiphof, ATinyLightIsThePointFormOfItsSolidAngle) {
+  // A sun of 0.05 degrees against a directional light of the same irradiance counted as a cap of
+  // the sun's solid angle (pi sin^2 of its radius): the same glints, the same image.
+  const double radius = 0.05, solid_angle = M_PI * std::pow(std::sin(radius * M_PI / 180), 2);
+  const auto scene = [&](bool sun) {
+    TestScene s;
+    s.film(48, 48)
+        .orthographic_camera({0, 3, 0}, {0, 0, 0}, 2.0, {{"up", {0, 0, -1}}})
+        .material("glitter", {{"type", "binomial-glints"}, {"alpha", 0.15}, {"log_density", 12}, {"f0", 0.9}})
+        .plane("glitter", {{"size", 4}, {"uv_scale", 2}});
+    if (sun)
+      s.light("sun", {{"direction", {-0.15, -1.0, -0.1}}, {"irradiance", 1}, {"angular_radius", radius}});
+    else
+      s.directional_light({-0.15, -1.0, -0.1}, 1);
+    return s;
+  };
+  SceneFixture sun(scene(true)), directional(scene(false));
+  const Image a = sun.method("kneiphof2024").total;
+  char omega[32];
+  std::snprintf(omega, sizeof omega, "%.9g", solid_angle);
+  const Image b = directional.method("kneiphof2024", {{"point_light_solid_angle", omega}}).total;
+  const double scale = mean_luminance(a);
+  ASSERT_GT(scale, 0.0);
+  EXPECT_LT(rmse(a, b), 1e-3 * scale);
+  // The material's R instead (deliot2023's count) is another image: the comparison can fail.
+  EXPECT_GT(rmse(a, directional.method("kneiphof2024").total), 0.1 * scale);
+}
+
+TEST(Kneiphof, SubdivisionKeepsTheMean) {
+  // ln density 14: tens of facets reflect per cell. Splitting them among the quad's cells keeps
+  // their expectation, so the image's mean is the undivided one's.
+  SceneFixture f(area_lit_patch(14.0, 96));
+  const double whole = mean_luminance(f.method("kneiphof2024").specular);
+  for (const char* cells : {"2x2", "4x4"}) {
+    const double split = mean_luminance(f.method("kneiphof2024", {{"subdivision", cells}}).specular);
+    std::printf("mean specular: undivided %.5f, %s %.5f (%+.2f%%)\n", whole, cells, split, 100 * (split / whole - 1));
+    EXPECT_NEAR(split, whole, 0.03 * whole) << cells;
+  }
+}
+
+TEST(Kneiphof, CloserToTheReferenceThanAPointAtTheLightsCentre) {
+  // At ln density 13 a few facets reflect per cell: glints, not a lobe. The method's energy is the
+  // smooth LTC render's (conventional: the LTC fit's own error) within 3%.
+  SceneFixture f(area_lit_patch(13.0, 48));
+  const Image ref = f.reference_estimate(16).mean.specular;
+  const Image ours = f.method("kneiphof2024").specular;
+  const double error = rmse(ours, ref), deliot = rmse(f.method("deliot2023").specular, ref);
+  const double energy = mean_luminance(ours) / mean_luminance(ref);
+  const double smooth = mean_luminance(f.method("conventional").specular) / mean_luminance(ref);
+  std::printf("specular rmse: kneiphof2024 %.5f, deliot2023 %.5f; energy: kneiphof2024 %.4f, conventional %.4f\n", error,
+              deliot, energy, smooth);
+  EXPECT_LT(error, deliot);
+  EXPECT_NEAR(energy, smooth, 0.03);
+}
+
+TEST(Kneiphof, FiniteForRandomLightsAcrossTheHorizon) {
+  // Lights of every kind with extent, random sizes and places, many crossing the plane's horizon
+  // or behind it; random roughness and density; the method (each subdivision) and the reference.
+  std::mt19937 rng(15);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int trial = 0; trial < 4; ++trial) {
+    TestScene s;
+    s.film(24, 24)
+        .camera({0.3, 1.0 + u(rng), 2.0}, {0, 0, 0}, 50)
+        .material("glitter", {{"type", "binomial-glints"},
+                              {"alpha", 0.01 + 0.9 * u(rng)},
+                              {"log_density", 30 * u(rng)},
+                              {"density_randomization", 2 * u(rng)}})
+        .plane("glitter", {{"size", 6}, {"uv_scale", 3}})
+        .sphere("glitter", {{"radius", 0.4}, {"translate", {0, 0.3, 0}}});
+    const auto place = [&] { return TomlValue{4 * u(rng) - 2, 0.6 * u(rng) - 0.2, 4 * u(rng) - 2}; };
+    s.light("quad", {{"position", place()}, {"direction", {u(rng) - 0.5, -u(rng), u(rng) - 0.5}}, {"size", {3 * u(rng), 2 * u(rng)}}})
+        .disk_light(place(), {u(rng) - 0.5, u(rng) - 0.8, u(rng) - 0.5}, 1.5 * u(rng) + 1e-3, 3)
+        .sphere_light(place(), 0.8 * u(rng) + 1e-3, 3)
+        .light("sun", {{"direction", {u(rng) - 0.5, 0.2 * u(rng) - 0.15, u(rng) - 0.5}}, {"angular_radius", 20 * u(rng)}});
+    SceneFixture f(s);
+    for (const char* cells : {"none", "4x4"})
+      EXPECT_EQ(f.method("kneiphof2024", {{"subdivision", cells}}).total.count_non_finite(), 0u) << trial << " " << cells;
+    EXPECT_EQ(f.reference(4).total.count_non_finite(), 0u) << trial;
+  }
+}
+
+}  // namespace

@@ -2,6 +2,9 @@
 // extent integrated by multiple importance sampling of the light and the BRDF (power heuristic,
 // Veach 1997) with low-discrepancy samples stratified over the pixel's k x k sub-pixels.
 // Never uses the approximations of any method. Included in place of a method module.
+#ifndef REFERENCE_BINOMIAL_REALISATION
+#define REFERENCE_BINOMIAL_REALISATION 0  // passes/reference_realisation.glsl sets it
+#endif
 #include "common/brdf.glsl"
 #include "common/frame.glsl"
 #include "common/lights.glsl"
@@ -16,6 +19,9 @@ GlintSurface gGlint;  // the glinty BRDF with this sub-pixel's own footprint, no
 #elif MATERIAL_BINOMIAL_GLINTS
 #include "common/binomial_area_shading.glsl"
 #include "common/light_ndf_integral.glsl"
+#if REFERENCE_BINOMIAL_REALISATION
+#include "common/binomial_realisation.glsl"
+#endif
 BinomialSurface gBinomial;  // the binomial glints with this sub-pixel's own footprint
 // Cells one sub-pixel across (Shannon's limit at the sub-pixel scale; the pixel averages them).
 const float REFERENCE_SCREEN_SPACE_SCALE = 1.0;
@@ -45,6 +51,8 @@ void prepareSurface(inout Surface s) {
 vec3 materialSpecularCos(Surface s, vec3 wo, vec3 wi) {
 #if MATERIAL_GLINTS
   return glintSpecularCos(gGlint, wo, wi, s.f0, vec2(0.0), vec2(0.0), false);
+#elif MATERIAL_BINOMIAL_GLINTS && REFERENCE_BINOMIAL_REALISATION
+  return binomialRealisationSpecularCos(gBinomial, wo, wi, s.f0, s.alpha);
 #elif MATERIAL_BINOMIAL_GLINTS
   return binomialSpecularCos(gBinomial, wo, wi, s.f0, s.alpha, REMAINING_LOGNORMAL);
 #else
@@ -65,7 +73,7 @@ vec3 sampleBrdfNormal(Surface s, vec3 wo, vec2 u) {
 // The specular BRDF times the cosine integrated over a light with extent: the material's, or the
 // smooth GGX of a binomial-glints material, whose integral the glint factor then scales.
 vec3 extentSpecularCos(Surface s, vec3 wo, vec3 wi) {
-#if MATERIAL_BINOMIAL_GLINTS
+#if MATERIAL_BINOMIAL_GLINTS && !REFERENCE_BINOMIAL_REALISATION
   return specularCos(NDF_GGX, wo, wi, s.alpha, s.f0);
 #else
   return materialSpecularCos(s, wo, wi);
@@ -138,7 +146,7 @@ Radiance shadeLight(Surface s, LightData L) {
   }
   result.diffuse /= float(n);
   result.specular /= float(n);
-#if MATERIAL_BINOMIAL_GLINTS
+#if MATERIAL_BINOMIAL_GLINTS && !REFERENCE_BINOMIAL_REALISATION
   result.specular *= glintReferenceFactor(s, L, wo, uint(sub.y * k + sub.x), rotLight, rotBrdf);
 #endif
   if (mirror) {

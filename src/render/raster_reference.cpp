@@ -14,8 +14,9 @@
 
 namespace glintlab {
 
-RasterReference::RasterReference(const ReferenceBackendContext& context)
-    : shaders_(context.shaders), scene_(context.scene), renderer_(context.renderer) {}
+RasterReference::RasterReference(const ReferenceBackendContext& context, std::string id, std::string module)
+    : shaders_(context.shaders), scene_(context.scene), renderer_(context.renderer), id_(std::move(id)),
+      module_(std::move(module)) {}
 
 std::uint64_t RasterReference::estimator_hash() const {
   if (estimator_hash_ != 0) return estimator_hash_;
@@ -23,7 +24,7 @@ std::uint64_t RasterReference::estimator_hash() const {
   std::set<MaterialVariant> variants;
   for (const auto& mesh : scene_.meshes()) variants.insert(material_variant(scene_, mesh.material));
   for (const MaterialVariant& v : variants) {
-    const ShaderDefines defines = forward_variant(kReferenceModule, scene_.light_ranges(), v);
+    const ShaderDefines defines = forward_variant(module_, scene_.light_ranges(), v);
     h.text(shaders_.expand("passes/forward.vert", defines));
     h.text(shaders_.expand("passes/forward.frag", defines));
   }
@@ -64,7 +65,7 @@ Frame RasterReference::render_pass(const Camera& camera, int width, int height, 
       const glm::mat4 projection = glm::translate(glm::mat4(1.0f), glm::vec3(shift_ndc, 0.0f)) *
                                    camera.tile_projection_matrix(film, origin, size);
       high.bind_and_clear(high_size.x, high_size.y);
-      renderer_.draw_view(kReferenceModule, {}, camera, projection, {high_size.x, high_size.y, k, 0},
+      renderer_.draw_view(module_, {}, camera, projection, {high_size.x, high_size.y, k, 0},
                           {origin.x * k, gl_y * k, pass.light_samples, static_cast<int>(pass.seed & 0x7fffffffu)});
 
       glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);

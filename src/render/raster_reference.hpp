@@ -3,15 +3,21 @@
 // slot, at k x k sub-pixels per pixel in tiles, box-filtered down to the film. Each sub-pixel
 // evaluates the surface itself (normal maps at their base level) and integrates every light with
 // extent by multiple importance sampling (docs/methods.md, "Ground truth").
+#include <string>
+
 #include "render/reference_backend.hpp"
+#include "render/renderer.hpp"
 
 namespace glintlab {
 
 class RasterReference final : public ReferenceBackend {
  public:
-  explicit RasterReference(const ReferenceBackendContext& context);
+  /// `id` and the reference module it runs in the method slot (kReferenceModule, or one of its
+  /// variants, e.g. kRealisationReferenceModule).
+  RasterReference(const ReferenceBackendContext& context, std::string id = "raster",
+                  std::string module = kReferenceModule);
 
-  [[nodiscard]] std::string id() const override { return "raster"; }
+  [[nodiscard]] std::string id() const override { return id_; }
   /// Hash of the full GLSL text of every program this backend runs on the scene (each material's
   /// variant, the emitters, the downsampling): editing a method's module leaves it unchanged.
   [[nodiscard]] std::uint64_t estimator_hash() const override;
@@ -22,6 +28,8 @@ class RasterReference final : public ReferenceBackend {
   ShaderLibrary& shaders_;
   const GpuScene& scene_;
   Renderer& renderer_;
+  std::string id_;
+  std::string module_;
   mutable std::uint64_t estimator_hash_ = 0;  ///< computed once: the programs' text is fixed per scene
 };
 

@@ -70,6 +70,12 @@ const std::vector<ReferenceBackendEntry>& reference_backends() {
       {"raster",
        "the forward renderer at k x k jittered sub-pixels per pixel, unfiltered textures, lights with extent by MIS",
        [](const ReferenceBackendContext& c) { return std::make_unique<RasterReference>(c); }},
+      {"raster-realisation",
+       "raster, with binomial-glints materials as one fixed realisation of their microfacets (slope cells with "
+       "binomial counts) integrated over each light: the physical question, not the counting model",
+       [](const ReferenceBackendContext& c) {
+         return std::make_unique<RasterReference>(c, "raster-realisation", kRealisationReferenceModule);
+       }},
   };
   return entries;
 }

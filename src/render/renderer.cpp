@@ -34,7 +34,7 @@ ShaderDefines forward_variant(const std::string& module, const LightRanges& ligh
           {"MATERIAL_GLINTS", material.glints ? "1" : "0"},
           {"MATERIAL_TEXTURES", material.textures ? "1" : "0"},
           {"MATERIAL_BINOMIAL_GLINTS", material.binomial_glints ? "1" : "0"},
-          {"REFERENCE_PASS", module == kReferenceModule ? "1" : "0"}};
+          {"REFERENCE_PASS", is_reference_module(module) ? "1" : "0"}};
 }
 
 MaterialVariant material_variant(const GpuScene& scene, int material) {

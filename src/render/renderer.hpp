@@ -28,6 +28,11 @@ MaterialVariant material_variant(const GpuScene& scene, int material);
 /// The `raster` reference backend's shading module (src/render/raster_reference.hpp): forward
 /// programs built for it read every texture at its base level (REFERENCE_PASS).
 inline constexpr const char* kReferenceModule = "passes/reference.glsl";
+/// The reference with binomial-glints materials as one fixed microfacet realisation
+/// (docs/methods.md#kneiphof2024); every other material as kReferenceModule.
+inline constexpr const char* kRealisationReferenceModule = "passes/reference_realisation.glsl";
+/// Is `module` the reference or one of its variants (the passes' REFERENCE_PASS)?
+inline bool is_reference_module(const std::string& module) { return module.starts_with("passes/reference"); }
 
 /// Defines of one variant of the forward pass (shaders/passes/forward.frag): the shading module
 /// (a method's or the reference's), the index range of each light kind in the light buffer and

@@ -136,6 +136,35 @@ TEST(Kneiphof, CloserToTheReferenceThanAPointAtTheLightsCentre) {
   EXPECT_NEAR(energy, smooth, 0.03);
 }
 
+// The scene's reference with the raster-realisation backend: binomial-glints materials as one
+// fixed microfacet realisation integrated over the lights.
+Frame realisation_reference(SceneFixture& f, int spp) {
+  auto backend = make_reference_backend("raster-realisation", {shaders(), *f.gpu, *f.renderer});
+  ReferenceSettings settings;
+  settings.spp = spp;
+  return render_reference(*backend, f.scene.camera, f.scene.film.width, f.scene.film.height, settings).mean;
+}
+
+TEST(Kneiphof, TheRealisationReferenceConvergesToTheSmoothRenderAndMatchesTheCountingModelsMean) {
+  // Dense: one realisation of ~1e14 facets per cell is the smooth NDF.
+  SceneFixture dense(area_lit_patch(40.0, 32));
+  const Image real_dense = realisation_reference(dense, 4).specular;
+  dense.scene.materials[0].binomial_glints.reset();
+  SceneFixture smooth(dense.scene);
+  expect_matches_smooth(real_dense, smooth.reference(4).specular, "realisation reference");
+  // Sparse: the two references are two models of the same surface; same mean, other glints.
+  SceneFixture f(area_lit_patch(13.0, 48));
+  const Image counting = f.reference(16).specular, real = realisation_reference(f, 16).specular;
+  const Image ours = f.method("kneiphof2024").specular;
+  const double mean = mean_luminance(counting);
+  std::printf("references at ln density 13: mean realisation / counting %.4f; rmse between them %.5f (%.1f%% of "
+              "the mean); kneiphof2024 rmse against counting %.5f, against realisation %.5f\n",
+              mean_luminance(real) / mean, rmse(real, counting), 100 * rmse(real, counting) / mean, rmse(ours, counting),
+              rmse(ours, real));
+  EXPECT_NEAR(mean_luminance(real), mean, 0.05 * mean);
+  EXPECT_GT(rmse(real, counting), 0.0);
+}
+
 TEST(Kneiphof, FiniteForRandomLightsAcrossTheHorizon) {
   // Lights of every kind with extent, random sizes and places, many crossing the plane's horizon
   // or behind it; random roughness and density; the method (each subdivision) and the reference.

@@ -1,7 +1,8 @@
 // kneiphof2024 in the renderer (docs/methods.md#kneiphof2024): dense glints converge to the
 // smooth LTC render (method, subdivided method and reference), a tiny light is the method's point
 // form, subdivision keeps the mean, the method is closer to the reference than deliot2023's
-// point-at-the-centre under area lights, and no NaN for random lights across the horizon.
+// point-at-the-centre under area lights, the realisation reference (raster-realisation) against
+// the counting model's, and no NaN for random lights across the horizon.
 #include <gtest/gtest.h>
 
 #include <cmath>

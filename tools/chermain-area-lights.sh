@@ -88,7 +88,7 @@ for kind in quad sphere; do
         --param chermain2020.light_extent=$choice --param chermain2021.light_extent=$choice $A -o "$dir/$choice" > /dev/null
     done
     for m in chermain2020 chermain2021; do
-      echo "| $kind | $size | $(fmt %.4f "$(field "$dir/centre" reference_noise_rmse)") | $(fmt %.4f "$(field "$dir/centre" reference_flicker_floor)")" \
+      echo "| $kind | $size | $(fmt %.4f "$(field "$dir/centre" reference_noise_rmse)") | $(fmt %.4f "$(field "$dir/centre" flicker_floor)")" \
         "| $m | $(fmt %.4f "$(anim "$dir/centre" $m mean_rmse)") | $(fmt %.4f "$(anim "$dir/half-vector-kernel" $m mean_rmse)")" \
         "| $(fmt %.4f "$(anim "$dir/centre" $m flicker)") | $(fmt %.4f "$(anim "$dir/half-vector-kernel" $m flicker)") |"
     done

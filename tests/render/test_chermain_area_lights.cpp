@@ -2,10 +2,12 @@
 // shaders/common/glint_light_kernel.glsl; docs/methods.md, "Area lights: the light's half-vector
 // region as a slope-space kernel"): delta lights keep the point form bit for bit, a tiny light is
 // its point form, and for larger quad and sphere lights the half-vector kernel is closer to the
-// reference that samples the light than the light as a point at its centre, without more flicker.
+// reference that samples the light than the light as a point at its centre, without more flicker;
+// no NaN under random lights crossing the horizon.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <string>
 
 #include "core/metrics.hpp"
@@ -101,4 +103,41 @@ TEST(ChermainAreaLights, TheKernelLowersTheErrorOfLargerLightsWithoutMoreFlicker
         EXPECT_LE(f_kernel, f_centre) << kind << " " << size << " " << id;
       }
     }
+}
+
+// Random quad, disk and sphere lights of random size and orientation over a glinty plane and
+// sphere, many crossing the sphere's horizon or lying almost in the plane: finite everywhere.
+TEST(ChermainAreaLights, NoNanForRandomLightsCrossingTheHorizon) {
+  std::mt19937 rng(15);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  for (int trial = 0; trial < 3; ++trial) {
+    TestScene scene;
+    scene.film(24, 16).camera({0.0, 1.0, 3.0}, {0.0, 0.2, -0.6}, 50);
+    scene.glinty_material("glitter", {{"sigma", 0.02 + 0.2 * u01(rng)}, {"rho", 0.5}, {"log_density", 12 + 8 * u01(rng)}});
+    scene.plane("glitter", {{"size", 12}}).sphere("glitter", {{"radius", 0.45}, {"translate", {0.0, 0.45, -0.4}}});
+    for (int l = 0; l < 3; ++l) {
+      const TomlValue position{-1.5 + 3 * u01(rng), -0.2 + 2.0 * u01(rng), -2.0 + 2.5 * u01(rng)};
+      const TomlValue direction{u01(rng) - 0.5, u01(rng) - 0.7, u01(rng) - 0.5};
+      const double size = std::pow(10.0, -2.5 + 3.0 * u01(rng));
+      switch ((trial + l) % 3) {
+        case 0:
+          scene.light("quad", {{"position", position}, {"direction", direction}, {"size", {size, 0.5 * size}},
+                               {"up", {0, 1, 0.3}}, {"radiance", 1}, {"visible", false}});
+          break;
+        case 1: scene.disk_light(position, direction, size, 1, {{"visible", false}}); break;
+        default: scene.sphere_light(position, std::min(size, 0.5), 1, {{"visible", false}});
+      }
+    }
+    SceneFixture f(scene);
+    for (const std::string id : {"chermain2020", "chermain2021"}) {
+      const Frame frame = f.method(id, kKernel);
+      for (const Image* image : {&frame.total, &frame.specular})
+        for (int y = 0; y < image->height(); ++y)
+          for (int x = 0; x < image->width(); ++x) {
+            const glm::vec3 p = image->at(x, y);
+            ASSERT_TRUE(std::isfinite(p.r) && std::isfinite(p.g) && std::isfinite(p.b) && p.r >= 0.0f)
+                << id << " trial " << trial << " pixel " << x << ", " << y;
+          }
+    }
+  }
 }

@@ -1,7 +1,8 @@
 // Method `chermain2020`: the procedural glinty BRDF of Chermain et al. 2020 (real-time, no
 // anti-aliasing of the half vector, no slope correlation). Materials without glints are shaded
-// as by `conventional`. Descriptor: src/shading/methods/chermain2020.cpp; docs/methods.md#chermain2020.
-#include "common/glint_shading.glsl"
+// as by `conventional`. Lights with extent: the light's half-vector region as the kernel of the
+// dictionary lookups, or the light as a point at its centre (parameter light_extent). Descriptor: src/shading/methods/chermain2020.cpp; docs/methods.md#chermain2020.
+#include "common/glint_light_kernel.glsl"
 
 #if MATERIAL_GLINTS
 GlintSurface gGlint;
@@ -17,7 +18,12 @@ Radiance shadeLight(Surface s, LightData L) {
 #if MATERIAL_GLINTS
   vec3 l, irradiance;
   centreLightIncidence(L, s.position, l, irradiance);
-  return shadeGlints(s, gGlint, l, irradiance, vec2(0.0), vec2(0.0), false);
+  vec2 dx = vec2(0.0), dy = vec2(0.0);
+  // Lights with extent: the light's half-vector region is the kernel of the filtered lookups
+  // (common/glint_light_kernel.glsl); delta lights keep the unfiltered ones. Both constant.
+  bool lightKernel = param_light_extent > 0.5 && lightHasExtent(L);
+  if (lightKernel) addLightRegionToKernel(s, L, l, dx, dy);
+  return shadeGlints(s, gGlint, l, irradiance, dx, dy, lightKernel);
 #else
   return shadeLobe(s, L, materialLobe(s));
 #endif

@@ -1,8 +1,10 @@
 // Method `chermain2021`: Chermain et al. 2021, geometric glint anti-aliasing (each cell's
 // marginals filtered by the pixel's half-vector footprint, eq. 19) and the slope correlation rho
 // (eq. 18) on the glinty BRDF of 2020. With rho = 0 and kernel = 0 it equals `chermain2020`.
+// Lights with extent: the pixel's kernel widened by the light's half-vector region, or the light
+// as a point at its centre (parameter light_extent).
 // Descriptor: src/shading/methods/chermain2021.cpp; docs/methods.md#chermain2021.
-#include "common/glint_shading.glsl"
+#include "common/glint_light_kernel.glsl"
 
 #if MATERIAL_GLINTS
 GlintSurface gGlint;
@@ -30,7 +32,12 @@ Radiance shadeLight(Surface s, LightData L) {
   centreLightIncidence(L, s.position, l, irradiance);
   vec2 dx, dy;
   halfVectorDerivatives(s, l, param_derivatives > 0.5, dx, dy);  // first: uniform control flow
-  return shadeGlints(s, gGlint, l, irradiance, param_kernel * dx, param_kernel * dy, true);
+  dx *= param_kernel;
+  dy *= param_kernel;
+  // Lights with extent: the pixel's kernel widened by the light's half-vector region
+  // (common/glint_light_kernel.glsl); a constant condition.
+  if (param_light_extent > 0.5 && lightHasExtent(L)) addLightRegionToKernel(s, L, l, dx, dy);
+  return shadeGlints(s, gGlint, l, irradiance, dx, dy, true);
 #else
   return shadeLobe(s, L, materialLobe(s));
 #endif

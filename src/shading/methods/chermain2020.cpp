@@ -15,7 +15,7 @@ MethodDescriptor chermain2020_method() {
                  "material's roughness; empty cells by relative area; V-cavity masking. Converges to the "
                  "anisotropic Beckmann NDF at large footprints. No slope correlation, no filtering of the half "
                  "vector: curved surfaces alias. Materials without glints are shaded as by conventional.",
-      .params = {glint_lean_param(false)},
+      .params = {glint_lean_param(false), glint_light_extent_param()},
       .tables = {"glint-dictionary"},
   };
 }

@@ -24,7 +24,8 @@ MethodDescriptor chermain2021_method() {
                  {"derivatives", 0, 0, 1,
                   "what is differentiated per pixel: the projected half vector h.xy (eq. 21, better at grazing "
                   "angles) or the half slope -h.xy / h.z (eq. 20)",
-                  {"projected", "slopes"}}},
+                  {"projected", "slopes"}},
+                 glint_light_extent_param()},
       .tables = {"glint-dictionary"},
   };
 }

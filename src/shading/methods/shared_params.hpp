@@ -38,6 +38,23 @@ inline ParamDecl area_lights_param() {
           .choice_tables = {{}, {"ltc-ggx"}}};
 }
 
+/// How the Chermain glint methods shade a light with extent (docs/methods.md, "Area lights: the
+/// light's half-vector region as a slope-space kernel"): each cell's slope distribution averaged
+/// over the light's half-vector region through the filtered dictionary lookups, or the light as a
+/// point at its centre carrying radiance x solid angle (the models' published form).
+inline ParamDecl glint_light_extent_param() {
+  return {.name = "light_extent",
+          .default_value = 1.0f,  // lower RMSE than the centre for every light size measured
+                                  // (tests/render/test_chermain_area_lights.cpp, docs/results.md)
+          .min = 0.0f,
+          .max = 1.0f,
+          .description = "lights with extent: each cell's slope distribution averaged over the light's half-vector "
+                         "region (an ellipse in slope space, added to the lookups' kernel), or the light as a point "
+                         "at its centre carrying radiance x solid angle",
+          .choices = {"centre", "half-vector-kernel"},
+          .compile_time = true};
+}
+
 inline constexpr const char* kChermain2020Citation =
     "X. Chermain, B. Sauvage, J.-M. Dischler, C. Dachsbacher, Procedural Physically based BRDF for Real-Time "
     "Rendering of Glints, Pacific Graphics 2020 (CGF 39(7))";

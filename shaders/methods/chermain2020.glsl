@@ -1,7 +1,8 @@
 // Method `chermain2020`: the procedural glinty BRDF of Chermain et al. 2020 (real-time, no
 // anti-aliasing of the half vector, no slope correlation). Materials without glints are shaded
 // as by `conventional`. Lights with extent: the light's half-vector region as the kernel of the
-// dictionary lookups, or the light as a point at its centre (parameter light_extent). Descriptor: src/shading/methods/chermain2020.cpp; docs/methods.md#chermain2020.
+// dictionary lookups, or the light as a point at its centre (parameter light_extent).
+// Descriptor: src/shading/methods/chermain2020.cpp; docs/methods.md#chermain2020.
 #include "common/glint_light_kernel.glsl"
 
 #if MATERIAL_GLINTS

@@ -419,6 +419,8 @@ binomial_glints_section() {
   echo "methods: \`type = \"glinty\"\`, the same ln density per uv area and sigma = alpha / sqrt(2) (Beckmann"
   echo "alpha = sqrt(2) sigma = the GGX alpha). R has no counterpart in Chermain's model (its facets' own"
   echo "lobe, sigma_lobe / sigma_dict = 0.057, corresponds to R ~ 0.003; the scene uses 0.02 and 0.01)."
+  echo "The scene's sun has extent: the reference counts its reflecting facets with the sun's own size (p"
+  echo "integrated over it, as kneiphof2024 estimates it; docs/methods.md#kneiphof2024), deliot2023 with R."
   echo "Each method is measured against the reference of the material it renders. RMSE: 320x180,"
   echo "frame 0, 256 spp. Mean RMSE and flicker: 8 frames at 160x90 against 64-spp references."
   echo

@@ -61,23 +61,22 @@ area_glints_section() {
   local dir="$out/area-glints" S="--width 320 --height 180" A="--width 160 --height 90 --frames 8 --spp 64"
   local B2="--width 640 --height 360 --bench-frames 5" m
   mkdir -p "$dir"
-  $B scenes --print glint-area-lights | glinty_version > "$dir/glinty.toml"
   $B compare -q --scene builtin:glint-area-lights --methods conventional,deliot2023,kneiphof2024 --spp 256 $S \
     -o "$dir/bin" > /dev/null
   $B compare -q --scene builtin:glint-area-lights --methods kneiphof2024 --param kneiphof2024.subdivision=4x4 \
     --spp 256 $S -o "$dir/bin-4x4" > /dev/null
   $B compare -q --scene builtin:glint-area-lights --methods conventional,deliot2023,kneiphof2024 --spp 256 $S \
     --reference-backend raster-realisation -o "$dir/bin-real" > /dev/null
-  $B compare -q --scene "$dir/glinty.toml" --methods conventional,chermain2020,chermain2021 --spp 256 $S \
+  $B compare -q --scene builtin:glint-area-lights-glinty --methods conventional,chermain2020,chermain2021 --spp 256 $S \
     --param chermain2020.$chermain_area_on --param chermain2021.$chermain_area_on -o "$dir/gl-on" > /dev/null
-  $B compare -q --scene "$dir/glinty.toml" --methods chermain2020,chermain2021 --spp 256 $S \
+  $B compare -q --scene builtin:glint-area-lights-glinty --methods chermain2020,chermain2021 --spp 256 $S \
     --param chermain2020.$chermain_area_off --param chermain2021.$chermain_area_off -o "$dir/gl-off" > /dev/null
   $B animate -q --scene builtin:glint-area-lights --methods conventional,deliot2023,kneiphof2024 $A -o "$dir/anim-bin" > /dev/null
   $B animate -q --scene builtin:glint-area-lights --methods kneiphof2024 --param kneiphof2024.subdivision=4x4 $A \
     -o "$dir/anim-bin-4x4" > /dev/null
-  $B animate -q --scene "$dir/glinty.toml" --methods conventional,chermain2020,chermain2021 $A \
+  $B animate -q --scene builtin:glint-area-lights-glinty --methods conventional,chermain2020,chermain2021 $A \
     --param chermain2020.$chermain_area_on --param chermain2021.$chermain_area_on -o "$dir/anim-gl-on" > /dev/null
-  $B animate -q --scene "$dir/glinty.toml" --methods chermain2020,chermain2021 $A \
+  $B animate -q --scene builtin:glint-area-lights-glinty --methods chermain2020,chermain2021 $A \
     --param chermain2020.$chermain_area_off --param chermain2021.$chermain_area_off -o "$dir/anim-gl-off" > /dev/null
   row() {  # row LABEL COMPARE_DIR ANIMATE_DIR METHOD
     echo "| $1 | $(fmt %.4f "$(metric "$2" "$4" rmse)") | $(fmt %.3f "$(metric "$2" "$4" energy_ratio)")" \
@@ -86,13 +85,13 @@ area_glints_section() {
   noise() { echo "| (reference noise; flicker floor) | $(fmt %.4f "$(field "$1" reference_noise_rmse)") | | | $(fmt %.4f "$(field "$2" flicker_floor)") |"; }
   echo "## Glints under area lights: Kneiphof & Klein 2024"
   echo
-  echo "builtin:glint-area-lights: binomial-glints materials under a quad (0.05 sr), a disk and a small"
-  echo "sphere light; and the same scene made glinty for the Chermain methods (the same ln density per uv"
-  echo "area, sigma = alpha / sqrt 2). Each method against the reference of the material it renders: for"
-  echo "binomial glints the counting model with p integrated numerically over each light (the paper's"
-  echo "ablation reference, docs/methods.md#kneiphof2024); for glinty materials the glinty BRDF integrated"
-  echo "over the light by MIS. RMSE: 320x180, frame 0, 256 spp. Mean RMSE and flicker: 8 frames of the"
-  echo "orbit at 160x90 against 64-spp references."
+  echo "builtin:glint-area-lights: binomial-glints materials under a large quad, a disk and a small sphere"
+  echo "light; and builtin:glint-area-lights-glinty, the same scene made glinty for the Chermain methods"
+  echo "(the same ln density per uv area, sigma = alpha / sqrt 2). Each method against the reference of the"
+  echo "material it renders: for binomial glints the counting model with p integrated numerically over each"
+  echo "light (the paper's ablation reference, docs/methods.md#kneiphof2024); for glinty materials the"
+  echo "glinty BRDF integrated over the light by MIS. RMSE: 320x180, frame 0, 256 spp. Mean RMSE and"
+  echo "flicker: 8 frames of the orbit at 160x90 against 64-spp references."
   echo
   echo "| scene / method | RMSE | energy ratio | mean RMSE (8 frames) | flicker |"
   echo "| --- | --- | --- | --- | --- |"
@@ -131,8 +130,9 @@ area_glints_section() {
 
   # Convergence as density grows (the paper's fig. 10): the glints approach the smooth LTC render.
   echo "**Convergence with density** (the paper's fig. 10): builtin:glint-area-lights with both materials'"
-  echo "\`log_density\` set to each value, 160x90, 64-spp references. As the facets multiply, kneiphof2024's"
-  echo "image approaches \`conventional\`'s (the smooth GGX by LTC) and so does the reference."
+  echo "\`log_density\` set to each value, 160x90, 64-spp references. As the facets multiply the glints average"
+  echo "out: kneiphof2024's energy approaches \`conventional\`'s (the smooth GGX by LTC) and its RMSE falls to the"
+  echo "floor of its smooth approximations (the LTC's, and the point form's for the small sphere light)."
   echo
   echo "| ln density | kneiphof2024 RMSE | conventional RMSE | kneiphof2024 energy / conventional energy | reference noise |"
   echo "| --- | --- | --- | --- | --- |"
@@ -151,8 +151,9 @@ area_glints_section() {
   echo "**Light size**: a binomial-glints floor (alpha 0.15, ln density 14) under one quad light behind"
   echo "the lobe's peak, of side 0.02 m (4e-5 sr, about a point) to 2 m (0.35 sr), radiance x area fixed;"
   echo "and the floor made glinty for the Chermain methods. 192x108, 64-spp references; flicker over the"
-  echo "8-frame orbit. kneiphof2024's error stays flat as the light grows while a point at the centre"
-  echo "(deliot2023, the Chermain methods without the extension) departs from the reference."
+  echo "8-frame orbit. Read each column down: how a method's error and flicker change as the light grows,"
+  echo "for a point at the light's centre (deliot2023, the Chermain methods with light_extent=centre)"
+  echo "against the light's own extent (kneiphof2024, the Chermain methods' half-vector kernel)."
   echo
   echo "| side (m) | deliot2023 RMSE / flicker | kneiphof2024 RMSE / flicker | chermain2020 off / on RMSE | chermain2021 off / on RMSE | chermain2021 off / on flicker | flicker floor (binomial / glinty) |"
   echo "| --- | --- | --- | --- | --- | --- | --- |"
@@ -191,7 +192,7 @@ area_glints_section() {
   for m in on off; do
     local choice=$chermain_area_on
     [[ $m == off ]] && choice=$chermain_area_off
-    $B bench -q --scene "$dir/glinty.toml" --methods chermain2020,chermain2021 --param chermain2020.$choice \
+    $B bench -q --scene builtin:glint-area-lights-glinty --methods chermain2020,chermain2021 --param chermain2020.$choice \
       --param chermain2021.$choice $B2 -o "$dir/bench-gl-$m" > /dev/null
   done
   local base

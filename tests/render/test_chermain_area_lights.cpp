@@ -12,6 +12,7 @@
 
 #include "core/metrics.hpp"
 #include "gl_fixture.hpp"
+#include "random_area_lights.hpp"
 
 using namespace glintlab;
 using namespace glintlab::test;
@@ -115,19 +116,7 @@ TEST(ChermainAreaLights, NoNanForRandomLightsCrossingTheHorizon) {
     scene.film(24, 16).camera({0.0, 1.0, 3.0}, {0.0, 0.2, -0.6}, 50);
     scene.glinty_material("glitter", {{"sigma", 0.02 + 0.2 * u01(rng)}, {"rho", 0.5}, {"log_density", 12 + 8 * u01(rng)}});
     scene.plane("glitter", {{"size", 12}}).sphere("glitter", {{"radius", 0.45}, {"translate", {0.0, 0.45, -0.4}}});
-    for (int l = 0; l < 3; ++l) {
-      const TomlValue position{-1.5 + 3 * u01(rng), -0.2 + 2.0 * u01(rng), -2.0 + 2.5 * u01(rng)};
-      const TomlValue direction{u01(rng) - 0.5, u01(rng) - 0.7, u01(rng) - 0.5};
-      const double size = std::pow(10.0, -2.5 + 3.0 * u01(rng));
-      switch ((trial + l) % 3) {
-        case 0:
-          scene.light("quad", {{"position", position}, {"direction", direction}, {"size", {size, 0.5 * size}},
-                               {"up", {0, 1, 0.3}}, {"radiance", 1}, {"visible", false}});
-          break;
-        case 1: scene.disk_light(position, direction, size, 1, {{"visible", false}}); break;
-        default: scene.sphere_light(position, std::min(size, 0.5), 1, {{"visible", false}});
-      }
-    }
+    add_random_area_lights(scene, rng, trial);
     SceneFixture f(scene);
     for (const std::string id : {"chermain2020", "chermain2021"}) {
       const Frame frame = f.method(id, kKernel);

@@ -8,6 +8,7 @@
 
 #include "core/metrics.hpp"
 #include "gl_fixture.hpp"
+#include "glint_convergence.hpp"
 
 using namespace glintlab;
 using namespace glintlab::test;
@@ -33,28 +34,6 @@ TestScene flat_patch(double log_density, bool directional, double camera_x = 0.0
   else
     s.point_light({0.1, 1.0, 0.05}, 1);
   return s;
-}
-
-double block_mean(const Image& img, int x0, int y0, int n) {
-  double sum = 0;
-  for (int y = y0; y < y0 + n; ++y)
-    for (int x = x0; x < x0 + n; ++x) sum += luminance(img.at(x, y));
-  return sum / (n * n);
-}
-
-double mean_luminance(const Image& img) { return luminance(glm::vec3(img.mean())); }
-
-// Mean within 2%, and each 8x8-pixel block where the lobe is within 6%, of the smooth render.
-void expect_matches_smooth(const Image& glints, const Image& smooth, const std::string& what) {
-  const double g = mean_luminance(glints), c = mean_luminance(smooth);
-  EXPECT_NEAR(g, c, 0.02 * c) << what;
-  for (int by = 0; by + 8 <= glints.height(); by += 8)
-    for (int bx = 0; bx + 8 <= glints.width(); bx += 8) {
-      const double gb = block_mean(glints, bx, by, 8), cb = block_mean(smooth, bx, by, 8);
-      if (cb > 0.05 * c) {
-        EXPECT_NEAR(gb, cb, 0.06 * cb) << what << " block " << bx << ", " << by;
-      }
-    }
 }
 
 TEST(Deliot, DenseGlintsConvergeToTheGgxRender) {

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "gl_fixture.hpp"
+#include "random_area_lights.hpp"
 
 using namespace glintlab;
 using namespace glintlab::test;
@@ -128,20 +129,7 @@ TEST(LtcAreaLightsSweep, NoNanForRandomShapesSizesAndOrientations) {
     const double alpha = std::pow(10.0, -3.0 * u01(rng));
     scene.material("m", {{"alpha", alpha}, {"f0", 1}, {"diffuse", 0.5}});
     scene.plane("m", {{"size", 12}}).sphere("m", {{"radius", 0.45}, {"translate", {0.0, 0.45, -0.4}}});
-    for (int l = 0; l < 3; ++l) {
-      const double y = -0.2 + 2.0 * u01(rng);  // some below the plane, some grazing it, some spheres around the points
-      const TomlValue position{-1.5 + 3 * u01(rng), y, -2.0 + 2.5 * u01(rng)};
-      const TomlValue direction{u01(rng) - 0.5, u01(rng) - 0.7, u01(rng) - 0.5};
-      const double size = std::pow(10.0, -2.5 + 3.0 * u01(rng));
-      switch ((trial + l) % 3) {
-        case 0:
-          scene.light("quad", {{"position", position}, {"direction", direction}, {"size", {size, 0.5 * size}},
-                               {"up", {0, 1, 0.3}}, {"radiance", 1}, {"visible", false}});
-          break;
-        case 1: scene.disk_light(position, direction, size, 1, {{"visible", false}}); break;
-        default: scene.sphere_light(position, std::min(size, 0.5), 1, {{"visible", false}});
-      }
-    }
+    add_random_area_lights(scene, rng, trial);
     SceneFixture f(scene);
     for (const auto& m : all_methods()) {
       if (!m.find_param("area_lights")) continue;

@@ -1,5 +1,6 @@
 // Descriptor of `deliot2023`: glinty appearance by distributed binomial laws on anisotropic
 // grids (Deliot & Belcour 2023), with the fixes its public code needed.
+#include "shading/methods/shared_params.hpp"
 #include "shading/registry.hpp"
 
 namespace glintlab {
@@ -18,15 +19,7 @@ MethodDescriptor deliot2023_method() {
                  "the remaining count. The expected NDF is the material's GGX. Lights with extent are points at "
                  "their centre (the paper's ad-hoc R stands for their size). Procedural random numbers: no "
                  "table. Other materials are shaded as by conventional (lights with extent by LTC).",
-      .params = {{"screen_space_scale", 1.5f, 0.5f, 8.0f,
-                  "the glints' smallest size in pixels: grid cells this many pixels across the footprint's minor "
-                  "axis (1 aliases, at Shannon's limit; the paper recommends 1.5)"},
-                 {"remaining_count", 0, 0, 1,
-                  "the law of the reflecting facets besides the first: a lognormal with the binomial's exact "
-                  "conditional mean and variance (E[D_glint] = D(h) at every density), or the paper's Gaussian "
-                  "binomial(n - 1, p), clamped to [0, n - 1] (biased up where about one facet reflects)",
-                  {"lognormal", "gaussian"},
-                  /*compile_time=*/true}},
+      .params = {binomial_screen_space_scale_param(), binomial_remaining_count_param()},
       // Other materials' lights with extent: conventional's default (area_lights = ltc).
       .tables = {"ltc-ggx"},
   };

@@ -1,5 +1,6 @@
 // Descriptor of `kneiphof2024`: glints under area lights (Kneiphof & Klein 2024) on the binomial
 // counting of deliot2023.
+#include "shading/methods/shared_params.hpp"
 #include "shading/registry.hpp"
 
 namespace glintlab {
@@ -18,14 +19,8 @@ MethodDescriptor kneiphof2024_method() {
                  "can be cut into 2 x 2 or 4 x 4 cells whose facets are split hierarchically. Delta lights: "
                  "the material's R, as deliot2023, or a sun-sized cap. Other materials are shaded as by "
                  "conventional (lights with extent by LTC).",
-      .params = {{"screen_space_scale", 1.5f, 0.5f, 8.0f,
-                  "the glints' smallest size in pixels: grid cells this many pixels across the footprint's minor "
-                  "axis (as deliot2023)"},
-                 {"remaining_count", 0, 0, 1,
-                  "the law of the reflecting facets besides the first (as deliot2023): a lognormal with the "
-                  "binomial's exact conditional mean and variance, or the paper's clamped Gaussian",
-                  {"lognormal", "gaussian"},
-                  /*compile_time=*/true},
+      .params = {binomial_screen_space_scale_param(),
+                 binomial_remaining_count_param(),
                  {"subdivision", 0, 0, 2,
                   "quad lights cut into cells, each with its own LTC integrals, the reflecting facets split "
                   "between them by hierarchical binomial draws (the paper's fig. 9): glints take the colours "

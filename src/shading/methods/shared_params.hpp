@@ -55,6 +55,23 @@ inline ParamDecl glint_light_extent_param() {
           .compile_time = true};
 }
 
+/// The binomial glints' cell size in pixels (Deliot & Belcour 2023; deliot2023, kneiphof2024).
+inline ParamDecl binomial_screen_space_scale_param() {
+  return {"screen_space_scale", 1.5f, 0.5f, 8.0f,
+          "the glints' smallest size in pixels: grid cells this many pixels across the footprint's minor "
+          "axis (1 aliases, at Shannon's limit; the paper recommends 1.5)"};
+}
+
+/// The law of the reflecting facets besides the first (docs/methods.md, deliot2023).
+inline ParamDecl binomial_remaining_count_param() {
+  return {"remaining_count", 0, 0, 1,
+          "the law of the reflecting facets besides the first: a lognormal with the binomial's exact "
+          "conditional mean and variance (E[D_glint] = D(h) at every density), or the paper's Gaussian "
+          "binomial(n - 1, p), clamped to [0, n - 1] (biased up where about one facet reflects)",
+          {"lognormal", "gaussian"},
+          /*compile_time=*/true};
+}
+
 inline constexpr const char* kChermain2020Citation =
     "X. Chermain, B. Sauvage, J.-M. Dischler, C. Dachsbacher, Procedural Physically based BRDF for Real-Time "
     "Rendering of Glints, Pacific Graphics 2020 (CGF 39(7))";

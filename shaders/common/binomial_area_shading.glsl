@@ -7,6 +7,27 @@
 #include "common/binomial_shading.glsl"
 #include "common/glint_light_probability.glsl"
 
+// What the LTCs of a pixel's binomial-glints lobe need that is the same for every light (the
+// roughness and the view): computed once per pixel (prepareSurface).
+struct GlintLtc {
+  mat3 ndfMinv;    // the D-only LTC's M^-1 in the view's frame (table ltc-ndf)
+  mat3 ggxMinv;    // the GGX LTC's (table ltc-ggx)
+  float ndfScale;  // its magnitude / T: p = ndfScale x the LTC's integral over the light
+  vec3 ggxScale;   // the GGX lobe's integral with Schlick's Fresnel
+  float alpha;     // the isotropic alpha the tables and T are read at
+  float totalNdf;  // T
+};
+
+GlintLtc glintLtc(Surface s) {
+  vec3 wo = toLocal(s, s.view);
+  float alpha = glintIsotropicAlpha(s.alpha);
+  float totalNdf = ggxTotalNdf(alpha);
+  mat3 frame = ltcViewFrame(wo);
+  return GlintLtc(ltcInverseMatrix(uLtcNdf, alpha, wo.z) * frame, ltcInverseMatrix(uLtcGgx, alpha, wo.z) * frame,
+                  ltcTerms(uLtcNdf, alpha, wo.z).x / totalNdf, ltcSpecularScale(ltcTerms(uLtcGgx, alpha, wo.z), s.f0),
+                  alpha, totalNdf);
+}
+
 // The smooth specular integral over a light with extent (per unit radiance, Fresnel included) and
 // p, each as the LTC's for large lights and the point form's (the BRDF at the centre x solid
 // angle; the small-cap p) for small ones, blended by glintCapWeight.
@@ -17,21 +38,16 @@ struct GlintLightIntegral {
 };
 
 // The two estimates of p and the cap's weight: (LTC, small cap, weight of the cap).
-vec3 glintProbabilityEstimates(Surface s, LightData L, vec3 wo, vec3 centreDir, float solidAngle) {
-  float alpha = glintIsotropicAlpha(s.alpha);
-  float totalNdf = ggxTotalNdf(alpha);
-  mat3 Minv = ltcInverseMatrix(uLtcNdf, alpha, wo.z) * ltcViewFrame(wo);
-  float pLtc = ltcTerms(uLtcNdf, alpha, wo.z).x * ltcLightIntegral(s, L, Minv, false) / totalNdf;
+vec3 glintProbabilityEstimates(Surface s, GlintLtc ltc, LightData L, vec3 wo, vec3 centreDir, float solidAngle) {
+  float pLtc = ltc.ndfScale * ltcLightIntegral(s, L, ltc.ndfMinv, false);
   vec3 wi = toLocal(s, centreDir);
-  float pCap = glintCapProbability(wo, wi, solidAngle, s.alpha, totalNdf);
-  return vec3(pLtc, pCap, glintCapWeight(solidAngle, abs(dot(wi, normalize(wo + wi))), alpha));
+  float pCap = glintCapProbability(wo, wi, solidAngle, s.alpha, ltc.totalNdf);
+  return vec3(pLtc, pCap, glintCapWeight(solidAngle, abs(dot(wi, normalize(wo + wi))), ltc.alpha));
 }
 
-GlintLightIntegral glintLightIntegral(Surface s, LightData L, vec3 wo, vec3 centreDir, float solidAngle) {
-  float alpha = glintIsotropicAlpha(s.alpha);
-  vec3 p = glintProbabilityEstimates(s, L, wo, centreDir, solidAngle);
-  vec3 specularLtc = ltcSpecularScale(ltcTerms(uLtcGgx, alpha, wo.z), s.f0) *
-                     ltcLightIntegral(s, L, ltcInverseMatrix(uLtcGgx, alpha, wo.z) * ltcViewFrame(wo), false);
+GlintLightIntegral glintLightIntegral(Surface s, GlintLtc ltc, LightData L, vec3 wo, vec3 centreDir, float solidAngle) {
+  vec3 p = glintProbabilityEstimates(s, ltc, L, wo, centreDir, solidAngle);
+  vec3 specularLtc = ltc.ggxScale * ltcLightIntegral(s, L, ltc.ggxMinv, false);
   vec3 wi = toLocal(s, centreDir);
   vec3 specularPoint = specularCos(NDF_GGX, wo, wi, s.alpha, s.f0) * solidAngle;
   return GlintLightIntegral(mix(specularLtc, specularPoint, p.z), mix(p.x, p.y, p.z), normalize(wo + wi));

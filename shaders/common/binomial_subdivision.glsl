@@ -11,6 +11,7 @@
 // leaves in Morton order make square blocks at every level of the tree).
 #include "common/binomial_glints.glsl"
 #include "common/fragment_inputs.glsl"
+#include "common/binomial_area_shading.glsl"
 #include "common/glint_light_probability.glsl"
 
 // n, as a loop bound the compiler cannot see through: keeps the loops below rolled. Unrolled,
@@ -74,15 +75,7 @@ void binomialReflectingSharesSplit(BinomialSurface b, vec2 slope, float pNode[LI
 // spherical quad), per unit radiance: sum over the cells of g_i x the cell's LTC integral, with
 // p_i from the D-only LTC and g_i = share_i / p_i. The count is drawn at the half vector towards
 // the quad's centre, as undivided.
-vec3 subdividedGlintSpecular(Surface s, BinomialSurface b, LightData L, vec3 wo, int model) {
-  float alpha = glintIsotropicAlpha(s.alpha);
-  float totalNdf = ggxTotalNdf(alpha);
-  mat3 frame = ltcViewFrame(wo);
-  mat3 MinvNdf = ltcInverseMatrix(uLtcNdf, alpha, wo.z) * frame;
-  mat3 MinvGgx = ltcInverseMatrix(uLtcGgx, alpha, wo.z) * frame;
-  float ndfScale = ltcTerms(uLtcNdf, alpha, wo.z).x / totalNdf;
-  vec3 ggxScale = ltcSpecularScale(ltcTerms(uLtcGgx, alpha, wo.z), s.f0);
-
+vec3 subdividedGlintSpecular(Surface s, GlintLtc ltc, BinomialSurface b, LightData L, vec3 wo, int model) {
   vec3 quad[LIGHT_POLYGON_MAX_VERTICES];
   lightPolygonForm(L, quad);
   for (int i = 0; i < LIGHT_POLYGON_MAX_VERTICES; ++i) quad[i] = toLocal(s, quad[i] - s.position);
@@ -95,8 +88,8 @@ vec3 subdividedGlintSpecular(Surface s, BinomialSurface b, LightData L, vec3 wo,
     float step = 1.0 / float(side);
     vec3 corner = quad[0] + cell.x * du + cell.y * dv;
     vec3 v[LIGHT_POLYGON_MAX_VERTICES] = vec3[](corner, corner + step * du, corner + step * (du + dv), corner + step * dv);
-    pNode[LIGHT_FIRST_LEAF + i] = ndfScale * ltcPolygonIntegral(MinvNdf, v, 4);
-    integral[i] = ltcPolygonIntegral(MinvGgx, v, 4);
+    pNode[LIGHT_FIRST_LEAF + i] = ltc.ndfScale * ltcPolygonIntegral(ltc.ndfMinv, v, 4);
+    integral[i] = ltcPolygonIntegral(ltc.ggxMinv, v, 4);
   }
   for (int j = LIGHT_FIRST_LEAF - 1; j >= 0; --j) pNode[j] = pNode[2 * j + 1] + pNode[2 * j + 2];
   if (!(pNode[0] > 0.0)) return vec3(0.0);
@@ -112,5 +105,5 @@ vec3 subdividedGlintSpecular(Surface s, BinomialSurface b, LightData L, vec3 wo,
     float pi = pNode[LIGHT_FIRST_LEAF + i];
     if (pi > 0.0) sum += share[i] / pi * integral[i];
   }
-  return ggxScale * sum;
+  return ltc.ggxScale * sum;
 }

@@ -12,11 +12,13 @@ const int LIGHT_CELLS = 1 << (2 * int(param_subdivision + 0.5));  // 1 (none), 4
 #include "common/binomial_area_shading.glsl"
 #include "common/binomial_subdivision.glsl"
 BinomialSurface gBinomial;
+GlintLtc gLtc;  // the LTC terms of the pixel's lobe, shared by every light
 #endif
 
 void prepareSurface(inout Surface s) {
 #if MATERIAL_BINOMIAL_GLINTS
   gBinomial = prepareBinomialGlints(s, materials[uMaterial], param_screen_space_scale);
+  gLtc = glintLtc(s);
 #endif
 }
 
@@ -32,9 +34,9 @@ Radiance shadeLight(Surface s, LightData L) {
   vec3 radiance = lightRadiance(L);
   result.diffuse = s.diffuse * ltcLightIntegral(s, L, mat3(1.0), true) * radiance;
   if (LIGHT_CELLS > 1 && lightForm(L) == LIGHT_FORM_POLYGON) {
-    result.specular = subdividedGlintSpecular(s, gBinomial, L, wo, model) * radiance;
+    result.specular = subdividedGlintSpecular(s, gLtc, gBinomial, L, wo, model) * radiance;
   } else {
-    GlintLightIntegral g = glintLightIntegral(s, L, wo, centreDir, solidAngle);
+    GlintLightIntegral g = glintLightIntegral(s, gLtc, L, wo, centreDir, solidAngle);
     result.specular = glintFactor(gBinomial, g.hCentre, g.p, model) * g.specular * radiance;
   }
   return result;

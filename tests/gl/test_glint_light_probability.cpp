@@ -177,7 +177,7 @@ vec4 evaluate(vec4 a, vec4 b) {
   LightData L = lights[int(b.x)];
   vec3 wo = toLocal(s, s.view);
   vec3 centreDir = lightCentreDirection(L, s.position);
-  vec3 p = glintProbabilityEstimates(s, L, wo, centreDir, lightSolidAngle(L, s.position, centreDir));
+  vec3 p = glintProbabilityEstimates(s, glintLtc(s), L, wo, centreDir, lightSolidAngle(L, s.position, centreDir));
   uint seed = hash3(uvec3(uint(b.x), uint(a.x * 1000.0), 7u));
   float numerical = lightNdfIntegral(s, L, wo, 0u, 128u, hashToUnit2(seed), hashToUnit2(pcgHash(seed + 1u))) /
                     ggxTotalNdf(a.x);

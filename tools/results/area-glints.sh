@@ -8,6 +8,18 @@
 chermain_area_on="light_extent=half-vector-kernel"
 chermain_area_off="light_extent=centre"
 
+# Whether two RMSEs against the same reference rank: gap_note LABEL_A DIR_A METHOD_A LABEL_B DIR_B
+# METHOD_B (the reference's noise from DIR_A); a gap within twice the reference's noise RMSE is not
+# a ranking (computed, never typed, as make-results.sh's ranking_note).
+gap_note() {
+  local a b n
+  a=$(metric "$2" "$3" rmse) b=$(metric "$5" "$6" rmse) n=$(field "$2" reference_noise_rmse)
+  awk -v la="$1" -v lb="$4" -v a="$a" -v b="$b" -v n="$n" 'BEGIN {
+    d = a - b; if (d < 0) d = -d
+    printf "%s %.4f against %s %.4f: a gap of %.4f, %s twice the reference noise (%.4f)%s\n", la, a, lb, b, d,
+      (d > 2 * n ? "larger than" : "within"), 2 * n, (d > 2 * n ? "." : ": not a ranking.") }'
+}
+
 # A binomial-glints scene made glinty (stdin to stdout): the same ln density per uv area and
 # sigma = alpha / sqrt 2 (Beckmann alpha = the GGX alpha); R, randomization, slope grid dropped.
 glinty_version() {
@@ -107,6 +119,10 @@ area_glints_section() {
   row "glinty: chermain2021, $chermain_area_on" "$dir/gl-on" "$dir/anim-gl-on" chermain2021
   noise "$dir/gl-on" "$dir/anim-gl-on"
   echo
+  gap_note kneiphof2024 "$dir/bin" kneiphof2024 deliot2023 "$dir/bin" deliot2023
+  echo
+  gap_note "chermain2021 (kernel)" "$dir/gl-on" chermain2021 "chermain2021 (centre)" "$dir/gl-off" chermain2021
+  echo
   echo "The same binomial methods against the reference of the physical question (\`--reference-backend"
   echo "raster-realisation\`: one fixed microfacet realisation integrated over each light; docs/methods.md,"
   echo "kneiphof2024, \"Two references\"), 320x180, 256 spp:"
@@ -155,8 +171,8 @@ area_glints_section() {
   echo "for a point at the light's centre (deliot2023, the Chermain methods with light_extent=centre)"
   echo "against the light's own extent (kneiphof2024, the Chermain methods' half-vector kernel)."
   echo
-  echo "| side (m) | deliot2023 RMSE / flicker | kneiphof2024 RMSE / flicker | chermain2020 off / on RMSE | chermain2021 off / on RMSE | chermain2021 off / on flicker | flicker floor (binomial / glinty) |"
-  echo "| --- | --- | --- | --- | --- | --- | --- |"
+  echo "| side (m) | deliot2023 RMSE / flicker | kneiphof2024 RMSE / flicker | chermain2020 off / on RMSE | chermain2021 off / on RMSE | chermain2021 off / on flicker | reference noise (binomial / glinty) | flicker floor (binomial / glinty) |"
+  echo "| --- | --- | --- | --- | --- | --- | --- | --- |"
   local side d
   for side in 0.02 0.1 0.3 0.8 2.0; do
     d="$dir/size-$side"
@@ -178,6 +194,7 @@ area_glints_section() {
       "| $(fmt %.4f "$(metric "$d/gl-off" chermain2020 rmse)") / $(fmt %.4f "$(metric "$d/gl-on" chermain2020 rmse)")" \
       "| $(fmt %.4f "$(metric "$d/gl-off" chermain2021 rmse)") / $(fmt %.4f "$(metric "$d/gl-on" chermain2021 rmse)")" \
       "| $(fmt %.4f "$(anim "$d/anim-gl-off" chermain2021 flicker)") / $(fmt %.4f "$(anim "$d/anim-gl-on" chermain2021 flicker)")" \
+      "| $(fmt %.4f "$(field "$d/bin" reference_noise_rmse)") / $(fmt %.4f "$(field "$d/gl-on" reference_noise_rmse)")" \
       "| $(fmt %.4f "$(field "$d/anim-bin" flicker_floor)") / $(fmt %.4f "$(field "$d/anim-gl-on" flicker_floor)") |"
   done
   echo

@@ -105,14 +105,17 @@ TEST(Kneiphof, CloserToTheReferenceThanAPointAtTheLightsCentre) {
   // At ln density 13 a few facets reflect per cell: glints, not a lobe. The method's energy is the
   // smooth LTC render's (conventional: the LTC fit's own error) within 3%.
   SceneFixture f(area_lit_patch(13.0, 48));
-  const Image ref = f.reference_estimate(16).mean.specular;
+  const ReferenceFrame truth = f.reference_estimate(16);
+  const Image& ref = truth.mean.specular;
   const Image ours = f.method("kneiphof2024").specular;
   const double error = rmse(ours, ref), deliot = rmse(f.method("deliot2023").specular, ref);
   const double energy = mean_luminance(ours) / mean_luminance(ref);
   const double smooth = mean_luminance(f.method("conventional").specular) / mean_luminance(ref);
-  std::printf("specular rmse: kneiphof2024 %.5f, deliot2023 %.5f; energy: kneiphof2024 %.4f, conventional %.4f\n", error,
-              deliot, energy, smooth);
-  EXPECT_LT(error, deliot);
+  std::printf("specular rmse: kneiphof2024 %.5f, deliot2023 %.5f (reference noise %.5f); energy: kneiphof2024 %.4f, "
+              "conventional %.4f\n",
+              error, deliot, truth.noise_rmse(), energy, smooth);
+  // A ranking only if the gap is beyond twice the reference's own noise.
+  EXPECT_GT(deliot - error, 2.0 * truth.noise_rmse());
   EXPECT_NEAR(energy, smooth, 0.03);
 }
 

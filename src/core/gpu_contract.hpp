@@ -19,6 +19,10 @@ inline constexpr int kMaxMaterials = 128;
 inline constexpr int kFrameBlockBinding = 0;
 inline constexpr int kLightBlockBinding = 1;
 inline constexpr int kMaterialBlockBinding = 2;
+/// Storage-buffer binding points of the materials' prefiltered NDF pyramids (deng2022;
+/// src/prefilter/prefiltered_ndf_layout.hpp, shaders/common/prefiltered_ndf.glsl).
+inline constexpr int kPrefilteredNdfRecordsBinding = 0;
+inline constexpr int kPrefilteredNdfValuesBinding = 1;
 
 /// Texture units of a material's maps (shaders/common/fragment_inputs.glsl, slope_moments.glsl).
 inline constexpr int kNormalMapUnit = 0;

@@ -164,7 +164,8 @@ GpuScene::NormalMapTextures GpuScene::upload_normal_map(const NormalMap& map) {
   return t;
 }
 
-GpuScene::GpuScene(const Scene& scene, TableCache tables) : tables_(std::move(tables)) {
+GpuScene::GpuScene(const Scene& scene, TableCache tables)
+    : tables_(std::move(tables)), prefiltered_ndfs_(scene.materials, tables_.cache().directory()) {
   for (const auto& shape : scene.shapes) meshes_.push_back(upload(*shape.mesh, shape.transform, shape.material));
 
   white_ = gl::make_texture(GL_TEXTURE_2D);

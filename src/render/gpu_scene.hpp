@@ -12,6 +12,7 @@
 
 #include "core/gpu_contract.hpp"
 #include "gl/objects.hpp"
+#include "render/prefiltered_ndfs.hpp"
 #include "render/tables/gpu_tables.hpp"
 #include "scene/scene.hpp"
 
@@ -72,6 +73,9 @@ class GpuScene {
   /// reference reads, so its cache key includes these tables' keys.
   [[nodiscard]] const std::vector<std::string>& material_table_ids() const { return material_table_ids_; }
   void require_tables(std::span<const std::string> ids) const { tables_.require(ids); }
+  /// The normal-map-glints materials' prefiltered NDF pyramids (deng2022), made on first use.
+  /// Residency is a cache of the scene's data, hence const.
+  [[nodiscard]] PrefilteredNdfs& prefiltered_ndfs() const { return prefiltered_ndfs_; }
   /// The light buffer is sorted by kind; [x, y) is the index range of each kind.
   [[nodiscard]] const LightRanges& light_ranges() const { return light_ranges_; }
   /// Binds the material and light uniform buffers (kMaterialBlockBinding, kLightBlockBinding).
@@ -102,6 +106,7 @@ class GpuScene {
   std::map<const MaterialTexture*, gl::Texture> texture_objects_;  // shared between materials
   gl::Texture white_;  // 1x1 white: the texel of an absent texture
   mutable GpuTables tables_;
+  mutable PrefilteredNdfs prefiltered_ndfs_;
   std::vector<std::string> material_table_ids_;
   gl::Buffer materials_;
   gl::Buffer lights_;

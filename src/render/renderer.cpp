@@ -115,8 +115,13 @@ Renderer::FrameUniforms Renderer::frame_uniforms(const Camera& camera, const glm
   return f;
 }
 
-void Renderer::draw(const MethodDescriptor& method, const ParamValues& params, const Camera& camera, int width, int height) {
+void Renderer::prepare(const MethodDescriptor& method, const ParamValues& params) {
   scene_.require_tables(required_tables(method, params));
+  if (method.reads_prefiltered_ndfs) scene_.prefiltered_ndfs().bind(prefilter_settings_from(params));
+}
+
+void Renderer::draw(const MethodDescriptor& method, const ParamValues& params, const Camera& camera, int width, int height) {
+  prepare(method, params);
   draw_module(method_program_module(shaders_, method, params), params, camera, width, height);
 }
 
@@ -135,7 +140,7 @@ void Renderer::draw_view(const std::string& module, const ParamValues& params, c
 }
 
 Frame Renderer::render(const MethodDescriptor& method, const ParamValues& params, const Camera& camera, int width, int height) {
-  scene_.require_tables(required_tables(method, params));
+  prepare(method, params);
   return render_module(method_program_module(shaders_, method, params), params, camera, width, height);
 }
 

@@ -73,6 +73,8 @@ class Renderer {
   /// Draws every shape with `module` (a method's or the reference's) in the forward pass, each
   /// with the program variant for its material, then the visible emitters.
   void draw_scene(const std::string& module, const ParamValues& params, const FrameUniforms& frame);
+  /// Makes what `method` reads resident and bound: its tables, the materials' NDF pyramids.
+  void prepare(const MethodDescriptor& method, const ParamValues& params);
   /// The forward program for `module`, specialised on the scene's lights and the material;
   /// looked up once per (module, variant), not per draw.
   GLuint forward_program(const std::string& module, int material);

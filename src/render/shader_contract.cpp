@@ -132,6 +132,8 @@ ShaderDefines contract_defines() {
       {"FRAME_BLOCK_BINDING", std::to_string(kFrameBlockBinding)},
       {"LIGHT_BLOCK_BINDING", std::to_string(kLightBlockBinding)},
       {"MATERIAL_BLOCK_BINDING", std::to_string(kMaterialBlockBinding)},
+      {"PREFILTERED_NDF_RECORDS_BINDING", std::to_string(kPrefilteredNdfRecordsBinding)},
+      {"PREFILTERED_NDF_VALUES_BINDING", std::to_string(kPrefilteredNdfValuesBinding)},
       {"NORMAL_MAP_UNIT", std::to_string(kNormalMapUnit)},
       {"SLOPE_MOMENTS_UNIT", std::to_string(kSlopeMomentsUnit)},
       {"SLOPE_CROSS_MOMENT_UNIT", std::to_string(kSlopeCrossMomentUnit)},

@@ -41,6 +41,10 @@ struct MethodDescriptor {
   /// Ids of the precomputed tables the module reads (src/render/tables/registry.cpp): made
   /// resident and bound before the renderer draws with it.
   std::vector<std::string> tables;
+  /// Whether the module reads the materials' prefiltered NDF pyramids (shaders/common/
+  /// prefiltered_ndf.glsl): the renderer makes those of the parameters' prefilter settings
+  /// resident and binds them before drawing (src/render/prefiltered_ndfs.hpp).
+  bool reads_prefiltered_ndfs = false;
 
   [[nodiscard]] std::string module_path() const { return "methods/" + id + ".glsl"; }
   [[nodiscard]] const ParamDecl* find_param(const std::string& name) const;

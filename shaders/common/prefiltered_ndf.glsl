@@ -1,0 +1,155 @@
+// Deng et al. 2022's queries on a material's CP-compressed NDF pyramid (docs/methods.md#deng2022):
+// the GLSL twin of src/prefilter/prefiltered_ndf.cpp, reading the layout of
+// src/prefilter/prefiltered_ndf_layout.hpp from two storage buffers. Nothing here feeds a
+// derivative, so llvmpipe's masked helper-invocation loads do not matter.
+#include "generated/gpu_contract.glsl"
+
+layout(std430, binding = PREFILTERED_NDF_RECORDS_BINDING) readonly buffer PrefilteredNdfRecords { uint pndfRecords[]; };
+layout(std430, binding = PREFILTERED_NDF_VALUES_BINDING) readonly buffer PrefilteredNdfValues { float pndfValues[]; };
+
+const uint PNDF_NONE = 0xffffffffu;
+
+struct PndfHeader {
+  uint at;  // the header's word
+  int levels, n, b, rank;
+  float extent;
+  uint footprints, groups, angular, rows;
+};
+
+PndfHeader pndfHeader(int material) {
+  PndfHeader h;
+  h.at = pndfRecords[material];
+  h.levels = int(pndfRecords[h.at + 0u]);
+  h.n = int(pndfRecords[h.at + 1u]);
+  h.b = int(pndfRecords[h.at + 2u]);
+  h.rank = int(pndfRecords[h.at + 3u]);
+  h.extent = uintBitsToFloat(pndfRecords[h.at + 4u]);
+  h.footprints = pndfRecords[h.at + 5u];
+  h.groups = pndfRecords[h.at + 6u];
+  h.angular = pndfRecords[h.at + 7u];
+  h.rows = pndfRecords[h.at + 8u];
+  return h;
+}
+
+bool pndfPresent(int material) { return material >= 0 && pndfRecords[material] != PNDF_NONE; }
+
+uint pndfLevelWord(PndfHeader h, int level, uint field) { return pndfRecords[h.at + 12u + 8u * uint(level) + field]; }
+
+// Whether block `bit` of footprint f is kept, and the float index of its row of the long factor.
+bool pndfBlockRow(PndfHeader h, uint f, int bit, out uint row) {
+  const uint at = h.footprints + 4u * f;
+  const uint lo = pndfRecords[at], hi = pndfRecords[at + 1u];
+  const bool kept = ((bit < 32 ? lo >> uint(bit) : hi >> uint(bit - 32)) & 1u) != 0u;
+  const uint below = bit >= 32 ? uint(bitCount(lo)) + uint(bitCount(hi & ((1u << uint(bit - 32)) - 1u)))
+                               : uint(bitCount(lo & ((1u << uint(bit)) - 1u)));
+  row = h.rows + (pndfRecords[at + 2u] + below) * uint(h.rank);
+  return kept;
+}
+
+uint pndfGroupAngular(PndfHeader h, uint f) { return h.angular + pndfRecords[h.groups + pndfRecords[h.footprints + 4u * f + 3u]]; }
+
+// Reconstructed pixel (i, j) of footprint f (eq. 6): sum_r a(i, r) b(j, r) c(k, r).
+float pndfPixel(PndfHeader h, uint f, int i, int j) {
+  if (i < 0 || j < 0 || i >= h.n || j >= h.n) return 0.0;
+  const int nb = h.n / h.b;
+  uint row;
+  if (!pndfBlockRow(h, f, (j / h.b) * nb + i / h.b, row)) return 0.0;
+  const uint a = pndfGroupAngular(h, f) + uint((i % h.b) * h.rank);
+  const uint b = pndfGroupAngular(h, f) + uint((h.b + j % h.b) * h.rank);
+  float v = 0.0;
+  for (int r = 0; r < h.rank; ++r) v += pndfValues[a + uint(r)] * pndfValues[b + uint(r)] * pndfValues[row + uint(r)];
+  return v;
+}
+
+// S(t) = S[floor t] + frac(t) m[floor t]: a factor column's integral from 0 to t (t in [0, B]).
+float pndfPrefix(PndfHeader h, uint sums, uint factor, float t, int r) {
+  const int f = min(int(t), h.b - 1);
+  return pndfValues[sums + uint(f * h.rank + r)] + (t - float(f)) * pndfValues[factor + uint(f * h.rank + r)];
+}
+
+// The integral of footprint f's pixels over [x0, x1] (continuous pixel coordinates inside the
+// image), block by block through the prefix sums (eq. 7).
+float pndfPixelRangeSum(PndfHeader h, uint f, vec2 x0, vec2 x1) {
+  const int nb = h.n / h.b;
+  const uint a = pndfGroupAngular(h, f), b = a + uint(h.b * h.rank);
+  const uint sa = b + uint(h.b * h.rank), sb = sa + uint((h.b + 1) * h.rank);
+  const ivec2 b0 = ivec2(x0) / h.b, b1 = min(ivec2(nb - 1), ivec2(ceil(x1)) / h.b);
+  float total = 0.0;
+  for (int by = b0.y; by <= b1.y; ++by)
+    for (int bx = b0.x; bx <= b1.x; ++bx) {
+      uint row;
+      if (!pndfBlockRow(h, f, by * nb + bx, row)) continue;
+      const vec2 origin = vec2(bx, by) * float(h.b);
+      const vec2 lo = clamp(x0 - origin, 0.0, float(h.b)), hi = clamp(x1 - origin, 0.0, float(h.b));
+      if (!(hi.x > lo.x && hi.y > lo.y)) continue;
+      for (int r = 0; r < h.rank; ++r)
+        total += (pndfPrefix(h, sa, a, hi.x, r) - pndfPrefix(h, sa, a, lo.x, r)) *
+                 (pndfPrefix(h, sb, b, hi.y, r) - pndfPrefix(h, sb, b, lo.y, r)) * pndfValues[row + uint(r)];
+    }
+  return max(total, 0.0);
+}
+
+// The level and position of a footprint N(centre, sigma^2) (texels) among the stored ones:
+// trilinear (sec. 4.1): bilinear over the four nearest centres of the two levels around
+// log2(sigma / sigma_0), clamped to the first and last level. footprint[q], weight[q], q < 8.
+void pndfInterpolation(PndfHeader h, vec2 centre, float sigma, out uint footprint[8], out float weight[8]) {
+  const int last = h.levels - 1;
+  const float sigma0 = uintBitsToFloat(pndfLevelWord(h, 0, 5u));
+  const float lambda = clamp(log2(max(sigma, 1e-9) / sigma0), 0.0, float(last));
+  const int l0 = min(int(lambda), last);
+  const float t = lambda - float(l0);
+  for (int side = 0; side < 2; ++side) {
+    const int level = min(l0 + side, last);
+    const float levelWeight = side == 0 ? 1.0 - t : t;
+    const ivec2 count = ivec2(pndfLevelWord(h, level, 0u), pndfLevelWord(h, level, 1u));
+    const vec2 spacing = vec2(uintBitsToFloat(pndfLevelWord(h, level, 2u)), uintBitsToFloat(pndfLevelWord(h, level, 3u)));
+    const uint first = pndfLevelWord(h, level, 4u);
+    const vec2 g = centre / spacing - 0.5;
+    const vec2 g0 = floor(g), fr = g - g0;
+    for (int q = 0; q < 4; ++q) {
+      const ivec2 d = ivec2(q & 1, q >> 1);
+      const ivec2 p = ((ivec2(g0) + d) % count + count) % count;
+      footprint[side * 4 + q] = first + uint(p.y * count.x + p.x);
+      weight[side * 4 + q] = levelWeight * (d.x == 1 ? fr.x : 1.0 - fr.x) * (d.y == 1 ? fr.y : 1.0 - fr.y);
+    }
+  }
+}
+
+vec2 pndfToPixels(PndfHeader h, vec2 s) { return (s + h.extent) * (float(h.n) / (2.0 * h.extent)); }
+
+// P(s) of the footprint: pixels bilinearly interpolated (0 outside the image).
+float pndfDensity(int material, vec2 centre, float sigma, vec2 s) {
+  const PndfHeader h = pndfHeader(material);
+  uint footprint[8];
+  float weight[8];
+  pndfInterpolation(h, centre, sigma, footprint, weight);
+  const vec2 x = pndfToPixels(h, s) - 0.5;
+  const vec2 x0 = floor(x), fr = x - x0;
+  float sum = 0.0;
+  for (int q = 0; q < 8; ++q) {
+    if (weight[q] <= 0.0) continue;
+    for (int c = 0; c < 4; ++c) {
+      const ivec2 d = ivec2(c & 1, c >> 1);
+      const float w = (d.x == 1 ? fr.x : 1.0 - fr.x) * (d.y == 1 ? fr.y : 1.0 - fr.y);
+      sum += weight[q] * w * pndfPixel(h, footprint[q], int(x0.x) + d.x, int(x0.y) + d.y);
+    }
+  }
+  return sum;
+}
+
+// The mean of P over the box [lo, hi] of s (0 outside the image).
+float pndfRangeMean(int material, vec2 centre, float sigma, vec2 lo, vec2 hi) {
+  const PndfHeader h = pndfHeader(material);
+  const vec2 size = hi - lo;
+  if (!(size.x > 0.0 && size.y > 0.0)) return pndfDensity(material, centre, sigma, 0.5 * (lo + hi));
+  const vec2 x0 = clamp(pndfToPixels(h, lo), 0.0, float(h.n)), x1 = clamp(pndfToPixels(h, hi), 0.0, float(h.n));
+  if (!(x1.x > x0.x && x1.y > x0.y)) return 0.0;
+  uint footprint[8];
+  float weight[8];
+  pndfInterpolation(h, centre, sigma, footprint, weight);
+  float sum = 0.0;
+  for (int q = 0; q < 8; ++q)
+    if (weight[q] > 0.0) sum += weight[q] * pndfPixelRangeSum(h, footprint[q], x0, x1);
+  const float pixel = 2.0 * h.extent / float(h.n);
+  return sum * pixel * pixel / (size.x * size.y);
+}

@@ -1,0 +1,253 @@
+#include "prefilter/prefiltered_ndf.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <istream>
+#include <ostream>
+#include <sstream>
+
+#include <glm/common.hpp>
+
+#include "core/error.hpp"
+
+namespace glintlab {
+
+namespace {
+
+int wrap(int i, int n) { return i >= 0 && i < n ? i : ((i % n) + n) % n; }
+
+bool kept(const FootprintRecord& r, int bit) {
+  return ((bit < 32 ? r.mask_lo >> bit : r.mask_hi >> (bit - 32)) & 1u) != 0;
+}
+
+/// The row of block `bit` among the footprint's kept blocks (their rows are in bit order).
+std::uint32_t row_of(const FootprintRecord& r, int bit) {
+  const auto below = [](std::uint32_t m, int b) { return b >= 32 ? m : (m & ((1u << b) - 1u)); };
+  return r.first_row + static_cast<std::uint32_t>(std::popcount(below(r.mask_lo, bit)) +
+                                                  (bit > 32 ? std::popcount(below(r.mask_hi, bit - 32)) : 0));
+}
+
+}  // namespace
+
+std::string PrefilterSettings::describe() const {
+  std::ostringstream s;
+  s.precision(17);
+  s << "elements_per_texel=" << elements_per_texel << " ndf_resolution=" << ndf_resolution
+    << " block_size=" << block_size << " base_footprints=" << base_footprints
+    << " group_footprints=" << group_footprints << " stop_tolerance=" << stop_tolerance
+    << " max_levels=" << max_levels << " empty_block_mass=" << empty_block_mass << " rank=" << cp.rank
+    << " max_iterations=" << cp.max_iterations << " tolerance=" << cp.tolerance
+    << " nonnegative=" << cp.nonnegative << " seed=" << cp.seed << " restarts=" << cp.restarts;
+  return s.str();
+}
+
+void PrefilterSettings::validate() const {
+  auto need = [](bool ok, const std::string& name, double value, const std::string& allowed) {
+    if (!ok) {
+      std::ostringstream m;
+      m << "prefilter setting '" << name << "' is " << value << "; allowed: " << allowed;
+      throw InputError(m.str());
+    }
+  };
+  need(elements_per_texel >= 1 && elements_per_texel <= 2, "elements_per_texel", elements_per_texel, "1 .. 2");
+  need(ndf_resolution >= 8 && ndf_resolution <= 256, "ndf_resolution", ndf_resolution, "8 .. 256");
+  need(block_size >= 4 && ndf_resolution % block_size == 0 && ndf_resolution / block_size <= 8, "block_size",
+       block_size, "a divisor of ndf_resolution, >= 4, with at most 8 blocks per side");
+  need(base_footprints >= 1 && base_footprints <= 4096, "base_footprints", base_footprints, "1 .. 4096");
+  need(group_footprints >= 1 && group_footprints <= 64, "group_footprints", group_footprints, "1 .. 64");
+  need(stop_tolerance >= 0 && stop_tolerance <= 1, "stop_tolerance", stop_tolerance, "0 .. 1");
+  need(max_levels >= 1 && max_levels <= 16, "max_levels", max_levels, "1 .. 16");
+  need(empty_block_mass >= 0 && empty_block_mass < 1, "empty_block_mass", empty_block_mass, "0 .. 1");
+  cp.validate();
+}
+
+std::size_t PrefilteredNdf::storage_bytes() const {
+  return footprints.size() * sizeof(FootprintRecord) + group_offsets.size() * sizeof(std::uint32_t) +
+         (angular.size() + rows.size()) * sizeof(float) + levels.size() * 16 * sizeof(float);
+}
+
+double PrefilteredNdf::pixel(std::uint32_t footprint, int i, int j) const {
+  const int b = settings.block_size, nb = blocks_per_side(), r = rank();
+  const FootprintRecord& rec = footprints[footprint];
+  const int bit = (j / b) * nb + i / b;
+  if (!kept(rec, bit)) return 0.0;
+  const float* a = &angular[group_offsets[rec.group]];
+  const float* bf = a + static_cast<std::size_t>(b * r);
+  const float* c = &rows[static_cast<std::size_t>(row_of(rec, bit)) * static_cast<std::size_t>(r)];
+  double v = 0.0;
+  for (int k = 0; k < r; ++k) v += static_cast<double>(a[(i % b) * r + k]) * bf[(j % b) * r + k] * c[k];
+  return v;
+}
+
+NdfImage PrefilteredNdf::image(std::uint32_t footprint) const {
+  NdfImage img{grid, std::vector<float>(grid.pixel_count())};
+  for (int j = 0; j < grid.resolution; ++j)
+    for (int i = 0; i < grid.resolution; ++i)
+      img.values[static_cast<std::size_t>(j) * grid.resolution + i] = static_cast<float>(pixel(footprint, i, j));
+  return img;
+}
+
+double PrefilteredNdf::pixel_range_sum(std::uint32_t footprint, glm::dvec2 x0, glm::dvec2 x1) const {
+  const int b = settings.block_size, nb = blocks_per_side(), r = rank();
+  const FootprintRecord& rec = footprints[footprint];
+  const float* a = &angular[group_offsets[rec.group]];
+  const float* bf = a + static_cast<std::size_t>(b * r);
+  const float* sa = bf + static_cast<std::size_t>(b * r);
+  const float* sb = sa + static_cast<std::size_t>((b + 1) * r);
+  // S(t) = S[floor t] + frac(t) m[floor t]: the integral of a piecewise-constant column up to t.
+  auto prefix = [&](const float* sums, const float* m, double t, int k) {
+    const int f = std::min(static_cast<int>(t), b - 1);
+    return static_cast<double>(sums[f * r + k]) + (t - f) * m[f * r + k];
+  };
+  double total = 0.0;
+  const int bx0 = static_cast<int>(x0.x) / b, bx1 = std::min(nb - 1, static_cast<int>(std::ceil(x1.x)) / b);
+  const int by0 = static_cast<int>(x0.y) / b, by1 = std::min(nb - 1, static_cast<int>(std::ceil(x1.y)) / b);
+  for (int by = by0; by <= by1; ++by)
+    for (int bx = bx0; bx <= bx1; ++bx) {
+      const int bit = by * nb + bx;
+      if (!kept(rec, bit)) continue;
+      const double lx = std::clamp(x0.x - bx * b, 0.0, double(b)), hx = std::clamp(x1.x - bx * b, 0.0, double(b));
+      const double ly = std::clamp(x0.y - by * b, 0.0, double(b)), hy = std::clamp(x1.y - by * b, 0.0, double(b));
+      if (!(hx > lx && hy > ly)) continue;
+      const float* c = &rows[static_cast<std::size_t>(row_of(rec, bit)) * static_cast<std::size_t>(r)];
+      for (int k = 0; k < r; ++k)
+        total += (prefix(sa, a, hx, k) - prefix(sa, a, lx, k)) * (prefix(sb, bf, hy, k) - prefix(sb, bf, ly, k)) * c[k];
+    }
+  return std::max(total, 0.0);
+}
+
+std::vector<PrefilteredNdf::Weighted> PrefilteredNdf::interpolation(glm::dvec2 centre, double sigma) const {
+  std::vector<Weighted> out;
+  const int last = static_cast<int>(levels.size()) - 1;
+  const double lambda =
+      std::clamp(std::log2(std::max(sigma, 1e-9) / levels.front().sigma), 0.0, static_cast<double>(last));
+  const int l0 = std::min(static_cast<int>(lambda), last);
+  const int l1 = std::min(l0 + 1, last);
+  const double t = lambda - l0;
+  for (int side = 0; side < 2; ++side) {
+    const double level_weight = side == 0 ? 1.0 - t : t;
+    if (level_weight <= 0.0 || (side == 1 && l1 == l0)) continue;
+    const PrefilterLevel& level = levels[static_cast<std::size_t>(side == 0 ? l0 : l1)];
+    const glm::dvec2 g = centre / level.spacing - 0.5;
+    const glm::dvec2 g0 = glm::floor(g), f = g - g0;
+    for (int dy = 0; dy < 2; ++dy)
+      for (int dx = 0; dx < 2; ++dx) {
+        const double w = level_weight * (dx ? f.x : 1 - f.x) * (dy ? f.y : 1 - f.y);
+        if (w <= 0.0) continue;
+        const int x = wrap(static_cast<int>(g0.x) + dx, level.nx), y = wrap(static_cast<int>(g0.y) + dy, level.ny);
+        out.push_back({level.first_footprint + static_cast<std::uint32_t>(y * level.nx + x), w});
+      }
+  }
+  return out;
+}
+
+double PrefilteredNdf::density(glm::dvec2 centre, double sigma, glm::dvec2 s) const {
+  const glm::dvec2 x = grid.to_pixels(s) - 0.5;
+  const glm::dvec2 x0 = glm::floor(x), f = x - x0;
+  double sum = 0.0;
+  for (const Weighted& w : interpolation(centre, sigma))
+    for (int dy = 0; dy < 2; ++dy)
+      for (int dx = 0; dx < 2; ++dx) {
+        const int i = static_cast<int>(x0.x) + dx, j = static_cast<int>(x0.y) + dy;
+        if (i < 0 || j < 0 || i >= grid.resolution || j >= grid.resolution) continue;
+        sum += w.weight * (dx ? f.x : 1 - f.x) * (dy ? f.y : 1 - f.y) * pixel(w.footprint, i, j);
+      }
+  return sum;
+}
+
+double PrefilteredNdf::range_mean(glm::dvec2 centre, double sigma, glm::dvec2 lo, glm::dvec2 hi) const {
+  const double area = (hi.x - lo.x) * (hi.y - lo.y);
+  if (!(area > 0)) return density(centre, sigma, 0.5 * (lo + hi));
+  const double n = grid.resolution;
+  const glm::dvec2 x0 = glm::clamp(grid.to_pixels(lo), 0.0, n), x1 = glm::clamp(grid.to_pixels(hi), 0.0, n);
+  if (!(x1.x > x0.x && x1.y > x0.y)) return 0.0;
+  double sum = 0.0;
+  for (const Weighted& w : interpolation(centre, sigma)) sum += w.weight * pixel_range_sum(w.footprint, x0, x1);
+  return sum * grid.pixel_area() / area;
+}
+
+// ---- serialisation: little-endian PODs, each array with its count ----
+
+namespace {
+
+template <typename T>
+void put(std::ostream& out, const T& v) {
+  out.write(reinterpret_cast<const char*>(&v), sizeof(T));
+}
+template <typename T>
+void put_vector(std::ostream& out, const std::vector<T>& v) {
+  put<std::uint64_t>(out, v.size());
+  out.write(reinterpret_cast<const char*>(v.data()), static_cast<std::streamsize>(v.size() * sizeof(T)));
+}
+template <typename T>
+T get(std::istream& in) {
+  T v{};
+  if (!in.read(reinterpret_cast<char*>(&v), sizeof(T))) throw RuntimeFailure("prefiltered NDF: truncated");
+  return v;
+}
+template <typename T>
+std::vector<T> get_vector(std::istream& in, std::uint64_t limit) {
+  const auto n = get<std::uint64_t>(in);
+  if (n > limit) throw RuntimeFailure("prefiltered NDF: implausible array size");
+  std::vector<T> v(n);
+  if (!in.read(reinterpret_cast<char*>(v.data()), static_cast<std::streamsize>(n * sizeof(T))))
+    throw RuntimeFailure("prefiltered NDF: truncated");
+  return v;
+}
+
+}  // namespace
+
+void PrefilteredNdf::write(std::ostream& out) const {
+  put(out, settings.elements_per_texel);
+  put(out, settings.ndf_resolution);
+  put(out, settings.block_size);
+  put(out, settings.cp.rank);
+  put(out, grid.extent);
+  put(out, width);
+  put(out, height);
+  put(out, intrinsic_roughness);
+  put(out, precompute_seconds);
+  put<std::uint64_t>(out, levels.size());
+  for (const PrefilterLevel& l : levels) put(out, l);
+  put_vector(out, footprints);
+  put_vector(out, group_offsets);
+  put_vector(out, angular);
+  put_vector(out, rows);
+}
+
+PrefilteredNdf PrefilteredNdf::read(std::istream& in) {
+  PrefilteredNdf p;
+  p.settings.elements_per_texel = get<int>(in);
+  p.settings.ndf_resolution = get<int>(in);
+  p.settings.block_size = get<int>(in);
+  p.settings.cp.rank = get<int>(in);
+  p.grid = {p.settings.ndf_resolution, get<double>(in)};
+  p.width = get<int>(in);
+  p.height = get<int>(in);
+  p.intrinsic_roughness = get<double>(in);
+  p.precompute_seconds = get<double>(in);
+  const auto level_count = get<std::uint64_t>(in);
+  if (level_count < 1 || level_count > 16) throw RuntimeFailure("prefiltered NDF: bad level count");
+  for (std::uint64_t i = 0; i < level_count; ++i) p.levels.push_back(get<PrefilterLevel>(in));
+  constexpr std::uint64_t kLimit = 1ull << 32;
+  p.footprints = get_vector<FootprintRecord>(in, kLimit);
+  p.group_offsets = get_vector<std::uint32_t>(in, kLimit);
+  p.angular = get_vector<float>(in, kLimit);
+  p.rows = get_vector<float>(in, kLimit);
+  // Every index the queries follow must land inside its array.
+  const std::size_t per_group = static_cast<std::size_t>(4 * p.settings.block_size + 2) * p.rank();
+  for (std::uint32_t off : p.group_offsets)
+    if (off + per_group > p.angular.size()) throw RuntimeFailure("prefiltered NDF: group out of range");
+  for (const FootprintRecord& r : p.footprints) {
+    const auto n = static_cast<std::size_t>(std::popcount(r.mask_lo) + std::popcount(r.mask_hi));
+    if (r.group >= p.group_offsets.size() || (r.first_row + n) * p.rank() > p.rows.size())
+      throw RuntimeFailure("prefiltered NDF: footprint out of range");
+  }
+  const PrefilterLevel& last = p.levels.back();
+  if (last.first_footprint + static_cast<std::size_t>(last.nx) * last.ny != p.footprints.size())
+    throw RuntimeFailure("prefiltered NDF: levels and footprints disagree");
+  return p;
+}
+
+}  // namespace glintlab

@@ -1,0 +1,108 @@
+#pragma once
+// Deng et al. 2022's spatio-angular prefiltering of a normal map's NDFs ("Constant-Cost
+// Spatio-Angular Prefiltering of Glinty Appearance Using Tensor Decomposition", ACM TOG 2022):
+// NDF images of Gaussian footprints on a pyramid of levels (sec. 4.1), cut into angular blocks,
+// grouped by position and level, each group's blocks a CP-decomposed 3-way tensor (sec. 4.2,
+// eq. 5); point queries (sec. 4.3, eq. 6) and box queries through the angular factors' prefix sums
+// (sec. 4.4, eq. 7). The layout below is also the GPU's (src/render/prefiltered_ndf_buffers.cpp,
+// shaders/common/prefiltered_ndf.glsl); docs/methods.md#deng2022 explains every choice.
+#include <cstddef>
+#include <cstdint>
+#include <glm/vec2.hpp>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "prefilter/cp_decomposition.hpp"
+#include "prefilter/ndf_image.hpp"
+
+namespace glintlab {
+
+struct PrefilterSettings {
+  int elements_per_texel = 2;      ///< Yan 2016's elements per texel and axis (the NDF images' source)
+  int ndf_resolution = 64;         ///< N: an NDF image is N x N
+  int block_size = 16;             ///< B: angular blocks of B x B pixels (N / B per side, at most 8)
+  int base_footprints = 256;       ///< level 0 has min(map size, this) footprints per side
+  int group_footprints = 8;        ///< a group (one tensor) holds up to this squared footprints of a level
+  double stop_tolerance = 0.05;    ///< stop adding levels when one differs from the level below by less
+                                   ///< (relative L2 of the NDF images)
+  int max_levels = 12;
+  double empty_block_mass = 1e-5;  ///< a block holding less of the NDF's mass is dropped (stored as 0)
+  CpSettings cp{};                 ///< rank 16 by default (32 for flakes, as in the paper)
+
+  /// Every setting as "name=value" separated by spaces: the cache key's and the docs' text.
+  [[nodiscard]] std::string describe() const;
+  /// Throws InputError naming the setting, its value and what is allowed.
+  void validate() const;
+};
+
+/// One level of the pyramid: nx x ny footprints of standard deviation sigma texels, centred at
+/// ((i + 0.5) spacing.x, (j + 0.5) spacing.y), grouped in groups_x x groups_y tensors.
+struct PrefilterLevel {
+  double sigma = 0.0;
+  int nx = 0, ny = 0;
+  glm::dvec2 spacing{0.0};
+  int groups_x = 0, groups_y = 0;
+  std::uint32_t first_footprint = 0;
+  std::uint32_t first_group = 0;
+  // What building it measured (not needed to query):
+  double distance_to_level_below = 0.0;  ///< mean relative L2 of its NDF images to the level below's
+  double compression_error = 0.0;        ///< ||X - X^|| / ||X|| over all of its kept blocks
+  std::size_t kept_blocks = 0;
+  double ndf_seconds = 0.0, compress_seconds = 0.0;  ///< summed over threads
+};
+
+/// Per footprint: which of its (N/B)^2 blocks are kept (bit by * (N/B) + bx), where their rows of
+/// the long factor start (in bit order), and its group.
+struct FootprintRecord {
+  std::uint32_t mask_lo = 0, mask_hi = 0;
+  std::uint32_t first_row = 0;
+  std::uint32_t group = 0;
+};
+
+class PrefilteredNdf {
+ public:
+  PrefilterSettings settings;
+  NdfGrid grid;
+  int width = 0, height = 0;         ///< the map's texels
+  double intrinsic_roughness = 0.0;
+  std::vector<PrefilterLevel> levels;
+  std::vector<FootprintRecord> footprints;
+  /// Per group, the offset into `angular` of its a (B x R), b (B x R) and their exclusive prefix
+  /// sums SA, SB ((B + 1) x R each), row-major (pixel, rank).
+  std::vector<std::uint32_t> group_offsets;
+  std::vector<float> angular;
+  std::vector<float> rows;  ///< R floats per kept block: the long factor c, weights included
+  double precompute_seconds = 0.0;
+
+  [[nodiscard]] int rank() const { return settings.cp.rank; }
+  [[nodiscard]] int blocks_per_side() const { return grid.resolution / settings.block_size; }
+  [[nodiscard]] std::size_t storage_bytes() const;
+
+  /// The reconstructed NDF image pixel (i, j) of a stored footprint (global index).
+  [[nodiscard]] double pixel(std::uint32_t footprint, int i, int j) const;
+  [[nodiscard]] NdfImage image(std::uint32_t footprint) const;
+  /// The integral of the reconstructed pixels over [x0, x1] x [y0, y1] (continuous pixel
+  /// coordinates, inside the image) of a stored footprint, in pixel units (times pixel_area for P's).
+  [[nodiscard]] double pixel_range_sum(std::uint32_t footprint, glm::dvec2 x0, glm::dvec2 x1) const;
+
+  /// The stored footprints and weights that stand for a footprint N(centre, sigma^2 I) (texels):
+  /// bilinear between the four nearest centres of the two levels around log2(sigma / sigma_0)
+  /// (trilinear, sec. 4.1), clamped to the pyramid's first and last level.
+  struct Weighted {
+    std::uint32_t footprint;
+    double weight;
+  };
+  [[nodiscard]] std::vector<Weighted> interpolation(glm::dvec2 centre, double sigma) const;
+
+  /// P(s) of the footprint: pixels bilinearly interpolated (0 outside the image).
+  [[nodiscard]] double density(glm::dvec2 centre, double sigma, glm::dvec2 s) const;
+  /// The mean of P over the box [lo, hi] of s (0 outside the image), O(R) per block it overlaps.
+  [[nodiscard]] double range_mean(glm::dvec2 centre, double sigma, glm::dvec2 lo, glm::dvec2 hi) const;
+
+  void write(std::ostream& out) const;
+  /// Throws RuntimeFailure if the stream does not hold a complete, consistent pyramid.
+  static PrefilteredNdf read(std::istream& in);
+};
+
+}  // namespace glintlab

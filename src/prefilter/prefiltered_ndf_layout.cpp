@@ -1,0 +1,49 @@
+#include "prefilter/prefiltered_ndf_layout.hpp"
+
+#include <bit>
+
+#include "core/error.hpp"
+
+namespace glintlab {
+
+namespace {
+std::uint32_t bits(double v) { return std::bit_cast<std::uint32_t>(static_cast<float>(v)); }
+std::uint32_t word(std::size_t v) {
+  if (v >= kNoPrefilteredNdf) throw RuntimeFailure("prefiltered NDFs exceed 2^32 words of GPU memory");
+  return static_cast<std::uint32_t>(v);
+}
+}  // namespace
+
+PrefilteredNdfBuffers pack_prefiltered_ndfs(std::span<const PrefilteredNdf* const> per_material, int max_materials) {
+  PrefilteredNdfBuffers out;
+  out.records.assign(static_cast<std::size_t>(max_materials), kNoPrefilteredNdf);
+  for (std::size_t m = 0; m < per_material.size() && m < static_cast<std::size_t>(max_materials); ++m) {
+    const PrefilteredNdf* p = per_material[m];
+    if (!p) continue;
+    auto& rec = out.records;
+    const std::size_t header = rec.size();
+    out.records[m] = word(header);
+    const std::size_t levels_at = header + kPrefilteredNdfHeaderWords;
+    const std::size_t footprints_at = levels_at + p->levels.size() * kPrefilteredNdfLevelWords;
+    const std::size_t groups_at = footprints_at + 4 * p->footprints.size();
+    const std::size_t angular_at = out.values.size();
+    const std::size_t rows_at = angular_at + p->angular.size();
+    rec.insert(rec.end(), {word(p->levels.size()), word(static_cast<std::size_t>(p->grid.resolution)),
+                           word(static_cast<std::size_t>(p->settings.block_size)),
+                           word(static_cast<std::size_t>(p->rank())), bits(p->grid.extent), word(footprints_at),
+                           word(groups_at), word(angular_at), word(rows_at), word(static_cast<std::size_t>(p->width)),
+                           word(static_cast<std::size_t>(p->height)), 0u});
+    for (const PrefilterLevel& l : p->levels)
+      rec.insert(rec.end(), {word(static_cast<std::size_t>(l.nx)), word(static_cast<std::size_t>(l.ny)),
+                             bits(l.spacing.x), bits(l.spacing.y), l.first_footprint, bits(l.sigma), 0u, 0u});
+    for (const FootprintRecord& f : p->footprints) rec.insert(rec.end(), {f.mask_lo, f.mask_hi, f.first_row, f.group});
+    rec.insert(rec.end(), p->group_offsets.begin(), p->group_offsets.end());
+    out.values.insert(out.values.end(), p->angular.begin(), p->angular.end());
+    out.values.insert(out.values.end(), p->rows.begin(), p->rows.end());
+    word(out.values.size());
+    word(rec.size());
+  }
+  return out;
+}
+
+}  // namespace glintlab

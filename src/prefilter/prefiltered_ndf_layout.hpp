@@ -1,0 +1,33 @@
+#pragma once
+// The pyramids of a scene's materials packed into the two storage buffers the GPU query reads
+// (shaders/common/prefiltered_ndf.glsl): `records`, of uint words, and `values`, of floats.
+//
+// records: word m (m < max_materials) holds material m's header offset, or kNoPrefilteredNdf.
+//   header at H: [0] levels, [1] N, [2] B, [3] R, [4] extent (float bits), [5] first word of the
+//   footprint records, [6] first word of the group offsets, [7] first float of the angular
+//   factors, [8] first float of the long factor's rows, [9] map width, [10] map height, [11] 0;
+//   then per level l at H + 12 + 8 l: nx, ny, spacing.x, spacing.y (float bits), first footprint,
+//   sigma (float bits), 0, 0.
+//   footprint f: 4 words (mask_lo, mask_hi, first row, group); group g: its angular offset.
+// values: each material's angular factors (a, b, SA, SB per group), then its rows.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "prefilter/prefiltered_ndf.hpp"
+
+namespace glintlab {
+
+inline constexpr std::uint32_t kNoPrefilteredNdf = 0xffffffffu;
+inline constexpr int kPrefilteredNdfHeaderWords = 12;
+inline constexpr int kPrefilteredNdfLevelWords = 8;
+
+struct PrefilteredNdfBuffers {
+  std::vector<std::uint32_t> records;
+  std::vector<float> values;
+};
+
+/// `per_material[m]`: material m's pyramid, or null. Throws RuntimeFailure past 2^32 words.
+PrefilteredNdfBuffers pack_prefiltered_ndfs(std::span<const PrefilteredNdf* const> per_material, int max_materials);
+
+}  // namespace glintlab

@@ -1,0 +1,203 @@
+// Deng et al. 2022's prefiltered NDF pyramid on the CPU (src/prefilter/): its queries against the
+// NDF images it compresses and against brute-force sums, its mass, continuity, limits and cache.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include "prefilter/ndf_precompute.hpp"
+#include "prefilter/position_normal.hpp"
+#include "prefilter/prefilter_cache.hpp"
+#include "prefilter/prefiltered_ndf_layout.hpp"
+#include "scratch_directory.hpp"
+
+namespace glintlab {
+namespace {
+
+PrefilterSettings small_settings() {
+  PrefilterSettings s;
+  s.ndf_resolution = 32;
+  s.block_size = 8;
+  s.base_footprints = 32;
+  s.group_footprints = 4;
+  s.cp.rank = 16;
+  return s;
+}
+
+const NormalMap& bumps() {
+  static const NormalMap map = generate_bumps(32, 0.25f, 48, 6, 9);
+  return map;
+}
+const PrefilteredNdf& pyramid() {
+  static const PrefilteredNdf p = precompute_prefiltered_ndf(bumps(), 0.03, small_settings());
+  return p;
+}
+
+TEST(PrefilteredNdf, StoredFootprintsQueryTheirOwnImages) {
+  // At a stored footprint's centre and sigma, the point query at a pixel centre is that pixel.
+  const PrefilteredNdf& p = pyramid();
+  for (std::size_t l = 0; l < p.levels.size(); ++l) {
+    const PrefilterLevel& level = p.levels[l];
+    const int x = level.nx / 2, y = level.ny - 1;
+    const std::uint32_t f = level.first_footprint + static_cast<std::uint32_t>(y * level.nx + x);
+    const glm::dvec2 centre = (glm::dvec2(x, y) + 0.5) * level.spacing;
+    for (auto [i, j] : {std::pair{3, 5}, {16, 16}, {20, 9}})
+      EXPECT_NEAR(p.density(centre, level.sigma, p.grid.pixel_centre(i, j)), p.pixel(f, i, j), 1e-5)
+          << "level " << l;
+  }
+}
+
+TEST(PrefilteredNdf, CompressedImagesStayCloseToYansAndHoldTheMass) {
+  // Each stored image against Yan 2016's image of the same footprint: the CP compression's error
+  // (measured, per level) bounds it, and the mass stays 1 within that error.
+  const PrefilteredNdf& p = pyramid();
+  const PositionNormalDistribution pnd(bumps(), 0.03, p.settings.elements_per_texel);
+  for (std::size_t l = 0; l < p.levels.size(); ++l) {
+    const PrefilterLevel& level = p.levels[l];
+    const int x = (level.nx * 2) / 3, y = level.ny / 3;
+    const std::uint32_t f = level.first_footprint + static_cast<std::uint32_t>(y * level.nx + x);
+    const NdfImage yan = pnd.image(Footprint::isotropic((glm::dvec2(x, y) + 0.5) * level.spacing, level.sigma), p.grid);
+    const NdfImage ours = p.image(f);
+    const double error = relative_l2(ours, yan);
+    std::printf("level %zu (sigma %.0f texels): compression error %.4f, this image %.4f, mass %.4f vs %.4f\n", l,
+                level.sigma, level.compression_error, error, ours.mass(), yan.mass());
+    EXPECT_LT(error, 3.0 * level.compression_error + 0.02) << "level " << l;
+    EXPECT_NEAR(ours.mass(), yan.mass(), 2.0 * level.compression_error) << "level " << l;
+    EXPECT_NEAR(yan.mass(), 1.0, 1e-3);
+  }
+}
+
+TEST(PrefilteredNdf, RangeQueriesEqualBruteForceSums) {
+  const PrefilteredNdf& p = pyramid();
+  const PrefilterLevel& level = p.levels[1];
+  const std::uint32_t f = level.first_footprint + 3;
+  // Whole pixels: the sum of the reconstructed pixels; fractional: their piecewise-constant integral.
+  for (auto [x0, x1, y0, y1] : {std::array{2.0, 13.0, 5.0, 30.0}, {7.25, 7.75, 0.5, 31.5}, {0.0, 32.0, 0.0, 32.0},
+                                {15.5, 17.25, 6.0, 25.0}}) {
+    double brute = 0.0;
+    for (int j = 0; j < 32; ++j)
+      for (int i = 0; i < 32; ++i) {
+        const double cover = std::max(0.0, std::min(x1, i + 1.0) - std::max(x0, double(i))) *
+                             std::max(0.0, std::min(y1, j + 1.0) - std::max(y0, double(j)));
+        brute += cover * p.pixel(f, i, j);
+      }
+    EXPECT_NEAR(p.pixel_range_sum(f, {x0, y0}, {x1, y1}), brute, 1e-4 * (1.0 + std::abs(brute)));
+  }
+}
+
+TEST(PrefilteredNdf, QueriesAreContinuousAcrossBlocksAndLevels) {
+  const PrefilteredNdf& p = pyramid();
+  const glm::dvec2 centre(11.3, 20.7);
+  // Across a block edge (pixel 8 of 32 over [-extent, extent]) the point query moves by no more
+  // than its local slope allows.
+  const double edge = -p.grid.extent + 8 * p.grid.pixel_size();
+  for (double t : {-0.1, 0.0, 0.12}) {
+    const glm::dvec2 a(edge - 1e-6, t), b(edge + 1e-6, t);
+    const double va = p.density(centre, 2.0, a), vb = p.density(centre, 2.0, b);
+    EXPECT_NEAR(va, vb, 1e-3 * (1.0 + va));
+  }
+  // Across a level (sigma = 2 sigma_0 is a level's own) and across footprint centres.
+  const double s0 = p.levels[0].sigma;
+  for (double sigma : {2 * s0, 4 * s0}) {
+    const double below = p.density(centre, sigma * (1 - 1e-7), {0.02, -0.03});
+    const double above = p.density(centre, sigma * (1 + 1e-7), {0.02, -0.03});
+    EXPECT_NEAR(below, above, 1e-4 * (1.0 + below));
+  }
+  const glm::dvec2 on_centre = 1.5 * p.levels[0].spacing;
+  EXPECT_NEAR(p.density(on_centre - 1e-7, s0, {0.0, 0.0}), p.density(on_centre + 1e-7, s0, {0.0, 0.0}), 1e-4);
+}
+
+TEST(PrefilteredNdf, OneTexelFootprintWithoutRoughnessSeesTheTexelsNormal) {
+  // A map of flat facets 4 texels wide (flakes), footprint sigma 0.25 texels inside a facet, sigma_r
+  // tiny: the query's NDF concentrates at that facet's normal.
+  const NormalMap map = generate_flakes(32, 4, 0.2f, 2);
+  PrefilterSettings s = small_settings();
+  s.ndf_resolution = 64;
+  const PrefilteredNdf p = precompute_prefiltered_ndf(map, 0.002, s);
+  const PrefilterLevel& level = p.levels[0];
+  int checked = 0;
+  for (int y = 0; y < level.ny; ++y)
+    for (int x = 0; x < level.nx; ++x) {
+      const glm::ivec2 t(x, y);
+      const glm::vec3 n = map.normals[static_cast<std::size_t>(t.y * map.width + t.x)];
+      bool interior = true;  // the texel and its 8 neighbours share the normal
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+          interior = interior && map.normals[static_cast<std::size_t>(((t.y + dy + 32) % 32) * 32 + (t.x + dx + 32) % 32)] == n;
+      if (!interior) continue;
+      const NdfImage img = p.image(level.first_footprint + static_cast<std::uint32_t>(y * level.nx + x));
+      glm::dvec2 sum(0.0);
+      double mass = 0.0;
+      for (int j = 0; j < 64; ++j)
+        for (int i = 0; i < 64; ++i) {
+          sum += static_cast<double>(img.at(i, j)) * p.grid.pixel_centre(i, j);
+          mass += img.at(i, j);
+        }
+      const glm::dvec2 centroid = sum / mass;
+      EXPECT_NEAR(centroid.x, n.x, 0.5 * p.grid.pixel_size());
+      EXPECT_NEAR(centroid.y, n.y, 0.5 * p.grid.pixel_size());
+      ++checked;
+    }
+  EXPECT_GT(checked, 20);
+}
+
+TEST(PrefilteredNdf, UniformMapStopsAfterOneLevelAbove) {
+  const NormalMap flat{16, 16, std::vector<glm::vec3>(256, glm::normalize(glm::vec3(0.1f, 0.2f, 1.0f))), "uniform"};
+  PrefilterSettings s = small_settings();
+  s.base_footprints = 16;
+  const PrefilteredNdf p = precompute_prefiltered_ndf(flat, 0.02, s);
+  ASSERT_EQ(p.levels.size(), 2u);
+  EXPECT_LT(p.levels[1].distance_to_level_below, 1e-3);
+}
+
+TEST(PrefilteredNdf, NoNanInARandomisedSweep) {
+  const PrefilteredNdf& p = pyramid();
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int i = 0; i < 2000; ++i) {
+    const glm::dvec2 centre(100 * u(rng), 100 * u(rng));
+    const double sigma = std::pow(10.0, 3 * u(rng));
+    const glm::dvec2 s(1.5 * u(rng), 1.5 * u(rng));
+    const glm::dvec2 half(std::abs(0.5 * u(rng)), std::abs(0.5 * u(rng)));
+    const double d = p.density(centre, sigma, s), r = p.range_mean(centre, sigma, s - half, s + half);
+    ASSERT_TRUE(std::isfinite(d) && d >= 0.0) << d;
+    ASSERT_TRUE(std::isfinite(r) && r >= 0.0) << r;
+  }
+  EXPECT_TRUE(std::isfinite(p.density({0, 0}, 0.0, {0, 0})));
+}
+
+TEST(PrefilteredNdf, CacheRoundTripsAndRebuildsADamagedEntry) {
+  const ScratchDirectory dir;
+  const PrefilterSettings s = small_settings();
+  const PrefilteredNdf a = load_or_precompute_prefiltered_ndf(bumps(), 0.03, s, dir.path());
+  const PrefilteredNdf b = load_or_precompute_prefiltered_ndf(bumps(), 0.03, s, dir.path());
+  EXPECT_EQ(a.rows, b.rows);
+  EXPECT_EQ(a.angular, b.angular);
+  ASSERT_EQ(a.footprints.size(), b.footprints.size());
+  const auto file = dir.path() / "prefiltered-ndf" / prefiltered_ndf_key(bumps(), 0.03, s);
+  ASSERT_TRUE(std::filesystem::exists(file));
+  std::filesystem::resize_file(file, std::filesystem::file_size(file) / 2);
+  const PrefilteredNdf c = load_or_precompute_prefiltered_ndf(bumps(), 0.03, s, dir.path());
+  EXPECT_EQ(a.rows, c.rows);
+  EXPECT_NE(prefiltered_ndf_key(bumps(), 0.03, s), prefiltered_ndf_key(bumps(), 0.031, s));
+}
+
+TEST(PrefilteredNdf, PackedLayoutPointsAtEachMaterialsPyramid) {
+  const PrefilteredNdf& p = pyramid();
+  const std::vector<const PrefilteredNdf*> materials = {nullptr, &p, nullptr, &p};
+  const PrefilteredNdfBuffers packed = pack_prefiltered_ndfs(materials, 8);
+  EXPECT_EQ(packed.records[0], kNoPrefilteredNdf);
+  EXPECT_EQ(packed.records[2], kNoPrefilteredNdf);
+  for (int m : {1, 3}) {
+    const std::uint32_t h = packed.records[static_cast<std::size_t>(m)];
+    EXPECT_EQ(packed.records[h], p.levels.size());
+    EXPECT_EQ(packed.records[h + 3], static_cast<std::uint32_t>(p.rank()));
+    const std::uint32_t rows = packed.records[h + 8];
+    EXPECT_EQ(packed.values[rows], p.rows[0]);
+  }
+}
+
+}  // namespace
+}  // namespace glintlab

@@ -10,7 +10,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libepoxy-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   libglm-dev libopenexr-dev libstb-dev libtinygltf-dev libtinyobjloader-dev
-  libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
+  libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libeigen3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-dev
   ffmpeg

@@ -240,6 +240,30 @@ TEST(CpDecomposition, NonnegativeModeNeverGivesANegativeValueOrRangeSum) {
   }
 }
 
+TEST(CpDecomposition, PrefixSumsOfNonnegativeFactorsNeverGiveANegativeRange) {
+  // A range ending a few ulps past a texel edge can come out a rounding error below 0 (the
+  // float prefix sum was rounded up); nonnegative factors clamp it. The unclamped sums of the
+  // same columns show that the case occurs.
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  Eigen::MatrixXf m(16, 64);
+  for (int r = 0; r < 64; ++r)
+    for (int x = 0; x < 16; ++x) m(x, r) = std::pow(u(rng), 4.0f) * std::pow(10.0f, 3.0f * u(rng));
+  const FactorPrefixSums clamped(m, true), unclamped(m, false);
+  int negative_unclamped = 0;
+  for (int r = 0; r < 64; ++r)
+    for (int edge = 1; edge < 16; ++edge) {
+      float t0 = float(edge), t1 = float(edge);
+      for (int step = 0; step < 12; ++step) {
+        t0 = std::nextafter(t0, 0.0f);
+        t1 = std::nextafter(t1, 16.0f);
+        EXPECT_GE(clamped.range_sum(t0, t1, r), 0.0f);
+        negative_unclamped += unclamped.range_sum(t0, t1, r) < 0.0f;
+      }
+    }
+  EXPECT_GT(negative_unclamped, 0);
+}
+
 TEST(CpDecomposition, RankAboveTheDataRankDoesNotDiverge) {
   // Rank 12 for data of rank 3 whose first mode has only 6 entries.
   const Tensor3 x = known_rank_tensor(6, 8, 20, 3, 41u);

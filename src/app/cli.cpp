@@ -4,15 +4,16 @@
 #include <cstdio>
 #include <iostream>
 
+#include "core/cache_directory.hpp"
 #include "core/error.hpp"
 #include "eval/commands.hpp"
-#include "core/cache_directory.hpp"
 #include "eval/outputs.hpp"
+#include "eval/prefilter_report.hpp"
 #include "eval/progress.hpp"
-#include "render/tables/gpu_tables.hpp"
 #include "eval/session.hpp"
-#include "scene/scene_loader.hpp"
 #include "render/reference_cache.hpp"
+#include "render/tables/gpu_tables.hpp"
+#include "scene/scene_loader.hpp"
 #include "shading/method_reference.hpp"
 #include "shading/registry.hpp"
 
@@ -197,6 +198,23 @@ int run_cli(int argc, char** argv) {
   std::string print_scene;
   scenes->add_option("--print", print_scene, "print a built-in scene's TOML (a template for your own)");
   app.add_subcommand("info", "print the OpenGL device, version and the limits glintlab uses");
+  auto* prefilter = app.add_subcommand(
+      "prefilter", "precompute (or read from the cache) deng2022's NDF pyramids of a scene's normal-map-glints "
+                   "materials and report them level by level");
+  std::string prefilter_scene = std::string(kDefaultScene);
+  std::vector<std::string> prefilter_params;
+  PrefilterReportOptions prefilter_o;
+  std::string prefilter_json;
+  bool prefilter_no_cache = false;
+  prefilter->add_option("--scene", prefilter_scene, "scene file (.toml) or builtin:NAME")->required();
+  prefilter->add_option("--param", prefilter_params,
+                        "a deng2022 parameter that sets the precompute: rank, ndf_resolution, block_size, "
+                        "base_footprints, group_footprints, elements_per_texel (name=value, repeatable)");
+  prefilter->add_option("--accuracy", prefilter_o.accuracy_footprints,
+                        "also compare this many footprints per level with yan2016's NDF images")
+      ->check(CLI::Range(0, 10000));
+  prefilter->add_flag("--no-cache", prefilter_no_cache, "precompute even if the cache holds the pyramid");
+  prefilter->add_option("-o,--out", prefilter_json, "also write the report as JSON to this file");
 
   try {
     app.parse(argc, argv);
@@ -235,6 +253,12 @@ int run_cli(int argc, char** argv) {
       Session session(animate_o, Workload{.methods = static_cast<int>(methods.size()), .reference = true,
                                           .outputs = true, .kept_images = static_cast<int>(methods.size()) + 1});
       run_animate(session, methods, animate_o.out.empty() ? default_out("animate", animate_o) : animate_o.out);
+    } else if (app.got_subcommand("prefilter")) {
+      const auto methods = resolve_methods("deng2022", prefilter_params);
+      prefilter_o.settings = prefilter_settings_from(methods.front().params);
+      prefilter_o.use_cache = !prefilter_no_cache;
+      prefilter_o.json = prefilter_json;
+      run_prefilter_report(load_scene(prefilter_scene), prefilter_o);
     } else if (app.got_subcommand("bench")) {
       const auto methods = resolve_methods(bench_o.methods, bench_o.params);
       Session session(bench_o, Workload{.methods = 1});

@@ -42,6 +42,20 @@ std::string PrefilterSettings::describe() const {
   return s.str();
 }
 
+PrefilterSettings prefilter_settings_from(const std::map<std::string, float>& params) {
+  PrefilterSettings s;
+  auto read = [&](const char* name, int& field) {
+    if (auto it = params.find(name); it != params.end()) field = static_cast<int>(std::lround(it->second));
+  };
+  read("rank", s.cp.rank);
+  read("ndf_resolution", s.ndf_resolution);
+  read("block_size", s.block_size);
+  read("base_footprints", s.base_footprints);
+  read("group_footprints", s.group_footprints);
+  read("elements_per_texel", s.elements_per_texel);
+  return s;
+}
+
 void PrefilterSettings::validate() const {
   auto need = [](bool ok, const std::string& name, double value, const std::string& allowed) {
     if (!ok) {

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <iosfwd>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -23,7 +24,7 @@ struct PrefilterSettings {
   int ndf_resolution = 64;         ///< N: an NDF image is N x N
   int block_size = 16;             ///< B: angular blocks of B x B pixels (N / B per side, at most 8)
   int base_footprints = 256;       ///< level 0 has min(map size, this) footprints per side
-  int group_footprints = 8;        ///< a group (one tensor) holds up to this squared footprints of a level
+  int group_footprints = 4;        ///< a group (one tensor) holds up to this squared footprints of a level
   double stop_tolerance = 0.05;    ///< stop adding levels when one differs from the level below by less
                                    ///< (relative L2 of the NDF images)
   int max_levels = 12;
@@ -35,6 +36,11 @@ struct PrefilterSettings {
   /// Throws InputError naming the setting, its value and what is allowed.
   void validate() const;
 };
+
+/// The prefilter settings a method's parameters choose (those it declares among rank,
+/// ndf_resolution, block_size, base_footprints, group_footprints, elements_per_texel; defaults for
+/// the rest).
+PrefilterSettings prefilter_settings_from(const std::map<std::string, float>& params);
 
 /// One level of the pyramid: nx x ny footprints of standard deviation sigma texels, centred at
 /// ((i + 0.5) spacing.x, (j + 0.5) spacing.y), grouped in groups_x x groups_y tensors.

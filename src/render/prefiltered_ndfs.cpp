@@ -1,7 +1,5 @@
 #include "render/prefiltered_ndfs.hpp"
 
-#include <cmath>
-
 #include "core/gpu_contract.hpp"
 #include "gl/context.hpp"
 #include "prefilter/prefilter_cache.hpp"
@@ -45,20 +43,6 @@ void PrefilteredNdfs::bind(const PrefilterSettings& settings) {
 
 const PrefilteredNdf* PrefilteredNdfs::pyramid(int material, const PrefilterSettings& settings) {
   return resident(settings).per_material[static_cast<std::size_t>(material)].get();
-}
-
-PrefilterSettings prefilter_settings_from(const std::map<std::string, float>& params) {
-  PrefilterSettings s;
-  auto read = [&](const char* name, int& field) {
-    if (auto it = params.find(name); it != params.end()) field = static_cast<int>(std::lround(it->second));
-  };
-  read("rank", s.cp.rank);
-  read("ndf_resolution", s.ndf_resolution);
-  read("block_size", s.block_size);
-  read("base_footprints", s.base_footprints);
-  read("group_footprints", s.group_footprints);
-  read("elements_per_texel", s.elements_per_texel);
-  return s;
 }
 
 }  // namespace glintlab

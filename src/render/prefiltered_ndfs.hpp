@@ -39,9 +39,5 @@ class PrefilteredNdfs {
   std::map<std::string, Resident> resident_;  ///< by PrefilterSettings::describe()
 };
 
-/// The prefilter settings a method's parameters choose (those it declares among rank,
-/// ndf_resolution, block_size, base_footprints, group_footprints, elements_per_texel; defaults for
-/// the rest).
-PrefilterSettings prefilter_settings_from(const std::map<std::string, float>& params);
 
 }  // namespace glintlab

@@ -1,0 +1,119 @@
+#include "eval/prefilter_report.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <random>
+
+#include "core/atomic_file.hpp"
+#include "core/cache_directory.hpp"
+#include "core/error.hpp"
+#include "prefilter/position_normal.hpp"
+#include "prefilter/prefilter_cache.hpp"
+
+namespace glintlab {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// The reconstruction's NDF image of any footprint: every pixel a box query (its exact average).
+NdfImage query_image(const PrefilteredNdf& p, glm::dvec2 centre, double sigma) {
+  NdfImage img{p.grid, std::vector<float>(p.grid.pixel_count())};
+  const double h = p.grid.pixel_size();
+  for (int j = 0; j < p.grid.resolution; ++j)
+    for (int i = 0; i < p.grid.resolution; ++i) {
+      const glm::dvec2 lo = p.grid.pixel_centre(i, j) - 0.5 * h;
+      img.values[static_cast<std::size_t>(j) * p.grid.resolution + i] =
+          static_cast<float>(p.range_mean(centre, sigma, lo, lo + h));
+    }
+  return img;
+}
+
+nlohmann::json accuracy(const PrefilteredNdf& p, const NormalMap& map, int count) {
+  const PositionNormalDistribution pnd(map, p.intrinsic_roughness, p.settings.elements_per_texel);
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  nlohmann::json levels = nlohmann::json::array();
+  std::printf("  accuracy against yan2016 (relative L2 of NDF images; %d footprints per level):\n", count);
+  std::printf("  %5s %8s %12s %12s %10s %12s\n", "level", "sigma", "stored", "in-between", "mass", "query (us)");
+  for (std::size_t l = 0; l < p.levels.size(); ++l) {
+    const PrefilterLevel& level = p.levels[l];
+    double stored = 0.0, between = 0.0, mass = 0.0, query_us = 0.0;
+    for (int q = 0; q < count; ++q) {
+      const int x = static_cast<int>(u(rng) * level.nx), y = static_cast<int>(u(rng) * level.ny);
+      const glm::dvec2 centre = (glm::dvec2(x, y) + 0.5) * level.spacing;
+      const NdfImage ours = p.image(level.first_footprint + static_cast<std::uint32_t>(y * level.nx + x));
+      stored += relative_l2(ours, pnd.image(Footprint::isotropic(centre, level.sigma), p.grid));
+      mass += ours.mass();
+      // Between stored centres and levels: the trilinear interpolation's error as well.
+      const glm::dvec2 anywhere(u(rng) * p.width, u(rng) * p.height);
+      const double sigma = level.sigma * std::pow(2.0, l + 1 < p.levels.size() ? u(rng) : 0.0);
+      const auto t0 = Clock::now();
+      const NdfImage queried = query_image(p, anywhere, sigma);
+      query_us += std::chrono::duration<double, std::micro>(Clock::now() - t0).count() / p.grid.pixel_count();
+      between += relative_l2(queried, pnd.image(Footprint::isotropic(anywhere, sigma), p.grid));
+    }
+    levels.push_back({{"level", l}, {"sigma", level.sigma}, {"stored_error", stored / count},
+                      {"interpolated_error", between / count}, {"mass", mass / count},
+                      {"box_query_microseconds", query_us / count}});
+    std::printf("  %5zu %8.2f %12.4f %12.4f %10.4f %12.3f\n", l, level.sigma, stored / count, between / count,
+                mass / count, query_us / count);
+  }
+  return levels;
+}
+
+}  // namespace
+
+void run_prefilter_report(const Scene& scene, const PrefilterReportOptions& options) {
+  options.settings.validate();
+  nlohmann::json out = nlohmann::json::array();
+  for (const Material& m : scene.materials) {
+    if (!m.normal_glints || !m.normal_map) continue;
+    const auto t0 = Clock::now();
+    const PrefilteredNdf p = load_or_precompute_prefiltered_ndf(
+        *m.normal_map, m.normal_glints->intrinsic_roughness, options.settings,
+        options.use_cache ? default_table_cache_directory() : std::filesystem::path());
+    const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    std::printf("material '%s': %s, %dx%d, sigma_r %g\n  %s\n", m.name.c_str(), m.normal_map->description.c_str(),
+                p.width, p.height, p.intrinsic_roughness, options.settings.describe().c_str());
+    std::printf("  NDF images %dx%d over |s| <= %.3f, %zu levels, %.2f MB; precompute %.1f s (this run %.1f s)\n",
+                p.grid.resolution, p.grid.resolution, p.grid.extent, p.levels.size(), p.storage_bytes() / 1e6,
+                p.precompute_seconds, seconds);
+    std::printf("  %5s %8s %11s %8s %12s %12s %12s %10s %10s\n", "level", "sigma", "footprints", "groups",
+                "kept blocks", "CP error", "vs below", "NDF (s)", "CP (s)");
+    nlohmann::json levels = nlohmann::json::array();
+    double ndf_seconds = 0.0, cp_seconds = 0.0;
+    for (std::size_t l = 0; l < p.levels.size(); ++l) {
+      const PrefilterLevel& v = p.levels[l];
+      std::printf("  %5zu %8.2f %5dx%-5d %8d %12zu %12.4f %12.4f %10.1f %10.1f\n", l, v.sigma, v.nx, v.ny,
+                  v.groups_x * v.groups_y, v.kept_blocks, v.compression_error, v.distance_to_level_below,
+                  v.ndf_seconds, v.compress_seconds);
+      ndf_seconds += v.ndf_seconds;
+      cp_seconds += v.compress_seconds;
+      levels.push_back({{"sigma", v.sigma}, {"footprints", v.nx * v.ny}, {"kept_blocks", v.kept_blocks},
+                        {"compression_error", v.compression_error},
+                        {"distance_to_level_below", v.distance_to_level_below}, {"ndf_seconds", v.ndf_seconds},
+                        {"compress_seconds", v.compress_seconds}});
+    }
+    std::printf("  thread-seconds: NDF images %.1f, CP %.1f\n", ndf_seconds, cp_seconds);
+    nlohmann::json entry = {{"material", m.name},
+                            {"map", m.normal_map->description},
+                            {"width", p.width},
+                            {"height", p.height},
+                            {"settings", options.settings.describe()},
+                            {"rank", p.rank()},
+                            {"storage_bytes", p.storage_bytes()},
+                            {"precompute_seconds", p.precompute_seconds},
+                            {"ndf_thread_seconds", ndf_seconds},
+                            {"compress_thread_seconds", cp_seconds},
+                            {"levels", levels}};
+    if (options.accuracy_footprints > 0) entry["accuracy"] = accuracy(p, *m.normal_map, options.accuracy_footprints);
+    out.push_back(entry);
+  }
+  if (out.empty()) throw InputError("the scene has no normal-map-glints material to prefilter");
+  if (!options.json.empty()) write_text_file(options.json, out.dump(2) + "\n");
+}
+
+}  // namespace glintlab

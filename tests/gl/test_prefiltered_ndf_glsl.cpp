@@ -14,6 +14,7 @@ using namespace glintlab;
 using namespace glintlab::test;
 
 TEST(PrefilteredNdfGlsl, QueriesAgreeWithTheCpu) {
+  shaders();  // a current GL context before the buffers below
   PrefilterSettings settings;
   settings.ndf_resolution = 32;
   settings.block_size = 8;
@@ -52,7 +53,8 @@ vec4 evaluate(vec4 a, vec4 b) {
     const double d = p.density(centre, a[i].z, s), r = p.range_mean(centre, a[i].z, s - half, s + half);
     ASSERT_NE(out[i].x, -1.0f) << "the packed pyramid's material offsets";
     EXPECT_NEAR(out[i].x, d, 2e-4 * d + 1e-4) << "point query " << i;
-    EXPECT_NEAR(out[i].y, r, 2e-4 * r + 1e-4) << "box query " << i;
+    // The box query subtracts prefix sums: in float on the device, in double here.
+    EXPECT_NEAR(out[i].y, r, 2e-3 * r + 1e-4) << "box query " << i;
     nonzero += d > 0.1 ? 1 : 0;
   }
   EXPECT_GT(nonzero, 50);  // the sweep reaches the NDF's mass, not just empty space

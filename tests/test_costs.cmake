@@ -7,7 +7,7 @@ set(glintlab_test_costs
   "^Images/EveryMethodOnBuiltinScene\\.IsFinite/(quad_light|gltf_showcase)( |$)" 60
   "^GltfMaterials\\.TexturedMaterialEqualsTheMaterialOfItsTexels" 60
   "^Images/EveryMethodOnBuiltinScene\\.IsFinite/glint_area_lights" 45
-  "^Shaders\\.EveryMethodAndPassCompiles" 40
+  "^Shaders\\.EveryMethodAndPassCompiles" 35
   "^Chermain\\.GeometricGlintAntiAliasing" 40
   "^Images/EveryMethodOnBuiltinScene\\." 30
   "^SpotLight\\.HemisphereConeIsThePointLight$" 25

@@ -131,7 +131,12 @@ TEST(Images, ReferenceConvergesWithMoreSamples) {
 }
 
 // One test per built-in scene, so that ctest runs them in parallel (most of their time is
-// compiling each scene's program variants on llvmpipe).
+// compiling each scene's program variants on llvmpipe). These renders are also the suite's compile
+// check of every method's module and the reference's in each material variant a built-in scene has,
+// with that scene's light kinds: Shaders.EveryMethodAndPassCompiles* (tests/gl/test_shaders.cpp)
+// compile only the (module, variant, light kind) they leave out, read from the scenes by
+// builtin_scene_light_kinds() (tests/builtin_scene_programs.hpp). So render every method, at its
+// defaults, in every material of the scene here, or change that helper to match.
 class EveryMethodOnBuiltinScene : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(EveryMethodOnBuiltinScene, IsFinite) {

@@ -59,7 +59,8 @@ std::string kind_names(const LightRanges& ranges) {
 void expect_compiles(const std::string& module, MaterialVariant v, const LightRanges& lights) {
   EXPECT_NO_THROW(shaders().graphics("passes/forward.vert", "passes/forward.frag", forward_variant(module, lights, v)))
       << module << (v.normal_map ? " with a normal map" : "") << (v.glints ? ", glinty" : "")
-      << (v.textures ? ", textured" : "") << (v.binomial_glints ? ", binomial glints" : "") << "; lights "
+      << (v.textures ? ", textured" : "") << (v.binomial_glints ? ", binomial glints" : "")
+      << (v.normal_glints ? ", normal-map glints" : "") << "; lights "
       << kind_names(lights);
 }
 
@@ -71,6 +72,7 @@ int expect_every_module_compiles_in(MaterialVariant v) {
   int compiled = 0;
   for (const auto& module : every_shading_module())
     for (bool normal_map : {false, true}) {
+      if (v.normal_glints && !normal_map) continue;  // a normal-map-glints material always has its map
       v.normal_map = normal_map;
       std::set<int> on_builtin_scenes;
       if (module.rendered_on_builtin_scenes)
@@ -107,6 +109,11 @@ TEST(Shaders, EveryMethodAndPassCompilesForTextures) {
 // varies only with the normal map.
 TEST(Shaders, EveryMethodAndPassCompilesForBinomialGlints) {
   EXPECT_GT(expect_every_module_compiles_in({false, false, false, true}), 0);
+}
+
+// The normal-map-glints variant (always normal-mapped; yan2016 and deng2022 read the map itself).
+TEST(Shaders, EveryMethodAndPassCompilesForNormalMapGlints) {
+  EXPECT_GT(expect_every_module_compiles_in({true, false, false, false, true}), 0);
 }
 
 // Every other choice of each method's compile-time parameters (ParamDecl::compile_time), the

@@ -38,12 +38,16 @@ std::uint64_t RasterReference::estimator_hash() const {
   return estimator_hash_;
 }
 
+int RasterReference::tile_side(int subpixels, const PixelFilter& filter) {
+  constexpr int kMaxTileSide = 2048;  // sub-pixels per side of one high-resolution tile, margins included
+  return std::max(1, kMaxTileSide / subpixels - 2 * filter.support_pixels());
+}
+
 Frame RasterReference::render_pass(const Camera& camera, int width, int height, const ReferencePass& pass,
                                    const ProgressFn& progress) {
   const int k = pass.subpixels;
   if (k < 1 || k > 32) throw InputError("reference sub-pixels per axis " + std::to_string(k) + ": allowed: 1 .. 32");
-  constexpr int kMaxTileSide = 2048;  // sub-pixels per side of one high-resolution tile
-  const int tile = std::max(1, kMaxTileSide / k);
+  const int tile = tile_side(k, pass.filter);
   const int tiles_x = (width + tile - 1) / tile, tiles_y = (height + tile - 1) / tile;
   // The pixels around a tile whose samples its filter weights too (none for the box).
   const int margin = pass.filter.support_pixels();

@@ -24,6 +24,9 @@ class RasterReference final : public ReferenceBackend {
   [[nodiscard]] std::uint64_t estimator_hash() const override;
   Frame render_pass(const Camera& camera, int width, int height, const ReferencePass& pass,
                     const ProgressFn& progress = {}) override;
+  /// Pixels per side of the tiles a pass renders at `subpixels` per pixel: a tile and the margin
+  /// of `filter` on each side fit in 2048 sub-pixels (when it can be done with a tile of 1).
+  static int tile_side(int subpixels, const PixelFilter& filter);
 
  private:
   ShaderLibrary& shaders_;

@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "core/metrics.hpp"
 #include "gl_fixture.hpp"
+#include "render/raster_reference.hpp"
 
 using namespace glintlab;
 using namespace glintlab::test;
@@ -141,14 +142,16 @@ TEST(PixelFilter, GaussianKeepsAConstantImageConstantUpToTheFilmsEdges) {
 // Across an edge the image is the filter's own profile: each pixel is the normalised weight of
 // the samples on the lit side, computed here from the passes' sample positions (cell corner plus
 // jitter). Wrong positions, a flipped axis or a width in sub-pixels instead of pixels all differ.
-// With 32 x 32 sub-pixels a pass renders tiles of 64 pixels: an edge on the tiles' boundary shows
-// whether each tile sees its neighbour's samples.
+// With 32 x 32 sub-pixels a pass renders tiles of under 64 pixels: an edge on the tiles' boundary
+// shows whether each tile sees its neighbour's samples.
 TEST(PixelFilter, AnEdgeIsBlurredExactlyByTheWeightsOfTheSamplePositions) {
   struct Case {
     int long_side, short_side, spp, edge;
     float sigma;
   };
-  for (const Case c : {Case{16, 2, 256, 8, 0.5f}, Case{68, 2, 4096, 64, 1.2f}})  // 4 passes of 8 x 8 or of 32 x 32
+  // 4 passes of 8 x 8 sub-pixels on a film of one tile, or of 32 x 32 on two tiles.
+  const int tile = RasterReference::tile_side(32, PixelFilter::gaussian(1.2f));
+  for (const Case c : {Case{16, 2, 256, 8, 0.5f}, Case{tile + 6, 2, 4096, tile, 1.2f}})
     for (const int axis : {0, 1}) {
       const int width = axis == 0 ? c.long_side : c.short_side, height = axis == 0 ? c.short_side : c.long_side;
       SceneFixture f(half_lit_plane(width, height, axis, c.edge));

@@ -99,6 +99,10 @@ TEST_F(Cli, BadInputClassesExitWith2AndWriteNothing) {
   expect_bad_input("animate --frames -3", {"--frames", "-3"});
   expect_bad_input("animate --frames 100001", {"--frames", "100001", "1 to 100000"});
   expect_bad_input("render --reference-backend nope", {"nope", "raster"});
+  for (const char* filter : {"gaussian:0", "gaussian:abc", "tent"})
+    for (const char* command : {"render --reference=4", "compare --spp 4", "animate --spp 4 --frames 2"})
+      expect_bad_input(std::string(command) + " --reference-filter " + filter,
+                       {"--reference-filter", filter, "allowed: box, or gaussian:S", "0.1 .. 4"});
 }
 
 TEST_F(Cli, OutputPathsAreCheckedBeforeAnythingIsWritten) {
@@ -138,13 +142,16 @@ TEST_F(Cli, SameCommandWritesIdenticalFiles) {
   const fs::path scene = write("det.toml", kScene);
   const fs::path a = scratch / "det-a", b = scratch / "det-b";
   for (const auto& out : {a, b}) {
-    const CliResult r = run_glintlab("compare --no-cache -q --spp 4 --scene '" + scene.string() + "' -o '" + out.string() + "'");
+    // With a Gaussian pixel filter for the reference, which metrics.json records.
+    const CliResult r = run_glintlab("compare --no-cache -q --spp 4 --reference-filter gaussian:0.5 --scene '" +
+                                     scene.string() + "' -o '" + out.string() + "'");
     ASSERT_EQ(r.code, 0) << r.err;
   }
   for (const char* f : {"conventional.exr", "conventional.png", "reference.exr", "metrics.csv", "metrics.json"}) {
     ASSERT_TRUE(fs::exists(a / f)) << f;
     EXPECT_EQ(read_bytes(a / f), read_bytes(b / f)) << f;
   }
+  EXPECT_NE(read_bytes(a / "metrics.json").find("\"reference_filter\": \"gaussian:0.5\""), std::string::npos);
 }
 
 TEST_F(Cli, ReferenceCacheIsReused) {

@@ -38,28 +38,44 @@ const char* refusal(glm::vec3 n) {
 NormalMap load_normal_map(const std::filesystem::path& path) {
   const bool raw = is_exr(path);
   const Image img = raw ? read_exr(path) : read_ldr_image(path);
-  NormalMap map{img.width(), img.height(), {}, "file " + path.filename().string()};
-  map.normals.reserve(img.pixel_count());
-  // +Y is up in the image (the OpenGL and glTF convention), which is glintlab's +v: the bottom
-  // row is v = 0 and comes first.
-  for (int y = img.height() - 1; y >= 0; --y)
-    for (int x = 0; x < img.width(); ++x) {
-      if (raw) {
-        const glm::vec3 n = img.at(x, y);
-        if (const char* why = refusal(n)) {
-          std::ostringstream m;
-          m << path.string() << ": texel (" << x << ", " << y << ") (from the top-left) holds (" << n.x << ", "
-            << n.y << ", " << n.z << "): " << why
-            << "; allowed: an EXR's R, G, B are the normal's raw components, finite, z > 0, length 0.5 .. 1.5";
-          throw InputError(m.str());
+  const int w = img.width(), h = img.height();
+  NormalMap map{w, h, {}, "file " + path.filename().string()};
+  map.normals.resize(img.pixel_count());
+  // The first refused texel of each of the file's rows (-1: none), so the message names the same
+  // texel on any thread count: the first in file order.
+  std::vector<int> refused(static_cast<std::size_t>(raw ? h : 0), -1);
+  for_each_row(
+      h, row_workers(h),
+      [&](int y, int) {
+        // +Y is up in the image (the OpenGL and glTF convention), which is glintlab's +v: the
+        // bottom row is v = 0 and comes first.
+        glm::vec3* out = map.normals.data() + static_cast<std::size_t>(h - 1 - y) * w;
+        for (int x = 0; x < w; ++x) {
+          if (raw) {
+            const glm::vec3 n = img.at(x, y);
+            if (refusal(n) != nullptr) {
+              refused[static_cast<std::size_t>(y)] = x;
+              return;
+            }
+            out[x] = glm::normalize(n);
+            continue;
+          }
+          glm::vec3 n = 2.0f * img.at(x, y) - 1.0f;
+          n.z = std::max(n.z, 1e-3f);  // never below the surface
+          out[x] = glm::normalize(n);
         }
-        map.normals.push_back(glm::normalize(n));
-        continue;
-      }
-      glm::vec3 n = 2.0f * img.at(x, y) - 1.0f;
-      n.z = std::max(n.z, 1e-3f);  // never below the surface
-      map.normals.push_back(glm::normalize(n));
-    }
+      },
+      map.description);
+  for (int y = 0; y < static_cast<int>(refused.size()); ++y) {
+    const int x = refused[static_cast<std::size_t>(y)];
+    if (x < 0) continue;
+    const glm::vec3 n = img.at(x, y);
+    std::ostringstream m;
+    m << path.string() << ": texel (" << x << ", " << y << ") (from the top-left) holds (" << n.x << ", " << n.y
+      << ", " << n.z << "): " << refusal(n)
+      << "; allowed: an EXR's R, G, B are the normal's raw components, finite, z > 0, length 0.5 .. 1.5";
+    throw InputError(m.str());
+  }
   return map;
 }
 

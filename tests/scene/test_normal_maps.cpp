@@ -8,10 +8,12 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "core/error.hpp"
 #include "scene/bump_waves.hpp"
 #include "scene/generation_progress.hpp"
 #include "scene/normal_map.hpp"
 #include "scene/scratches.hpp"
+#include "test_scenes.hpp"
 
 using namespace glintlab;
 
@@ -286,4 +288,66 @@ TEST(NormalMaps, FlakesWithoutJitterAreTheGridsSquares) {
   EXPECT_TRUE(squares_are_uniform(generate_flakes(64, 16, 0.3f, 2, 0.0f)));
   EXPECT_FALSE(squares_are_uniform(generate_flakes(64, 16, 0.3f, 2, 0.5f)));
   EXPECT_FALSE(squares_are_uniform(generate_flakes(64, 16, 0.3f, 2)));
+}
+
+namespace {
+
+Scene scene_with_map(const test::TomlKeys& map) {
+  return test::TestScene().material("m", {{"normal_map", map}}).sphere("m").point_light({0, 2, 3}).scene();
+}
+
+std::string scene_error(const test::TomlKeys& map) {
+  try {
+    static_cast<void>(scene_with_map(map));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no InputError";
+}
+
+}  // namespace
+
+TEST(NormalMaps, SceneKeysMakeTheMapsTheirDescriptionsName) {
+  const auto map_of = [](const test::TomlKeys& keys) { return *scene_with_map(keys).materials.at(0).normal_map; };
+  const NormalMap noise = map_of({{"generator", "noise"}, {"resolution", 16}, {"max_frequency", 4}});
+  const NormalMap bumps = map_of({{"generator", "bumps"}, {"resolution", 16}, {"max_frequency", 4}});
+  EXPECT_TRUE(same_normals(noise, bumps));
+  EXPECT_EQ(noise.description, bumps.description);  // one map, one name
+  EXPECT_TRUE(same_normals(map_of({{"generator", "brushed"}, {"resolution", 32}, {"angle", 10.0}}),
+                           generate_brushed(32, 0.2f, 0.01f, 10.0f, 512, 8, 1)));
+  ScratchParams p;
+  p.resolution = 32;
+  p.count = 7;
+  p.angle_spread = 20.0f;
+  const NormalMap scratches =
+      map_of({{"generator", "scratches"}, {"resolution", 32}, {"count", 7}, {"angle_spread", 20.0}});
+  EXPECT_TRUE(same_normals(scratches, generate_scratches(p)));
+  EXPECT_EQ(scratches.description, describe(p));
+  for (const char* key : {"count=7", "length=0.25", "width=1.5", "slope=0.4", "angle=0", "angle_spread=20",
+                          "base_alpha=0", "seed=1"})
+    EXPECT_NE(scratches.description.find(key), std::string::npos) << key << " not in " << scratches.description;
+  EXPECT_TRUE(same_normals(map_of({{"generator", "flakes"}, {"resolution", 32}, {"cells", 8}, {"jitter", 0.5},
+                                   {"flat_fraction", 0.25}}),
+                           generate_flakes(32, 8, 0.2f, 1, 0.5f, 0.25f)));
+}
+
+TEST(NormalMaps, GeneratorKeysOutOfRangeNameKeyValueAndRange) {
+  struct Case {
+    test::TomlKeys map;
+    const char* key;
+    const char* value;
+  };
+  for (const Case& c : {Case{{{"generator", "scratches"}, {"angle_spread", 200.0}}, "angle_spread", "200"},
+                        Case{{{"generator", "scratches"}, {"width", 0.1}}, "width", "0.1"},
+                        Case{{{"generator", "scratches"}, {"count", -1}}, "count", "-1"},
+                        Case{{{"generator", "brushed"}, {"along_alpha", -0.5}}, "along_alpha", "-0.5"},
+                        Case{{{"generator", "brushed"}, {"resolution", 64}, {"max_frequency", 33}}, "max_frequency", "33"},
+                        Case{{{"generator", "flakes"}, {"jitter", 1.5}}, "jitter", "1.5"},
+                        Case{{{"generator", "flakes"}, {"flat_fraction", 2.0}}, "flat_fraction", "2"},
+                        Case{{{"generator", "bumps"}, {"along_alpha", 0.1}}, "along_alpha", ""},
+                        Case{{{"generator", "waves"}}, "generator", "brushed"}}) {
+    const std::string message = scene_error(c.map);
+    for (const char* part : {"test.toml", c.key, c.value})
+      EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' not in: " << message;
+  }
 }

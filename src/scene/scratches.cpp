@@ -131,7 +131,8 @@ std::string describe(const ScratchParams& p) {
 NormalMap generate_scratches(const ScratchParams& params) {
   const int n = params.resolution;
   const std::string what = describe(params);
-  const std::vector<float> height = scratch_heights(params, choose_scratches(params), groove_profile(params.width, params.slope));
+  const std::vector<float> height =
+      scratch_heights(params, choose_scratches(params), groove_profile(params.width, params.slope));
   // An optional `bumps` base (its defaults: 128 waves up to frequency 24): heights add, so slopes do.
   std::vector<glm::vec3> base;
   if (params.base_alpha > 0.0f)

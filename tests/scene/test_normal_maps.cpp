@@ -222,7 +222,8 @@ TEST(NormalMaps, ScratchesTileAndDependOnlyOnTheirSeed) {
   // neighbours inside: a groove cut at the edge would jump there.
   auto step = [&](int x0, int y0, int x1, int y1) {
     const int n = p.resolution;
-    return glm::length(m.normals[static_cast<std::size_t>(y0) * n + x0] - m.normals[static_cast<std::size_t>(y1) * n + x1]);
+    const auto at = [&](int x, int y) { return m.normals[static_cast<std::size_t>(y) * n + x]; };
+    return glm::length(at(x0, y0) - at(x1, y1));
   };
   double inside = 0.0, seam = 0.0;
   for (int i = 0; i < p.resolution; ++i) {
@@ -254,7 +255,8 @@ TEST(NormalMaps, ScratchesOnABaseAddTheirSlopesToTheBumps) {
   p.base_alpha = 0.0f;
   const NormalMap alone = generate_scratches(p);
   for (std::size_t i = 0; i < base.normals.size(); i += 7) {
-    const glm::vec2 sum = glm::vec2(base.normals[i]) / base.normals[i].z + glm::vec2(alone.normals[i]) / alone.normals[i].z;
+    const glm::vec2 sum =
+        glm::vec2(base.normals[i]) / base.normals[i].z + glm::vec2(alone.normals[i]) / alone.normals[i].z;
     const glm::vec2 got = glm::vec2(scratched.normals[i]) / scratched.normals[i].z;
     EXPECT_LT(glm::length(got - sum), 1e-4f) << i;
   }
@@ -341,7 +343,8 @@ TEST(NormalMaps, GeneratorKeysOutOfRangeNameKeyValueAndRange) {
                         Case{{{"generator", "scratches"}, {"width", 0.1}}, "width", "0.1"},
                         Case{{{"generator", "scratches"}, {"count", -1}}, "count", "-1"},
                         Case{{{"generator", "brushed"}, {"along_alpha", -0.5}}, "along_alpha", "-0.5"},
-                        Case{{{"generator", "brushed"}, {"resolution", 64}, {"max_frequency", 33}}, "max_frequency", "33"},
+                        Case{{{"generator", "brushed"}, {"resolution", 64}, {"max_frequency", 33}}, "max_frequency",
+                             "33"},
                         Case{{{"generator", "flakes"}, {"jitter", 1.5}}, "jitter", "1.5"},
                         Case{{{"generator", "flakes"}, {"flat_fraction", 2.0}}, "flat_fraction", "2"},
                         Case{{{"generator", "bumps"}, {"along_alpha", 0.1}}, "along_alpha", ""},

@@ -1,7 +1,7 @@
 #include "scene/normal_map.hpp"
 
-#include <cctype>
 #include <cmath>
+#include <fstream>
 #include "core/math.hpp"
 #include <glm/gtc/constants.hpp>
 #include <random>
@@ -16,10 +16,11 @@ namespace glintlab {
 
 namespace {
 
+/// By the file's magic number, not its name: an EXR is raw normals whatever it is called.
 bool is_exr(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".exr";
+  unsigned char magic[4] = {};
+  std::ifstream(path, std::ios::binary).read(reinterpret_cast<char*>(magic), sizeof magic);
+  return magic[0] == 0x76 && magic[1] == 0x2f && magic[2] == 0x31 && magic[3] == 0x01;
 }
 
 /// Why a raw EXR normal is refused, or nullptr. Renormalising fixes small errors (half floats,

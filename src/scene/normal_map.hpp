@@ -16,7 +16,7 @@ struct NormalMap {
   std::string description;         ///< where it came from (file or generator and parameters)
 };
 
-/// An image file. PNG/JPEG/TGA/BMP (8 or 16 bits): n = 2c - 1, renormalised. EXR (`.exr`): the
+/// An image file. PNG/JPEG/TGA/BMP (8 or 16 bits): n = 2c - 1, renormalised. EXR (by its magic number): the
 /// channels R, G, B are the normal's components themselves (Yan et al.'s convention), renormalised;
 /// a texel that is not finite, has z <= 0 or a length outside 0.5 .. 1.5 is refused. Throws
 /// InputError naming the file (and the texel and its value).

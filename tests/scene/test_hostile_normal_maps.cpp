@@ -140,17 +140,20 @@ TEST(HostileNormalMaps, PngClaiming60000SquaredIsRefused) {
 TEST(NormalMapFiles, ExrHoldsRawNormalsBottomRowFirst) {
   const test::ScratchDirectory dir;
   const std::vector<float> v = normals_with({0.0f, 0.0f, 1.0f});
-  write_channels_exr(dir / "raw.EXR", 3, 2, "RGB", v);
-  const NormalMap m = load_normal_map(dir / "raw.EXR");
-  ASSERT_EQ(m.width, 3);
-  ASSERT_EQ(m.height, 2);
-  for (int y = 0; y < 2; ++y)
-    for (int x = 0; x < 3; ++x) {
-      const float* c = v.data() + (y * 3 + x) * 3;
-      const glm::vec3 want = glm::normalize(glm::vec3(c[0], c[1], c[2]));
-      const glm::vec3 got = m.normals[static_cast<std::size_t>((1 - y) * 3 + x)];  // the file's top row is v = 1
-      EXPECT_LT(glm::length(got - want), 1e-6f) << x << ", " << y;
-    }
+  for (const char* name : {"raw.exr", "raw.png"}) {  // an EXR by its content, whatever its name
+    write_channels_exr(dir / name, 3, 2, "RGB", v);
+    const NormalMap m = load_normal_map(dir / name);
+    ASSERT_EQ(m.width, 3);
+    ASSERT_EQ(m.height, 2);
+    for (int y = 0; y < 2; ++y)
+      for (int x = 0; x < 3; ++x) {
+        const float* c = v.data() + (y * 3 + x) * 3;
+        const glm::vec3 want = glm::normalize(glm::vec3(c[0], c[1], c[2]));
+        // The file's top row is v = 1.
+        const glm::vec3 got = m.normals[static_cast<std::size_t>((1 - y) * 3 + x)];
+        EXPECT_LT(glm::length(got - want), 1e-6f) << name << " " << x << ", " << y;
+      }
+  }
 }
 
 TEST(NormalMapFiles, SixteenBitPngKeepsItsLowByte) {

@@ -26,41 +26,83 @@ glm::vec3 normal_from_slope(double du, double dv) {
 
 }  // namespace
 
-BumpSpectrum choose_bump_waves(float slope_sigma, int waves, int max_frequency, std::uint32_t seed, float anisotropy,
-                               float angle_degrees) {
-  const float axis = glm::radians(angle_degrees);
+namespace {
+
+/// `waves` waves with distinct integer frequencies (k and -k are the same wave), so the waves stay
+/// orthogonal over the tile and the slope variance is exactly the sum of theirs. `draw(rng, uni)`
+/// proposes a rounded frequency; each accepted one gets a uniform phase. Stops early when 1000
+/// proposals in a row are zero or taken (fewer distinct frequencies than waves asked for).
+template <class Draw>
+std::vector<BumpWave> distinct_waves(int waves, std::uint32_t seed, Draw draw) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> uni(0.0f, 1.0f);
   std::vector<BumpWave> ws;
   ws.reserve(static_cast<std::size_t>(waves));
-  // Distinct integer frequencies (k and -k are the same wave), so the waves stay orthogonal over
-  // the tile and the slope variance is exactly the sum of theirs.
   std::unordered_set<std::int64_t> taken_set;
   auto key = [](glm::vec2 q) {  // one key for k and -k
     if (q.x < 0.0f || (q.x == 0.0f && q.y < 0.0f)) q = -q;
     return static_cast<std::int64_t>(q.x) * (1LL << 32) + static_cast<std::int64_t>(q.y);
   };
   auto taken = [&](glm::vec2 q) { return taken_set.contains(key(q)); };
-  double k2_sum = 0.0;
   for (int i = 0; i < waves; ++i) {
     glm::vec2 k(0.0f);
-    for (int attempt = 0; attempt < 1000 && (k == glm::vec2(0.0f) || taken(k)); ++attempt) {
-      const float r = 1.0f + (static_cast<float>(max_frequency) - 1.0f) * std::sqrt(uni(rng));
-      // Isotropic: any direction. Anisotropic: a deviation from the axis in [-pi/2, pi/2) (k and
-      // -k are one wave) narrowed by the anisotropy.
-      const float u = uni(rng);
-      const float theta = anisotropy == 1.0f ? glm::two_pi<float>() * u
-                                             : axis + glm::pi<float>() * (u - 0.5f) / anisotropy;
-      k = glm::round(glm::vec2(r * std::cos(theta), r * std::sin(theta)));
-    }
-    if (k == glm::vec2(0.0f) || taken(k)) break;  // fewer distinct frequencies than waves asked for
+    for (int attempt = 0; attempt < 1000 && (k == glm::vec2(0.0f) || taken(k)); ++attempt) k = draw(rng, uni);
+    if (k == glm::vec2(0.0f) || taken(k)) break;
     ws.push_back({glm::ivec2(k), glm::two_pi<float>() * uni(rng)});
     taken_set.insert(key(k));
-    k2_sum += glm::dot(k, k);
   }
+  return ws;
+}
+
+}  // namespace
+
+BumpSpectrum choose_bump_waves(float slope_sigma, int waves, int max_frequency, std::uint32_t seed, float anisotropy,
+                               float angle_degrees) {
+  const float axis = glm::radians(angle_degrees);
+  std::vector<BumpWave> ws =
+      distinct_waves(waves, seed, [&](std::mt19937& rng, std::uniform_real_distribution<float>& uni) {
+        const float r = 1.0f + (static_cast<float>(max_frequency) - 1.0f) * std::sqrt(uni(rng));
+        // Isotropic: any direction. Anisotropic: a deviation from the axis in [-pi/2, pi/2) (k
+        // and -k are one wave) narrowed by the anisotropy.
+        const float u = uni(rng);
+        const float theta = anisotropy == 1.0f ? glm::two_pi<float>() * u
+                                               : axis + glm::pi<float>() * (u - 0.5f) / anisotropy;
+        return glm::round(glm::vec2(r * std::cos(theta), r * std::sin(theta)));
+      });
+  double k2_sum = 0.0;
+  for (const BumpWave& w : ws) k2_sum += glm::dot(glm::vec2(w.k), glm::vec2(w.k));
   // height = a * sum cos(2 pi k.x + phase); over a tile the slope variance of both axes together
   // is a^2 (2 pi)^2 sum(|k|^2) / 2. Make it slope_sigma^2 (Beckmann: alpha^2 = <slope^2>).
   return {ws, slope_sigma * std::sqrt(2.0) / (glm::two_pi<double>() * std::sqrt(k2_sum))};
+}
+
+BumpSpectrum choose_brushed_waves(float across_alpha, float along_alpha, float angle_degrees, int waves,
+                                  int max_frequency, std::uint32_t seed) {
+  const float axis = glm::radians(angle_degrees);
+  const glm::vec2 along(std::cos(axis), std::sin(axis)), across(-along.y, along.x);
+  // Heitz's procedural Beckmann surface: frequencies from a Gaussian whose standard deviations
+  // per axis are proportional to the roughness wanted along that axis (equal-amplitude waves:
+  // slope variance per axis ~ E[(k.e)^2]). The rougher axis gets max_frequency / 3, so 3 sigma
+  // fits; proposals beyond max_frequency (per uv axis) are redrawn.
+  const float widest = std::max(across_alpha, along_alpha);
+  const float sigma = static_cast<float>(max_frequency) / 3.0f / (widest > 0.0f ? widest : 1.0f);
+  std::vector<BumpWave> ws =
+      distinct_waves(waves, seed, [&](std::mt19937& rng, std::uniform_real_distribution<float>& uni) {
+        // Box-Muller: two independent standard normals.
+        const float r = std::sqrt(-2.0f * std::log(1.0f - uni(rng)));
+        const float theta = glm::two_pi<float>() * uni(rng);
+        const glm::vec2 k = glm::round(sigma * (across_alpha * r * std::cos(theta) * across +
+                                                along_alpha * r * std::sin(theta) * along));
+        const float limit = static_cast<float>(max_frequency);
+        return std::abs(k.x) <= limit && std::abs(k.y) <= limit ? k : glm::vec2(0.0f);
+      });
+  // Both axes together: a^2 (2 pi)^2 sum(|k|^2) / 2 = (across^2 + along^2) / 2, the Beckmann
+  // alpha^2 / 2 of each axis; the split between the axes follows the Gaussian's shape.
+  double k2_sum = 0.0;
+  for (const BumpWave& w : ws) k2_sum += glm::dot(glm::dvec2(w.k), glm::dvec2(w.k));
+  const double total = 0.5 * (static_cast<double>(across_alpha) * across_alpha +
+                              static_cast<double>(along_alpha) * along_alpha);
+  return {ws, k2_sum > 0.0 ? std::sqrt(2.0 * total) / (glm::two_pi<double>() * std::sqrt(k2_sum)) : 0.0};
 }
 
 std::vector<glm::vec3> bump_normals(const BumpSpectrum& spectrum, int resolution, const std::string& what) {

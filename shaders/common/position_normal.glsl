@@ -91,45 +91,76 @@ void positionNormalElement(sampler2D map, ivec2 size, ivec2 e, const int k, out 
   }
 }
 
-// erfc(x) for x >= 0 with relative error < 3e-5: Abramowitz & Stegun 7.1.26 below 2 (absolute
-// error 1.5e-7), the continued fraction erfc(x) = exp(-x^2) / (sqrt(pi) (x + (1/2) / (x + 1 / (x +
-// (3/2) / ...)))) at 12 levels above (relative error < 3e-7 there), where 7.1.26's relative error grows.
-float erfcPositive(float x) {
-  if (x < 2.0) {
-    float t = 1.0 / (1.0 + 0.3275911 * x);
-    return t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429)))) *
-           exp(-x * x);
-  }
-  float f = x;
-  for (int n = 12; n >= 1; --n) f = x + 0.5 * float(n) / f;
-  return exp(-x * x) / (1.7724538509 * f);
+// erfc(x) for x >= 0, relative error < 3e-5: Abramowitz & Stegun 7.1.26 below 2 (absolute error
+// 1.5e-7), above it the continued fraction erfc(x) = exp(-x^2) / (sqrt(pi) (x + (1/2) / (x + 1 / (x +
+// (3/2) / ...)))) at 12 levels (relative error < 3e-7 there, where 7.1.26's grows to 1%).
+vec4 erfcPositive(vec4 x) {
+  vec4 t = 1.0 / (1.0 + 0.3275911 * x);
+  vec4 near = t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
+  vec4 far = max(x, vec4(2.0));
+  vec4 f = far;
+  for (int n = 12; n >= 1; --n) f = far + 0.5 * float(n) / f;
+  return mix(near, 0.5641895835 / f, greaterThanEqual(x, vec4(2.0))) * exp(-x * x);
 }
 
-// The mean over [a, b] of the 1D normal density of mean m and standard deviation sigma. Narrow
-// intervals (under half a sigma, including zero width: the density itself) by 4-point
-// Gauss-Legendre; wider ones by a difference of erfc on one side of the mean (no cancellation).
-float gaussianIntervalMean(float a, float b, float m, float sigma) {
-  float za = (a - m) / sigma, zb = (b - m) / sigma;
+// The means over [a, b] of four 1D normal densities of means m and standard deviation sigma.
+// Intervals under half a sigma (including zero width: the density itself) by 4-point
+// Gauss-Legendre; wider ones from erfc of |z| at both ends (no cancellation on either side).
+vec4 gaussianIntervalMean(float a, float b, vec4 m, float sigma) {
+  vec4 za = (a - m) / sigma, zb = (b - m) / sigma;
+  float width = (b - a) / sigma;
   const float INV_SQRT_2PI = 0.3989422804;
-  if (zb - za < 0.5) {
-    const vec4 nodes = vec4(-0.8611363116, -0.3399810436, 0.3399810436, 0.8611363116);
-    const vec4 weights = vec4(0.3478548451, 0.6521451549, 0.6521451549, 0.3478548451) * 0.5;
-    vec4 z = 0.5 * (za + zb) + 0.5 * (zb - za) * nodes;
-    return dot(weights, exp(-0.5 * z * z)) * INV_SQRT_2PI / sigma;
+  if (width < 0.5) {
+    const float NODES[4] = float[](-0.8611363116, -0.3399810436, 0.3399810436, 0.8611363116);
+    const float WEIGHTS[4] = float[](0.1739274226, 0.3260725774, 0.3260725774, 0.1739274226);  // sum to 1
+    vec4 sum = vec4(0.0);
+    for (int j = 0; j < 4; ++j) {
+      vec4 z = 0.5 * (za + zb) + (0.5 * NODES[j]) * (zb - za);
+      sum += WEIGHTS[j] * exp(-0.5 * z * z);
+    }
+    return sum * (INV_SQRT_2PI / sigma);
   }
   const float INV_SQRT2 = 0.7071067812;
-  float mass;  // of the standard normal over [za, zb]
-  if (za >= 0.0) mass = 0.5 * (erfcPositive(za * INV_SQRT2) - erfcPositive(zb * INV_SQRT2));
-  else if (zb <= 0.0) mass = 0.5 * (erfcPositive(-zb * INV_SQRT2) - erfcPositive(-za * INV_SQRT2));
-  else mass = 1.0 - 0.5 * (erfcPositive(-za * INV_SQRT2) + erfcPositive(zb * INV_SQRT2));
-  return mass / ((zb - za) * sigma);
+  vec4 ea = erfcPositive(abs(za) * INV_SQRT2), eb = erfcPositive(abs(zb) * INV_SQRT2);
+  // The standard normal's mass over [za, zb]: on one side of 0, or across it.
+  vec4 mass = mix(mix(1.0 - 0.5 * (ea + eb), 0.5 * (eb - ea), lessThanEqual(zb, vec4(0.0))), 0.5 * (ea - eb),
+                  greaterThanEqual(za, vec4(0.0)));
+  return mass / (width * sigma);
+}
+
+// The mean over the box [lo, hi] of N2(mean, cov): along y exactly given x (the conditional is a 1D
+// Gaussian of mean mean.y + (cov01 / cov00)(x - mean.x)), along x by 10-point Gauss-Legendre over the
+// box clipped to mean.x +- 5 sigma_x (the CPU twin's box_integral, src/prefilter/position_normal.cpp),
+// evaluated as three vec4 batches of nodes (the last two lanes of weight 0).
+// A box of zero width or height gives the density's mean over the other side (or the density).
+float gaussianBoxMean(vec2 mean, mat2 cov, vec2 lo, vec2 hi) {
+  const vec4 NODES[3] = vec4[](vec4(-0.9739065285, -0.8650633667, -0.6794095683, -0.4333953941),
+                               vec4(-0.1488743390, 0.1488743390, 0.4333953941, 0.6794095683),
+                               vec4(0.8650633667, 0.9739065285, 0.0, 0.0));
+  const vec4 WEIGHTS[3] = vec4[](vec4(0.0666713443, 0.1494513492, 0.2190863625, 0.2692667193),
+                                 vec4(0.2955242247, 0.2955242247, 0.2692667193, 0.2190863625),
+                                 vec4(0.1494513492, 0.0666713443, 0.0, 0.0));
+  float sx = sqrt(cov[0][0]);
+  float a = max(lo.x, mean.x - 5.0 * sx), b = min(hi.x, mean.x + 5.0 * sx);
+  if (!(a <= b)) return 0.0;
+  float slope = cov[0][1] / cov[0][0];
+  float sc = sqrt(max(cov[1][1] - slope * cov[0][1], 1e-6 * cov[1][1]));
+  float mid = 0.5 * (a + b), half = 0.5 * (b - a);
+  float sum = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    vec4 x = mid + NODES[i] * half;
+    vec4 zx = (x - mean.x) / sx;
+    sum += dot(WEIGHTS[i] * exp(-0.5 * zx * zx), gaussianIntervalMean(lo.y, hi.y, mean.y + slope * (x - mean.x), sc));
+  }
+  float width = hi.x - lo.x;
+  float share = width > 0.0 ? half / width : 0.5;  // (b - a) / 2 over the box's width
+  return sum * share * 0.3989422804 / sx;
 }
 
 // sum_e w_e X_e / sum_e w_e over the footprint's elements, where X_e is the element's density
-// N2(s; mean_e, cov_e) at s = lo (`box` false), or the mean over the box [lo, hi] of the Gaussian
-// with cov_e's diagonal (`box` true: exact for axis-aligned covariances). One loop over a flat
-// index with a per-pixel trip count (never unrolled; llvmpipe counts every iteration towards its
-// 65535 cap, which the caller's maxRadius respects).
+// N2(s; mean_e, cov_e) at s = lo (`box` false), or its mean over the box [lo, hi] (`box` true).
+// One loop over a flat index with a per-pixel trip count (never unrolled; llvmpipe counts every
+// iteration towards its 65535 cap, which the caller's maxRadius respects).
 float positionNormalSum(sampler2D map, PositionNormalFootprint f, const int k, vec2 lo, vec2 hi, const bool box) {
   float sum = 0.0, weights = 0.0;
   int n = f.count.x * f.count.y;
@@ -147,8 +178,7 @@ float positionNormalSum(sampler2D map, PositionNormalFootprint f, const int k, v
     mat2 cov = J * f.sigmaU * transpose(J) + mat2(f.sigmaR2);
     float x;
     if (box) {
-      x = gaussianIntervalMean(lo.x, hi.x, mean.x, sqrt(cov[0][0])) *
-          gaussianIntervalMean(lo.y, hi.y, mean.y, sqrt(cov[1][1]));
+      x = gaussianBoxMean(mean, cov, lo, hi);
     } else {
       float det = cov[0][0] * cov[1][1] - cov[0][1] * cov[1][0];
       vec2 r = lo - mean;
@@ -166,7 +196,7 @@ float positionNormalDensity(sampler2D map, PositionNormalFootprint f, const int 
   return positionNormalSum(map, f, k, s, s, false);
 }
 
-// The mean of P over the box [lo, hi] (each element's covariance taken diagonal).
+// The mean of P over the box [lo, hi].
 float positionNormalBoxMean(sampler2D map, PositionNormalFootprint f, const int k, vec2 lo, vec2 hi) {
   return positionNormalSum(map, f, k, lo, hi, true);
 }

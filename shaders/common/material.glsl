@@ -13,7 +13,9 @@ struct MaterialData {
                         // per uv area; y: relative area; z: max anisotropy; w: unused.
                         // Binomial glints (MATERIAL_BINOMIAL_GLINTS): x: ln microfacets per uv
                         // area; y: microfacet roughness R; z: density randomization; w: slope
-                        // cells per unit of h.xy
+                        // cells per unit of h.xy.
+                        // Normal-map glints (MATERIAL_NORMAL_GLINTS): x: intrinsic roughness
+                        // sigma_r; y: masking alpha (Beckmann, for Smith G2 only); zw: unused
   vec4 emission;        // rgb: emitted radiance; w: unused
   // Textured materials (a program variant, MATERIAL_TEXTURES; common/material_textures.glsl):
   vec4 base_color;      // rgba: factor of the base-colour texture

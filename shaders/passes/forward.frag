@@ -3,7 +3,8 @@
 // chosen by the renderer through the $METHOD include; this pass never names a method.
 // Variant defines (src/render/renderer.cpp): LIGHT_RANGES (common/light_loop.glsl),
 // MATERIAL_NORMAL_MAP (1 when the material has a normal map), MATERIAL_TEXTURES (1 when its
-// parameters vary per texel) and REFERENCE_PASS (1 for ground truth, which evaluates the surface
+// parameters vary per texel), MATERIAL_GLINTS, MATERIAL_BINOMIAL_GLINTS and MATERIAL_NORMAL_GLINTS
+// (the glinty material kinds, which only their methods and the reference tell apart) and REFERENCE_PASS (1 for ground truth, which evaluates the surface
 // itself at each sample: textures at their base level).
 #include "common/frame.glsl"
 #include "common/fragment_inputs.glsl"

@@ -29,6 +29,9 @@ const float REFERENCE_SCREEN_SPACE_SCALE = 1.0;
 // error, against quadrature over the light, is 0.5% relative on average and 7% at most wherever
 // p >= 1e-4 (tests/gl/test_glint_light_probability.cpp), far below the LTC's and the cap's.
 const uint REFERENCE_GLINT_P_SAMPLES = 128u;
+#elif MATERIAL_NORMAL_GLINTS
+#include "common/normal_glints_surface.glsl"
+NormalGlintPoint gNormalGlint;  // this sub-pixel's point of the map (in the macro frame)
 #endif
 
 // Below this alpha the material is treated as a perfect mirror (a delta BRDF).
@@ -43,6 +46,11 @@ void prepareSurface(inout Surface s) {
   gGlint = prepareGlints(s, materials[uMaterial], false, true);
 #elif MATERIAL_BINOMIAL_GLINTS
   gBinomial = prepareBinomialGlints(s, materials[uMaterial], REFERENCE_SCREEN_SPACE_SCALE);
+#elif MATERIAL_NORMAL_GLINTS
+  // The map's normal at this sample is the mean of the projected normals; the BRDF lives in the
+  // macro frame, so the frame goes back to the vertex normal (the map's x, y are that frame's).
+  gNormalGlint = normalGlintPoint(s.mappedNormal, materials[uMaterial]);
+  setShadingNormal(s, s.vertexNormal);
 #endif
 }
 
@@ -55,6 +63,8 @@ vec3 materialSpecularCos(Surface s, vec3 wo, vec3 wi) {
   return binomialRealisationSpecularCos(gBinomial, wo, wi, s.f0, s.alpha);
 #elif MATERIAL_BINOMIAL_GLINTS
   return binomialSpecularCos(gBinomial, wo, wi, s.f0, s.alpha, REMAINING_LOGNORMAL);
+#elif MATERIAL_NORMAL_GLINTS
+  return normalGlintSpecularCos(gNormalGlint, wo, wi, s.f0);
 #else
   return specularCos(s.ndf, wo, wi, s.alpha, s.f0);
 #endif
@@ -63,11 +73,29 @@ vec3 materialSpecularCos(Surface s, vec3 wo, vec3 wi) {
 // Solid-angle density of the BRDF sampling strategy below (common/sampling.glsl, tested by
 // chi-square against the samplers in tests/gl/test_sampling.cpp).
 float brdfSamplePdf(Surface s, vec3 wo, vec3 wi) {
+#if MATERIAL_NORMAL_GLINTS
+  return normalGlintReflectionPdf(gNormalGlint, wo, wi);
+#else
   return s.ndf == NDF_BECKMANN ? beckmannReflectionPdf(wo, wi, s.alpha) : ggxVisibleReflectionPdf(wo, wi, s.alpha);
+#endif
 }
 
 vec3 sampleBrdfNormal(Surface s, vec3 wo, vec2 u) {
+#if MATERIAL_NORMAL_GLINTS
+  return sampleNormalGlintNormal(gNormalGlint, u);
+#else
   return s.ndf == NDF_BECKMANN ? sampleBeckmannNormal(s.alpha, u) : sampleGGXVisibleNormal(wo, s.alpha, u);
+#endif
+}
+
+// Lambert times the cosine; a normal-map-glints material's frame is the macro one, and its diffuse
+// part sees the map's normal, as every method's normal-mapped Lambert does.
+vec3 materialDiffuseCos(Surface s, vec3 wi) {
+#if MATERIAL_NORMAL_GLINTS
+  return s.diffuse * (INV_PI * max(dot(gNormalGlint.normal, wi), 0.0));
+#else
+  return diffuseCos(s.diffuse, wi);
+#endif
 }
 
 // The specular BRDF times the cosine integrated over a light with extent: the material's, or the
@@ -105,7 +133,7 @@ Radiance shadeLight(Surface s, LightData L) {
     vec3 l, irradiance;
     deltaLightIncidence(L, s.position, l, irradiance);
     vec3 wi = toLocal(s, l);
-    return Radiance(diffuseCos(s.diffuse, wi) * irradiance, materialSpecularCos(s, wo, wi) * irradiance);
+    return Radiance(materialDiffuseCos(s, wi) * irradiance, materialSpecularCos(s, wo, wi) * irradiance);
   }
 
   int k = uTarget.z;
@@ -126,7 +154,7 @@ Radiance shadeLight(Surface s, LightData L) {
     if (sampleLightDirection(L, s.position, r2Point(first + j, rotLight), dir, dist, pdfLight) && pdfLight > 0.0) {
       vec3 wi = toLocal(s, dir);
       if (wi.z > 0.0) {
-        result.diffuse += diffuseCos(s.diffuse, wi) * radiance / pdfLight;
+        result.diffuse += materialDiffuseCos(s, wi) * radiance / pdfLight;
         if (!mirror) {
           float w = powerHeuristic(pdfLight, brdfSamplePdf(s, wo, wi));
           result.specular += extentSpecularCos(s, wo, wi) * radiance * (w / pdfLight);

@@ -65,7 +65,8 @@ struct MaterialGpu {
   glm::vec4 alpha_rho;       ///< xy: alpha; z: slope correlation; w: anisotropy rotation (radians)
   glm::vec4 glints;          ///< x: ln density; y: relative area; z: max anisotropy (MATERIAL_GLINTS);
                              ///< binomial glints (MATERIAL_BINOMIAL_GLINTS): x: ln density; y: R;
-                             ///< z: density randomization; w: slope-grid scale
+                             ///< z: density randomization; w: slope-grid scale;
+                             ///< normal-map glints (MATERIAL_NORMAL_GLINTS): x: sigma_r; y: masking alpha
   glm::vec4 emission;        ///< rgb: emitted radiance
   // Textured materials (a program variant, MATERIAL_TEXTURES): per-texel parameters' factors.
   glm::vec4 base_color;      ///< rgba factor

@@ -72,8 +72,10 @@ gl::Texture make_mipmapped_texture(GLenum format, GLenum channels, int width, in
 }
 
 /// MaterialGpu::glints: a glinty material's parameters (Chermain's or, in the MATERIAL_BINOMIAL_GLINTS
-/// variant, Deliot & Belcour's), the defaults of Chermain's otherwise.
+/// variant, Deliot & Belcour's, in MATERIAL_NORMAL_GLINTS sigma_r and the masking alpha), the
+/// defaults of Chermain's otherwise.
 glm::vec4 glint_record(const Material& m) {
+  if (m.normal_glints) return {m.normal_glints->intrinsic_roughness, m.normal_glints->masking_alpha, 0.0f, 0.0f};
   if (m.binomial_glints) {
     const BinomialGlintParams& b = *m.binomial_glints;
     return {b.log_density, b.microfacet_roughness, b.density_randomization, b.slope_grid_scale};
@@ -184,6 +186,7 @@ GpuScene::GpuScene(const Scene& scene, TableCache tables) : tables_(std::move(ta
     normal_maps_.push_back(m.normal_map ? upload_normal_map(*m.normal_map) : NormalMapTextures{});
     glinty_.push_back(m.glints.has_value());
     binomial_glinty_.push_back(m.binomial_glints.has_value());
+    normal_glinty_.push_back(m.normal_glints.has_value());
     textures_.push_back(material_textures(m));
   }
   for (const auto& m : scene.materials)

@@ -58,6 +58,8 @@ class GpuScene {
   [[nodiscard]] bool glinty(int material) const { return glinty_[index(material)]; }
   /// Whether the material is a binomial-glints one (Material::binomial_glints).
   [[nodiscard]] bool binomial_glinty(int material) const { return binomial_glinty_[index(material)]; }
+  /// Whether the material is a normal-map-glints one (Material::normal_glints).
+  [[nodiscard]] bool normal_glinty(int material) const { return normal_glinty_[index(material)]; }
   /// Whether the material's parameters vary per texel (Material::textures).
   [[nodiscard]] bool textured(int material) const { return textures_[index(material)].textured; }
   /// Binds a material's textures to their units and sets `program`'s per-draw texture transforms
@@ -98,6 +100,7 @@ class GpuScene {
   std::vector<NormalMapTextures> normal_maps_;
   std::vector<bool> glinty_;
   std::vector<bool> binomial_glinty_;
+  std::vector<bool> normal_glinty_;
   std::vector<MaterialTextures> textures_;
   std::map<const MaterialTexture*, gl::Texture> texture_objects_;  // shared between materials
   gl::Texture white_;  // 1x1 white: the texel of an absent texture

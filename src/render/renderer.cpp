@@ -34,12 +34,13 @@ ShaderDefines forward_variant(const std::string& module, const LightRanges& ligh
           {"MATERIAL_GLINTS", material.glints ? "1" : "0"},
           {"MATERIAL_TEXTURES", material.textures ? "1" : "0"},
           {"MATERIAL_BINOMIAL_GLINTS", material.binomial_glints ? "1" : "0"},
+          {"MATERIAL_NORMAL_GLINTS", material.normal_glints ? "1" : "0"},
           {"REFERENCE_PASS", is_reference_module(module) ? "1" : "0"}};
 }
 
 MaterialVariant material_variant(const GpuScene& scene, int material) {
   return {scene.normal_map(material) != 0, scene.glinty(material), scene.textured(material),
-          scene.binomial_glinty(material)};
+          scene.binomial_glinty(material), scene.normal_glinty(material)};
 }
 
 std::string method_program_module(ShaderLibrary& shaders, const MethodDescriptor& method, const ParamValues& params) {

@@ -15,12 +15,13 @@
 namespace glintlab {
 
 /// What of a material changes the forward program: MATERIAL_NORMAL_MAP, MATERIAL_GLINTS,
-/// MATERIAL_TEXTURES and MATERIAL_BINOMIAL_GLINTS.
+/// MATERIAL_TEXTURES, MATERIAL_BINOMIAL_GLINTS and MATERIAL_NORMAL_GLINTS.
 struct MaterialVariant {
   bool normal_map = false;
   bool glints = false;
   bool textures = false;
   bool binomial_glints = false;
+  bool normal_glints = false;
   auto operator<=>(const MaterialVariant&) const = default;
 };
 MaterialVariant material_variant(const GpuScene& scene, int material);

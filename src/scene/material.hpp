@@ -35,6 +35,17 @@ struct BinomialGlintParams {
   float slope_grid_scale = 16.0f;      ///< slope cells per unit of the projected half vector h.xy
 };
 
+/// A normal-map-glints material (Yan et al. 2016's microsurface): the normal map itself is the
+/// surface; at a point u the projected normal s = h.xy is Gaussian about the map's bilinear normal
+/// n(u).xy with standard deviation `intrinsic_roughness` per axis (docs/scene-format.md). Other
+/// methods shade its Beckmann limit alpha = sqrt(2) sigma_r over the normal map.
+struct NormalGlintParams {
+  float intrinsic_roughness = 0.01f;  ///< sigma_r
+  /// Beckmann alpha of the whole microsurface, sqrt(E[|b|^2] + 2 sigma_r^2) with b = n.xy / n.z
+  /// over the map's texels: used only for Smith masking-shadowing.
+  float masking_alpha = 0.01f;
+};
+
 /// An 8-bit RGBA texture of material parameters, row 0 at v = 0 (glintlab's uv: v up, so an image
 /// file's bottom row comes first).
 struct MaterialTexture {
@@ -79,6 +90,8 @@ struct Material {
   glm::mat3 normal_map_transform{1.0f};  ///< then this affine map of uv (KHR_texture_transform)
   std::optional<GlintParams> glints;  ///< set for glinty materials (then ndf is Beckmann)
   std::optional<BinomialGlintParams> binomial_glints;  ///< set for binomial-glints materials (ndf GGX)
+  /// Set for normal-map-glints materials (then ndf is Beckmann, alpha sqrt(2) sigma_r, normal_map set).
+  std::optional<NormalGlintParams> normal_glints;
   /// Set for materials whose parameters vary per texel (glTF); then f0, diffuse and alpha above
   /// are those of the factors alone.
   std::optional<TexturedMetalRough> textures;

@@ -11,6 +11,7 @@
 #include "scene/gltf_showcase.hpp"
 #include "scene/light_kind.hpp"
 #include "scene/mesh_io.hpp"
+#include "scene/normal_glints.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/toml_reader.hpp"
 
@@ -159,16 +160,39 @@ void parse_binomial_glints(TomlReader& r, Material& m) {
   m.binomial_glints = g;
 }
 
+// The keys of a normal-map-glints material (docs/scene-format.md; Yan et al. 2016): the normal map
+// is the microsurface, each point's projected normal Gaussian of deviation intrinsic_roughness
+// about the map's. Other methods shade Beckmann of alpha = sqrt(2) sigma_r over the normal map.
+// The masking alpha needs the map: parse_material sets it once the map is read.
+void parse_normal_glints(TomlReader& r, Material& m) {
+  for (const char* key : {"alpha", "ndf", "sigma"})
+    if (r.has(key))
+      r.fail(key, "is not a key of a normal-map-glints material; its roughness is intrinsic_roughness "
+                  "(Beckmann, alpha = sqrt(2) intrinsic_roughness) about the normal map's normals");
+  if (!r.has("normal_map"))
+    r.fail("normal_map", "is required by normal-map-glints material '" + m.name +
+                             "' (the map is its microsurface); allowed: a table { file = ... } or { generator = ... }");
+  NormalGlintParams g;
+  g.intrinsic_roughness =
+      static_cast<float>(r.get_number("intrinsic_roughness", g.intrinsic_roughness, 0.001, 0.3));
+  m.ndf = Ndf::Beckmann;
+  m.alpha = glm::vec2(std::sqrt(2.0f) * g.intrinsic_roughness);
+  m.normal_glints = g;
+}
+
 Material parse_material(TomlReader r, const std::filesystem::path& base_dir) {
   Material m;
   m.name = r.require_string("name");
-  const std::string type = r.get_string("type", "microfacet", {"microfacet", "glinty", "binomial-glints"});
+  const std::string type =
+      r.get_string("type", "microfacet", {"microfacet", "glinty", "binomial-glints", "normal-map-glints"});
   if (type == "glinty") {
     for (const char* key : {"alpha", "ndf"})
       if (r.has(key)) r.fail(key, "is not a key of a glinty material; it has sigma (alpha = sqrt(2) sigma) and a Beckmann NDF");
     parse_glints(r, m);
   } else if (type == "binomial-glints") {
     parse_binomial_glints(r, m);
+  } else if (type == "normal-map-glints") {
+    parse_normal_glints(r, m);
   } else {
     m.ndf = r.get_string("ndf", "ggx", {"ggx", "beckmann"}) == "ggx" ? Ndf::GGX : Ndf::Beckmann;
     m.alpha = r.get_vec2("alpha", m.alpha, 0.0, 1.0);
@@ -190,6 +214,8 @@ Material parse_material(TomlReader r, const std::filesystem::path& base_dir) {
   if (const toml::table* nm = r.get_table("normal_map"))
     m.normal_map = parse_normal_map(TomlReader(*nm, r.file(), "[[material]] '" + m.name + "' normal_map"), base_dir);
   m.normal_map_tiling = static_cast<float>(r.get_number("normal_map_tiling", 1.0, 1e-3, 1e5));
+  if (m.normal_glints)
+    m.normal_glints->masking_alpha = normal_glint_masking_alpha(*m.normal_map, m.normal_glints->intrinsic_roughness);
   r.finish();
   return m;
 }

@@ -2,6 +2,7 @@
 // allowed, and throws InputError (exit code 2 in the CLI).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -179,4 +180,37 @@ TEST(SceneParser, BinomialGlintsMaterialKeysAreCheckedAndNamed) {
   expect_error(binomial({{"ndf", "beckmann"}}).toml(), {"ndf", "GGX"});
   expect_error(binomial({{"sigma", 0.1}}).toml(), {"sigma", "not a known key"});
   expect_error(TestScene().material("g", {{"type", "sparkly"}}).toml(), {"type", "glinty, binomial-glints"});
+}
+
+TEST(SceneParser, NormalMapGlintsMaterialKeysAreCheckedAndNamed) {
+  auto material = [](TomlKeys keys) {
+    keys.insert(keys.begin(), {"type", "normal-map-glints"});
+    return TestScene().material("brushed", std::move(keys)).sphere("brushed").point_light({0, 2, 3});
+  };
+  const TomlKeys bumps{{"generator", "bumps"}, {"resolution", 32}, {"alpha", 0.2}, {"max_frequency", 8}};
+  const Scene s = material({{"intrinsic_roughness", 0.02}, {"normal_map", bumps}}).scene();
+  const Material& m = s.materials[0];
+  ASSERT_TRUE(m.normal_glints.has_value());
+  ASSERT_NE(m.normal_map, nullptr);
+  EXPECT_EQ(m.ndf, Ndf::Beckmann);
+  EXPECT_FLOAT_EQ(m.alpha.x, std::sqrt(2.0f) * 0.02f);
+  EXPECT_FLOAT_EQ(m.alpha.y, m.alpha.x);
+  EXPECT_FLOAT_EQ(m.normal_glints->intrinsic_roughness, 0.02f);
+  // The masking alpha is the whole microsurface's: the bumps' slopes have variance alpha^2 over the
+  // texels (distinct integer frequencies are orthogonal on the grid), plus 2 sigma_r^2.
+  EXPECT_NEAR(m.normal_glints->masking_alpha, std::sqrt(0.2 * 0.2 + 2 * 0.02 * 0.02), 0.01);
+  // A flat map leaves the intrinsic Gaussian alone: alpha = sqrt(2) sigma_r, the default 0.01.
+  const Scene flat = material({{"normal_map", TomlKeys{{"generator", "bumps"}, {"resolution", 4}, {"alpha", 0}}}}).scene();
+  EXPECT_FLOAT_EQ(flat.materials[0].normal_glints->intrinsic_roughness, 0.01f);
+  EXPECT_NEAR(flat.materials[0].normal_glints->masking_alpha, std::sqrt(2.0) * 0.01, 1e-6);
+
+  expect_error(material({{"intrinsic_roughness", 0.02}}).toml(), {"normal_map", "'brushed'", "required"});
+  expect_error(material({{"intrinsic_roughness", 0.5}, {"normal_map", bumps}}).toml(),
+               {"intrinsic_roughness", "0.5", "0.001 .. 0.3"});
+  expect_error(material({{"intrinsic_roughness", 0}, {"normal_map", bumps}}).toml(),
+               {"intrinsic_roughness", "0", "0.001 .. 0.3"});
+  expect_error(material({{"alpha", 0.1}, {"normal_map", bumps}}).toml(), {"alpha", "intrinsic_roughness"});
+  expect_error(material({{"ndf", "ggx"}, {"normal_map", bumps}}).toml(), {"ndf", "Beckmann"});
+  expect_error(material({{"log_density", 10}, {"normal_map", bumps}}).toml(), {"log_density", "not a known key"});
+  expect_error(TestScene().material("g", {{"type", "sparkly"}}).toml(), {"type", "normal-map-glints"});
 }

@@ -40,7 +40,8 @@ static_assert(field_count<CameraKey>() == 2);
 static_assert(field_count<CameraPath>() == 6);
 static_assert(field_count<GlintParams>() == 3);
 static_assert(field_count<BinomialGlintParams>() == 4);
-static_assert(field_count<Material>() == 14);
+static_assert(field_count<NormalGlintParams>() == 2);
+static_assert(field_count<Material>() == 15);
 static_assert(field_count<TexturedMetalRough>() == 8);
 static_assert(field_count<TextureSlot>() == 2);
 static_assert(field_count<MaterialTexture>() == 5);
@@ -86,6 +87,12 @@ Scene base_scene() {
   textured.textures->metallic_roughness_texture.texture = texture;
   textured.textures->emissive_texture.texture = texture;
   s.materials.push_back(textured);
+  // A normal-map-glints material (the parser's fields, set by hand: the hash reads the struct).
+  Material normal_glints = s.materials[1];
+  normal_glints.name = "normal-glints";
+  normal_glints.glints.reset();
+  normal_glints.normal_glints = NormalGlintParams{0.02f, 0.3f};
+  s.materials.push_back(normal_glints);
   return s;
 }
 
@@ -156,6 +163,9 @@ const std::vector<FieldChange> kHashed = {
     {"binomial.microfacet_roughness", [](Scene& s) { s.materials[2].binomial_glints->microfacet_roughness *= 0.5f; }},
     {"binomial.density_randomization", [](Scene& s) { s.materials[2].binomial_glints->density_randomization += 1; }},
     {"binomial.slope_grid_scale", [](Scene& s) { s.materials[2].binomial_glints->slope_grid_scale *= 2; }},
+    {"material.normal_glints (one -> none)", [](Scene& s) { s.materials[4].normal_glints.reset(); }},
+    {"normal_glints.intrinsic_roughness", [](Scene& s) { s.materials[4].normal_glints->intrinsic_roughness *= 2; }},
+    {"normal_glints.masking_alpha", [](Scene& s) { s.materials[4].normal_glints->masking_alpha *= 2; }},
     {"normal_map.width", [](Scene& s) { normal_map_of(s.materials[1])->width += 1; }},
     {"normal_map.height", [](Scene& s) { normal_map_of(s.materials[1])->height += 1; }},
     {"normal_map.normals", [](Scene& s) { normal_map_of(s.materials[1])->normals[5].x += 0.01f; }},
@@ -244,9 +254,10 @@ TEST(SceneHash, EveryFieldIsListedOnce) {
   EXPECT_EQ(fields("path."), static_cast<int>(field_count<CameraPath>()));
   EXPECT_EQ(fields("glints."), static_cast<int>(field_count<GlintParams>()));
   EXPECT_EQ(fields("binomial."), static_cast<int>(field_count<BinomialGlintParams>()));
-  // material.normal_map, .glints, .binomial_glints and .textures are listed by what changes
-  // ("none -> one").
-  EXPECT_EQ(fields("material.") + 4, static_cast<int>(field_count<Material>()));
+  EXPECT_EQ(fields("normal_glints."), static_cast<int>(field_count<NormalGlintParams>()));
+  // material.normal_map, .glints, .binomial_glints, .normal_glints and .textures are listed by
+  // what changes ("none -> one").
+  EXPECT_EQ(fields("material.") + 5, static_cast<int>(field_count<Material>()));
   EXPECT_EQ(fields("textured."), static_cast<int>(field_count<TexturedMetalRough>()));
   EXPECT_EQ(fields("slot.") + 1, static_cast<int>(field_count<TextureSlot>()));
   EXPECT_EQ(fields("texture."), static_cast<int>(field_count<MaterialTexture>()));

@@ -47,6 +47,10 @@ void add_common(CLI::App* cmd, CommonOptions& o, bool many_methods) {
   cmd->add_option("--reference-backend", o.reference_backend,
                   "how the ground truth is computed (" + backends + "; see 'glintlab info')")
       ->default_str(o.reference_backend);
+  cmd->add_option("--reference-filter", o.reference_filter,
+                  "the reference's pixel filter: box (each pixel's own samples), or gaussian:S (every sample "
+                  "within 3 S pixels, Gaussian of S = 0.1 .. 4 pixels: a method's Gaussian footprint)")
+      ->default_str(o.reference_filter);
   cmd->add_option("--width", o.width, "film width in pixels (overrides the scene)")
       ->check(CLI::Range(1, kMaxFilmSide));
   cmd->add_option("--height", o.height, "film height in pixels (overrides the scene)")
@@ -147,7 +151,10 @@ int render_command(const CommonOptions& o, const std::string& reference_arg, boo
     // --reference=auto sizes the reference by the method's own error (the --method, default conventional).
     const ReferenceFrame reference = session.reference(frame, {&method});
     write_reference(dir, stem, reference, session.scene().film);
-    std::cout << describe_reference(reference) << "\n";
+    std::cout << describe_reference(reference);
+    if (!session.reference_settings().filter.is_box())
+      std::cout << ", pixel filter " << session.reference_settings().filter.text();
+    std::cout << "\n";
   } else {
     write_frame(dir, stem, method, session.scene().film);
   }

@@ -59,6 +59,7 @@ nlohmann::json run_metadata(Session& session) {
   json["height"] = session.height();
   json["device"] = session.context().info().renderer;
   json["reference_backend"] = session.reference_backend().id();
+  json["reference_filter"] = session.reference_settings().filter.text();
   return json;
 }
 

@@ -105,6 +105,7 @@ Session::Session(const CommonOptions& options, std::optional<Workload> workload)
   for (const auto& w : scene_.warnings) std::cerr << "glintlab: warning: " << w << "\n";
   if (!options.spp_text.empty()) parse_spp(options.spp_text, "--spp", options_);
   find_reference_backend(options.reference_backend);  // an unknown id fails before any GL work
+  reference_.filter = PixelFilter::parse(options.reference_filter);
   validate_spp(options_.spp);
   if (options.max_spp < 4 * kProgressivePassSpp || options.max_spp > kMaxReferenceSpp)
     throw InputError("--max-spp " + std::to_string(options.max_spp) + ": allowed: " +

@@ -37,6 +37,7 @@ struct CommonOptions {
   std::string out;
   bool no_cache = false;
   std::string reference_backend = reference_backends().front().id;  ///< --reference-backend; default: the first
+  std::string reference_filter = "box";  ///< --reference-filter: box or gaussian:S (PixelFilter::parse)
   bool quiet = false;
 };
 

@@ -10,6 +10,7 @@
 #include "render/gpu_scene.hpp"
 #include "render/render_target.hpp"
 #include "render/renderer.hpp"
+#include "render/subpixel_filter.hpp"
 #include "render/tables/registry.hpp"
 
 namespace glintlab {
@@ -30,6 +31,7 @@ std::uint64_t RasterReference::estimator_hash() const {
   }
   h.text(shaders_.expand("passes/emitter.frag", {}));
   h.text(shaders_.expand("passes/downsample.comp", {}));
+  h.text(shaders_.expand("passes/filter_gaussian.comp", {}));
   // The tables the reference reads: a new generator version or settings is a new reference.
   for (const auto& id : scene_.material_table_ids()) h.value(table_key(find_table(id).source));
   estimator_hash_ = h.digest();
@@ -43,42 +45,45 @@ Frame RasterReference::render_pass(const Camera& camera, int width, int height, 
   constexpr int kMaxTileSide = 2048;  // sub-pixels per side of one high-resolution tile
   const int tile = std::max(1, kMaxTileSide / k);
   const int tiles_x = (width + tile - 1) / tile, tiles_y = (height + tile - 1) / tile;
+  // The pixels around a tile whose samples its filter weights too (none for the box).
+  const int margin = pass.filter.support_pixels();
 
-  RenderTarget high(std::min(width, tile) * k, std::min(height, tile) * k);
+  RenderTarget high(std::min(width, tile + 2 * margin) * k, std::min(height, tile + 2 * margin) * k);
   gl::Texture out_total = gl::make_texture(GL_TEXTURE_2D), out_specular = gl::make_texture(GL_TEXTURE_2D);
   glTextureStorage2D(out_total.id(), 1, GL_RGBA32F, width, height);
   glTextureStorage2D(out_specular.id(), 1, GL_RGBA32F, width, height);
 
-  const GLuint downsample = shaders_.compute("passes/downsample.comp");
+  SubpixelFilter filter(shaders_, pass.filter);
   const glm::ivec2 film(width, height);
   int done = 0;
   for (int ty = 0; ty < tiles_y; ++ty)
     for (int tx = 0; tx < tiles_x; ++tx) {
-      // Tile in output pixels, y down (film convention).
+      // Tile in output pixels, y down (film convention), and the region rendered for it: the
+      // tile and its margin inside the film.
       const glm::ivec2 origin(tx * tile, ty * tile);
       const glm::ivec2 size(std::min(tile, width - origin.x), std::min(tile, height - origin.y));
+      const glm::ivec2 region_origin = glm::max(origin - margin, glm::ivec2(0));
+      const glm::ivec2 region_size = glm::min(origin + size + margin, film) - region_origin;
       const int gl_y = height - origin.y - size.y;  // the same tile in GL's y-up pixel rows
-      const glm::ivec2 high_size = size * k;
+      const int region_gl_y = height - region_origin.y - region_size.y;
+      const glm::ivec2 high_size = region_size * k;
       // The rasteriser samples each sub-pixel at its centre; moving the image by (0.5 - jitter)
       // sub-pixels makes that centre see the point `jitter` from the cell's corner instead.
       const glm::vec2 shift_ndc = 2.0f * (glm::vec2(0.5f) - pass.jitter) / glm::vec2(high_size);
       const glm::mat4 projection = glm::translate(glm::mat4(1.0f), glm::vec3(shift_ndc, 0.0f)) *
-                                   camera.tile_projection_matrix(film, origin, size);
+                                   camera.tile_projection_matrix(film, region_origin, region_size);
       high.bind_and_clear(high_size.x, high_size.y);
       renderer_.draw_view(module_, {}, camera, projection, {high_size.x, high_size.y, k, 0},
-                          {origin.x * k, gl_y * k, pass.light_samples, static_cast<int>(pass.seed & 0x7fffffffu)});
-
-      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
-      glUseProgram(downsample);
-      glBindImageTexture(0, high.total(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
-      glBindImageTexture(1, high.specular(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
-      glBindImageTexture(2, out_total.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-      glBindImageTexture(3, out_specular.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-      glProgramUniform1i(downsample, glGetUniformLocation(downsample, "uSubpixels"), k);
-      glProgramUniform2i(downsample, glGetUniformLocation(downsample, "uTileSize"), size.x, size.y);
-      glProgramUniform2i(downsample, glGetUniformLocation(downsample, "uOutOrigin"), origin.x, gl_y);
-      glDispatchCompute(static_cast<GLuint>((size.x + 7) / 8), static_cast<GLuint>((size.y + 7) / 8), 1);
-      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+                          {region_origin.x * k, region_gl_y * k, pass.light_samples,
+                           static_cast<int>(pass.seed & 0x7fffffffu)});
+      filter.reduce(high,
+                    {.subpixels = k,
+                     .jitter = pass.jitter,
+                     .region_origin = {region_origin.x, region_gl_y},
+                     .region_size = region_size,
+                     .out_origin = {origin.x, gl_y},
+                     .out_size = size},
+                    out_total.id(), out_specular.id());
       glFinish();  // one tile at a time keeps progress honest and the driver's queue short
       check_gl("rendering a reference tile");
       if (progress) progress(++done, tiles_x * tiles_y);

@@ -1,6 +1,7 @@
 #pragma once
 // The `raster` reference backend: the forward renderer with passes/reference.glsl in the method
-// slot, at k x k sub-pixels per pixel in tiles, box-filtered down to the film. Each sub-pixel
+// slot, at k x k sub-pixels per pixel in tiles, filtered down to the film by the pass's pixel
+// filter (render/subpixel_filter.hpp). Each sub-pixel
 // evaluates the surface itself (normal maps at their base level) and integrates every light with
 // extent by multiple importance sampling (docs/methods.md, "Ground truth").
 #include <string>
@@ -19,7 +20,7 @@ class RasterReference final : public ReferenceBackend {
 
   [[nodiscard]] std::string id() const override { return id_; }
   /// Hash of the full GLSL text of every program this backend runs on the scene (each material's
-  /// variant, the emitters, the downsampling): editing a method's module leaves it unchanged.
+  /// variant, the emitters, both pixel filters): editing a method's module leaves it unchanged.
   [[nodiscard]] std::uint64_t estimator_hash() const override;
   Frame render_pass(const Camera& camera, int width, int height, const ReferencePass& pass,
                     const ProgressFn& progress = {}) override;

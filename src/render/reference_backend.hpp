@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "render/pixel_filter.hpp"
 #include "render/reference_estimate.hpp"
 #include "scene/camera.hpp"
 
@@ -21,11 +22,12 @@ class Renderer;
 class ShaderLibrary;
 
 /// How a reference is sampled: `spp` samples per pixel in all, rendered as passes() independent
-/// passes of k x k jittered sub-pixels (k = subpixels()).
+/// passes of k x k jittered sub-pixels (k = subpixels()), each reduced to pixels by `filter`.
 struct ReferenceSettings {
   int spp = 64;            ///< passes x k x k; see subpixels()
   int light_samples = 0;   ///< per sub-pixel and light with extent; 0: max(1, ceil(256 / spp))
   int seed = 0;            ///< decorrelates frames of an animation
+  PixelFilter filter;      ///< --reference-filter; default: the box of each pixel's own samples
   /// k: the largest k <= 32 with k * k dividing spp and at most spp / 4 (so that there are at
   /// least four passes to estimate the reference's own error from), or 1.
   [[nodiscard]] int subpixels() const;
@@ -41,12 +43,14 @@ std::uint32_t reference_pass_seed(int frame_seed, int pass);
 glm::vec2 reference_pass_jitter(int frame_seed, int pass);
 
 /// One pass: k x k sub-pixels per pixel, every sub-pixel moved by the same `jitter` in [0, 1)^2
-/// sub-pixels from its cell's corner; `seed` selects the pass's light and BRDF samples.
+/// sub-pixels from its cell's corner; `seed` selects the pass's light and BRDF samples; `filter`
+/// turns the samples into pixels.
 struct ReferencePass {
   int subpixels = 1;
   int light_samples = 1;
   std::uint32_t seed = 0;
   glm::vec2 jitter{0.5f};
+  PixelFilter filter;
 
   /// Pass `index` of a frame's reference sampled with `settings`.
   static ReferencePass of(const ReferenceSettings& settings, int index);

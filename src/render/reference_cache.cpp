@@ -29,6 +29,7 @@ std::uint64_t ReferenceCache::key(const Scene& scene, const Camera& camera, int 
   h.value(settings.subpixels());
   h.value(settings.effective_light_samples());
   h.value(settings.seed);
+  h.text(settings.filter.text());
   h.text(backend.id());
   h.value(backend.estimator_hash());
   h.text(renderer);

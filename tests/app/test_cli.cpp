@@ -99,6 +99,10 @@ TEST_F(Cli, BadInputClassesExitWith2AndWriteNothing) {
   expect_bad_input("animate --frames -3", {"--frames", "-3"});
   expect_bad_input("animate --frames 100001", {"--frames", "100001", "1 to 100000"});
   expect_bad_input("render --reference-backend nope", {"nope", "raster"});
+  for (const char* filter : {"gaussian:0", "gaussian:abc", "tent"})
+    for (const char* command : {"render --reference=4", "compare --spp 4", "animate --spp 4 --frames 2"})
+      expect_bad_input(std::string(command) + " --reference-filter " + filter,
+                       {"--reference-filter", filter, "allowed: box, or gaussian:S", "0.1 .. 4"});
 }
 
 TEST_F(Cli, OutputPathsAreCheckedBeforeAnythingIsWritten) {
@@ -145,6 +149,15 @@ TEST_F(Cli, SameCommandWritesIdenticalFiles) {
     ASSERT_TRUE(fs::exists(a / f)) << f;
     EXPECT_EQ(read_bytes(a / f), read_bytes(b / f)) << f;
   }
+}
+
+TEST_F(Cli, ReferenceFilterIsRecordedWithTheReferencesSettings) {
+  const fs::path scene = write("filter.toml", kScene), out = scratch / "filtered";
+  const CliResult r = run_glintlab("compare -q --no-cache --spp 16 --methods conventional --reference-filter gaussian:0.5 "
+                                   "--scene '" + scene.string() + "' -o '" + out.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string json = read_bytes(out / "metrics.json");
+  EXPECT_NE(json.find("\"reference_filter\": \"gaussian:0.5\""), std::string::npos) << json;
 }
 
 TEST_F(Cli, ReferenceCacheIsReused) {

@@ -70,6 +70,22 @@ TEST(ReferenceBackend, IdAndEstimatorArePartOfTheCacheKey) {
   EXPECT_NE(key(FlatPasses("a", 1)), key(FlatPasses("a", 2)));
 }
 
+TEST(ReferenceBackend, PixelFilterIsPartOfTheCacheKeyAndOfEveryPass) {
+  const Scene scene = load_scene("builtin:spheres");
+  const FlatPasses backend("a");
+  const auto key = [&](const std::string& filter) {
+    ReferenceSettings settings{.spp = 64};
+    settings.filter = PixelFilter::parse(filter);
+    return ReferenceCache::key(scene, scene.camera, 32, 32, settings, backend, "device");
+  };
+  EXPECT_EQ(key("gaussian:0.5"), key("gaussian:0.5"));
+  EXPECT_NE(key("box"), key("gaussian:0.5"));
+  EXPECT_NE(key("gaussian:0.5"), key("gaussian:0.6"));
+  ReferenceSettings settings{.spp = 64};
+  settings.filter = PixelFilter::gaussian(0.5f);
+  EXPECT_EQ(ReferencePass::of(settings, 2).filter, settings.filter);
+}
+
 TEST(ReferenceBackend, CachedFrameIsOnlyFoundUnderItsBackendsKey) {
   const test::ScratchDirectory dir;
   {

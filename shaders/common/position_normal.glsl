@@ -145,15 +145,15 @@ float gaussianBoxMean(vec2 mean, mat2 cov, vec2 lo, vec2 hi) {
   if (!(a <= b)) return 0.0;
   float slope = cov[0][1] / cov[0][0];
   float sc = sqrt(max(cov[1][1] - slope * cov[0][1], 1e-6 * cov[1][1]));
-  float mid = 0.5 * (a + b), half = 0.5 * (b - a);
+  float mid = 0.5 * (a + b), halfSpan = 0.5 * (b - a);
   float sum = 0.0;
   for (int i = 0; i < 3; ++i) {
-    vec4 x = mid + NODES[i] * half;
+    vec4 x = mid + NODES[i] * halfSpan;
     vec4 zx = (x - mean.x) / sx;
     sum += dot(WEIGHTS[i] * exp(-0.5 * zx * zx), gaussianIntervalMean(lo.y, hi.y, mean.y + slope * (x - mean.x), sc));
   }
   float width = hi.x - lo.x;
-  float share = width > 0.0 ? half / width : 0.5;  // (b - a) / 2 over the box's width
+  float share = width > 0.0 ? halfSpan / width : 0.5;  // (b - a) / 2 over the box's width
   return sum * share * 0.3989422804 / sx;
 }
 

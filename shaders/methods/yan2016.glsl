@@ -7,9 +7,6 @@
 #include "common/lobe.glsl"
 #include "common/lobe_shading.glsl"
 
-#ifndef MATERIAL_NORMAL_GLINTS  // TEMPORARY until issue16-material is merged
-#define MATERIAL_NORMAL_GLINTS 0
-#endif
 
 #if MATERIAL_NORMAL_GLINTS
 const int ELEMENTS_PER_TEXEL = int(param_elements_per_texel + 0.5) + 1;  // the choices "1", "2"
@@ -17,6 +14,7 @@ const int ELEMENTS_PER_TEXEL = int(param_elements_per_texel + 0.5) + 1;  // the 
 
 PositionNormalFootprint gFootprint;
 float gMaskingAlpha;
+vec3 gDiffuseNormal;  // the map's filtered normal in the macro frame, for Lambert
 
 float normalGlintsDensity(vec2 s) { return positionNormalDensity(uNormalMap, gFootprint, ELEMENTS_PER_TEXEL, s); }
 float normalGlintsBoxMean(vec2 lo, vec2 hi) {
@@ -39,6 +37,7 @@ float truncationRadius() {
 void prepareSurface(inout Surface s) {
 #if MATERIAL_NORMAL_GLINTS
   // The macro frame: the model's P is over the projected normals of the map's own tangent frame.
+  gDiffuseNormal = normalize(s.mappedNormal);
   s.anisotropyRotation = 0.0;
   setShadingNormal(s, s.vertexNormal);
   ivec2 size = textureSize(uNormalMap, 0);
@@ -52,7 +51,7 @@ void prepareSurface(inout Surface s) {
 
 Radiance shadeLight(Surface s, LightData L) {
 #if MATERIAL_NORMAL_GLINTS
-  return shadeNormalGlints(s, L, gMaskingAlpha);
+  return shadeNormalGlints(s, L, gMaskingAlpha, gDiffuseNormal);
 #else
   return shadeLobe(s, L, materialLobe(s), float(AREA_LIGHTS_LTC));  // conventional's default
 #endif

@@ -1,5 +1,8 @@
 #include "render/subpixel_filter.hpp"
 
+#include <algorithm>
+
+#include "core/error.hpp"
 #include "gl/context.hpp"
 #include "gl/shader_library.hpp"
 #include "render/render_target.hpp"

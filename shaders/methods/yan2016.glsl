@@ -1,0 +1,58 @@
+// Method `yan2016`: Yan et al. 2016's position-normal distribution of the pixel's Gaussian footprint,
+// evaluated exactly by brute force over the normal map's elements (common/position_normal.glsl), on
+// `normal-map-glints` materials: the baseline whose cost grows with the footprint. Delta lights
+// take P at the half vector; lights with extent its mean over their half-vector box. Other
+// materials are shaded as by `conventional` (lights with extent by LTC).
+// Descriptor: src/shading/methods/yan2016.cpp; docs/methods.md#yan2016.
+#include "common/lobe.glsl"
+#include "common/lobe_shading.glsl"
+
+
+#if MATERIAL_NORMAL_GLINTS
+const int ELEMENTS_PER_TEXEL = int(param_elements_per_texel + 0.5) + 1;  // the choices "1", "2"
+#include "common/position_normal.glsl"
+
+PositionNormalFootprint gFootprint;
+float gMaskingAlpha;
+vec3 gDiffuseNormal;  // the map's filtered normal in the macro frame, for Lambert
+
+float normalGlintsDensity(vec2 s) { return positionNormalDensity(uNormalMap, gFootprint, ELEMENTS_PER_TEXEL, s); }
+float normalGlintsBoxMean(vec2 lo, vec2 hi) {
+  return positionNormalBoxMean(uNormalMap, gFootprint, ELEMENTS_PER_TEXEL, lo, hi);
+}
+#include "common/normal_glints_shading.glsl"
+
+// The truncation radius in texels: max_radius, and within llvmpipe's 65535 loop iterations per
+// invocation: the element loops of all the scene's lights together stay under 60000, (2 r k + 1)^2
+// elements per light. Applied on every driver, so that images agree.
+float truncationRadius() {
+  const ivec2 ranges[LIGHT_KIND_COUNT] = LIGHT_RANGES;
+  int lights = 0;
+  for (int i = 0; i < LIGHT_KIND_COUNT; ++i) lights += ranges[i].y - ranges[i].x;
+  float perLight = 60000.0 / float(max(lights, 1));
+  return min(param_max_radius, (floor(sqrt(perLight)) - 1.0) / (2.0 * float(ELEMENTS_PER_TEXEL)));
+}
+#endif
+
+void prepareSurface(inout Surface s) {
+#if MATERIAL_NORMAL_GLINTS
+  // The macro frame: the model's P is over the projected normals of the map's own tangent frame.
+  gDiffuseNormal = normalize(s.mappedNormal);
+  s.anisotropyRotation = 0.0;
+  setShadingNormal(s, s.vertexNormal);
+  ivec2 size = textureSize(uNormalMap, 0);
+  mat2 sigmaP = pixelFootprintCovariance(s.dUVdx, s.dUVdy, size, param_footprint_sigma);
+  vec4 glints = materials[uMaterial].glints;  // x: sigma_r, y: masking alpha
+  gFootprint = positionNormalFootprint(fract(s.uv) * vec2(size), sigmaP, size, ELEMENTS_PER_TEXEL, glints.x,
+                                       truncationRadius());
+  gMaskingAlpha = glints.y;
+#endif
+}
+
+Radiance shadeLight(Surface s, LightData L) {
+#if MATERIAL_NORMAL_GLINTS
+  return shadeNormalGlints(s, L, gMaskingAlpha, gDiffuseNormal);
+#else
+  return shadeLobe(s, L, materialLobe(s), float(AREA_LIGHTS_LTC));  // conventional's default
+#endif
+}

@@ -1,0 +1,135 @@
+// yan2016 in the renderer (docs/methods.md#yan2016): against the normal-map-glints reference filtered
+// by the Gaussian of the method's footprint, from a few texels per pixel to many; closer than the
+// conventional and filtered (lean) shadings; the matching footprint closer than mismatched ones;
+// lights with extent through their half-vector box; other materials as conventional; no NaN for
+// random lights across the horizon. Tiny images and maps.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <random>
+
+#include "core/metrics.hpp"
+#include "gl_fixture.hpp"
+#include "random_area_lights.hpp"
+
+using namespace glintlab;
+using namespace glintlab::test;
+
+namespace {
+
+constexpr float kFootprint = 0.5f;  // the method's default footprint_sigma and the reference's filter
+
+// A receding normal-map-glints floor (a 64^2 bumps map, `tiling` repeats over the 4 m plane) under
+// a point light, or a sphere and a disk light.
+TestScene floor_scene(double tiling, bool area_lights, int width = 48, int height = 32) {
+  TestScene s;
+  s.film(width, height)
+      .camera({0, 0.6, 1.6}, {0, 0, -0.8}, 40)
+      .material("steel", {{"type", "normal-map-glints"},
+                          {"intrinsic_roughness", 0.02},
+                          {"f0", 0.9},
+                          {"normal_map", TomlKeys{{"generator", "bumps"}, {"resolution", 64}, {"alpha", 0.25},
+                                                  {"waves", 48}, {"max_frequency", 8}, {"seed", 3}}},
+                          {"normal_map_tiling", tiling}})
+      .plane("steel", {{"size", 4}});
+  if (area_lights)
+    s.sphere_light({0.4, 0.9, -1.6}, 0.08, {300, 300, 300}, {{"visible", false}})
+        .disk_light({-0.6, 0.7, -1.2}, {0.3, -1, 0.4}, 0.1, {200, 250, 300}, {{"visible", false}});
+  else
+    s.point_light({0.3, 1.0, -1.8}, 3);
+  return s;
+}
+
+ReferenceFrame filtered_reference(SceneFixture& f, int spp) {
+  ReferenceSettings settings;
+  settings.spp = spp;
+  settings.filter = PixelFilter::gaussian(kFootprint);
+  return f.reference_at(f.scene.camera, f.scene.film.width, f.scene.film.height, settings);
+}
+
+struct Errors {
+  double yan, conventional, lean, noise, energy, energy_noise;
+};
+
+Errors errors_of(SceneFixture& f, const ReferenceFrame& ref, const std::map<std::string, std::string>& params = {}) {
+  const Image yan = f.method("yan2016", params).total;
+  return {rmse(yan, ref.mean.total), rmse(f.method("conventional").total, ref.mean.total),
+          rmse(f.method("lean").total, ref.mean.total), ref.noise_rmse(), energy_ratio(yan, ref.mean.total),
+          ref.relative_energy_error()};
+}
+
+void print(const char* what, const Errors& e) {
+  std::printf("%s: rmse yan2016 %.5f, conventional %.4f, lean %.5f, reference noise %.4f, energy %.4f +- %.4f\n", what,
+              e.yan, e.conventional, e.lean, e.noise, e.energy, e.energy_noise);
+}
+
+TEST(Yan2016, ConvergesToTheGaussianFilteredReference) {
+  // About two texels a pixel: with 2 x 2 elements per texel, closer than the filtered (lean) and the
+  // unfiltered (conventional) shadings, and closer than with one element per texel (the elements'
+  // linearised normals are the model's error: docs/methods.md#yan2016).
+  SceneFixture near(floor_scene(2.0, false));
+  const ReferenceFrame near_ref = filtered_reference(near, 64);
+  const Errors one = errors_of(near, near_ref), two = errors_of(near, near_ref, {{"elements_per_texel", "2"}});
+  print("near, k = 1", one);
+  print("near, k = 2", two);
+  EXPECT_LT(two.yan, one.yan);
+  EXPECT_LT(two.yan, two.lean);
+  EXPECT_LT(two.yan, 0.25 * two.conventional);
+  EXPECT_NEAR(two.energy, 1.0, 0.05 + 3 * two.energy_noise);
+  // Tens of texels a pixel: the footprint's distribution instead of the pixel centre's normal.
+  SceneFixture far(floor_scene(12.0, false, 32, 20));
+  const Errors e = errors_of(far, filtered_reference(far, 256));
+  print("far, k = 1", e);
+  EXPECT_LT(e.yan, 0.25 * e.conventional);
+  EXPECT_NEAR(e.energy, 1.0, 0.05 + 3 * e.energy_noise);
+}
+
+TEST(Yan2016, TheReferencesFootprintIsTheClosest) {
+  // The same method with a footprint narrower or wider than the reference's filter is farther.
+  SceneFixture f(floor_scene(8.0, false, 32, 20));
+  const Image ref = filtered_reference(f, 256).mean.total;
+  const double matched = rmse(f.method("yan2016").total, ref);
+  const double narrow = rmse(f.method("yan2016", {{"footprint_sigma", "0.2"}}).total, ref);
+  const double wide = rmse(f.method("yan2016", {{"footprint_sigma", "1.25"}}).total, ref);
+  std::printf("footprint 0.2: %.4f, 0.5: %.4f, 1.25: %.4f\n", narrow, matched, wide);
+  EXPECT_LT(matched, narrow);
+  EXPECT_LT(matched, wide);
+}
+
+TEST(Yan2016, LightsWithExtentThroughTheirHalfVectorBox) {
+  SceneFixture f(floor_scene(2.0, true, 32, 20));
+  const Errors e = errors_of(f, filtered_reference(f, 64), {{"elements_per_texel", "2"}});
+  print("area lights, near, k = 2", e);
+  EXPECT_LT(e.yan, 0.25 * e.conventional);
+  EXPECT_LT(e.yan, 0.6 * e.lean);
+  // The light's region as a box with Fresnel and masking at its centre: 9% low here (measured).
+  EXPECT_NEAR(e.energy, 1.0, 0.12 + 3 * e.energy_noise);
+}
+
+TEST(Yan2016, OtherMaterialsAreShadedAsConventional) {
+  TestScene s;
+  s.film(32, 24).camera({0, 1.2, 1.6}, {0, 0, 0}, 40).material("plastic", {{"alpha", 0.2}}).sphere("plastic");
+  s.point_light({1, 2, 1}, 4).sphere_light({-1, 1, 1}, 0.2, {3, 3, 3}, {{"visible", false}});
+  SceneFixture f(s);
+  EXPECT_EQ(rmse(f.method("yan2016").total, f.method("conventional").total), 0.0);
+}
+
+TEST(Yan2016, NoNanForRandomLights) {
+  std::mt19937 rng(16);
+  for (int trial = 0; trial < 2; ++trial) {
+    TestScene s = floor_scene(trial == 0 ? 2.0 : 32.0, false, 24, 16);
+    add_random_area_lights(s, rng, trial);
+    SceneFixture f(s);
+    for (const char* k : {trial == 0 ? "1" : "2"}) {
+      const Frame frame = f.method("yan2016", {{"elements_per_texel", k}});
+      for (int y = 0; y < frame.total.height(); ++y)
+        for (int x = 0; x < frame.total.width(); ++x)
+          for (int c = 0; c < 3; ++c)
+            ASSERT_TRUE(std::isfinite(frame.total.at(x, y)[c])) << "trial " << trial << " k " << k;
+    }
+  }
+}
+
+}  // namespace

@@ -60,13 +60,14 @@ double beckmann_specular_cos(glm::dvec3 wo, glm::dvec3 wi, double alpha) {
 // The plane's macro frame (src/scene/mesh.cpp: u along +x, v along -z, normal +y): local <-> world.
 glm::dvec3 plane_to_world(glm::dvec3 w) { return {w.x, w.z, -w.y}; }
 
-// Straight down onto a `size`-wide plane of one normal-map-glints material, no diffuse.
+// Straight down onto a plane of one normal-map-glints material, no diffuse: the view is the square
+// [-1, 1]^2 of a plane twice as wide, uv 0.5 per metre, so that a tiling of 2 puts 2 x 2 tiles in view.
 TestScene top_down_plane(int film, double sigma, TomlKeys normal_map, double tiling) {
   TestScene s;
   s.film(film, film).top_down_camera();
   s.material("metal", {{"type", "normal-map-glints"}, {"intrinsic_roughness", sigma}, {"f0", kF0},
                        {"normal_map", std::move(normal_map)}, {"normal_map_tiling", tiling}});
-  s.plane("metal", {{"size", 2}});
+  s.plane("metal", {{"size", 4}, {"uv_scale", 2}});
   return s;
 }
 
@@ -97,7 +98,7 @@ constexpr double kSigma = 0.05;
 // A constant map tilted in both axes, a directional light: every pixel is the closed form, to float
 // precision. It fails if the map's x or y is read with another sign than the vertex frame's (the
 // mean would move by 0.5 or 0.3, ten and six sigma), if the NDF or the masking lived in the mapped
-// normal's frame, or if D were P / h.z (3.6% more here, h.z = 0.965).
+// normal's frame, or if D were P / h.z (5% more here: h.z = 0.952).
 TEST(NormalGlintsReference, ConstantTiltedMapIsTheClosedFormUnderADeltaLight) {
   const glm::dvec3 wo(0, 0, 1);  // the top-down camera's view, in the plane's frame
   // A half vector off the map's normal by (0.8, 0.4) sigma, and the light it reflects.
@@ -123,7 +124,7 @@ TEST(NormalGlintsReference, ConstantTiltedMapIsTheClosedFormUnderADeltaLight) {
 // quadrature here (8 x 8 points a texel). It fails if the reference reads a filtered level
 // (averaged normals are smoother: their average BRDF differs by far more than the tolerance) or
 // the map through another tiling. The smooth Beckmann of the masking alpha (what every other
-// method shades in this limit) is printed beside it: it is the limit only approximately.
+// method shades in this limit) is near it: the limit only approximately.
 TEST(NormalGlintsReference, BumpyMapFromAfarIsTheMapsAverageOfTheBrdf) {
   constexpr int kRes = 32;
   constexpr double kTiling = 2.0, kSigmaR = 0.04;
@@ -154,13 +155,16 @@ TEST(NormalGlintsReference, BumpyMapFromAfarIsTheMapsAverageOfTheBrdf) {
       sum += contract_specular_cos(wo, wi, glm::dvec2(n), kSigmaR, m.normal_glints->masking_alpha);
     }
   const double truth = sum / (kRes * kSub * kRes * kSub);
-  const ReferenceFrame reference = f.reference_estimate(64);
-  const double mean = mean_green(reference.mean.specular);
+  const ReferenceFrame reference = f.reference_estimate(1024);
+  const double mean = mean_green(reference.mean.specular), noise = reference.relative_energy_error(true);
   const double alpha = m.normal_glints->masking_alpha;
   const double smooth = beckmann_specular_cos(wo, wi, alpha);
   std::printf("bumpy map from afar: reference mean %.5f (relative error %.4f), map average %.5f, smooth Beckmann(%.4f) %.5f\n",
-              mean, reference.relative_energy_error(true), truth, alpha, smooth);
-  EXPECT_NEAR(mean / truth, 1.0, 0.02);
+              mean, noise, truth, alpha, smooth);
+  EXPECT_NEAR(mean / truth, 1.0, std::max(0.005, 4 * noise));  // measured: 0.03%, noise 0.02%
+  // The smooth limit is only approximate (the map's slopes are not exactly Beckmann, and sigma_r
+  // adds in projected normals, not slopes): measured 2.6% above the map's average.
+  EXPECT_NEAR(smooth / truth, 1.0, 0.05);
 }
 
 // A constant tilted map under a sun 3 degrees wide (about the lobe's width): the reference's MIS of
@@ -198,8 +202,8 @@ TEST(NormalGlintsReference, ConstantMapUnderASunIsTheQuadratureOverTheSun) {
 }
 
 // Random quads, disks and spheres crossing the horizon over a bumpy normal-map-glints plane and
-// sphere: the reference and the methods that shade the material as normal-mapped Beckmann are
-// finite and non-negative everywhere.
+// sphere: the reference is finite and non-negative everywhere (every method on this material:
+// Images/EveryMethodOnBuiltinScene.IsFinite/normal_glints_noise).
 TEST(NormalGlintsReference, NoNanForRandomLightsCrossingTheHorizon) {
   std::mt19937 rng(16);
   std::uniform_real_distribution<double> u01(0.0, 1.0);
@@ -217,15 +221,13 @@ TEST(NormalGlintsReference, NoNanForRandomLightsCrossingTheHorizon) {
     add_random_area_lights(scene, rng, trial);
     scene.point_light({0.3, 1.5, 0.5}, 2.0);
     SceneFixture f(scene);
-    std::vector<std::pair<std::string, Frame>> frames{{"reference", f.reference(4, 4)}};
-    for (const char* id : {"conventional", "lean", "toksvig"}) frames.emplace_back(id, f.method(id));
-    for (const auto& [id, frame] : frames)
-      for (const Image* image : {&frame.total, &frame.specular})
-        for (int y = 0; y < image->height(); ++y)
-          for (int x = 0; x < image->width(); ++x) {
-            const glm::vec3 p = image->at(x, y);
-            ASSERT_TRUE(std::isfinite(p.r) && std::isfinite(p.g) && std::isfinite(p.b) && p.r >= 0.0f)
-                << id << " trial " << trial << " pixel " << x << ", " << y;
-          }
+    const Frame frame = f.reference(4, 4);
+    for (const Image* image : {&frame.total, &frame.specular})
+      for (int y = 0; y < image->height(); ++y)
+        for (int x = 0; x < image->width(); ++x) {
+          const glm::vec3 p = image->at(x, y);
+          ASSERT_TRUE(std::isfinite(p.r) && std::isfinite(p.g) && std::isfinite(p.b) && p.r >= 0.0f)
+              << "trial " << trial << " pixel " << x << ", " << y;
+        }
   }
 }

@@ -5,7 +5,7 @@
 #                                      cached, so a second run takes minutes)
 #   tools/make-results.sh SECTION      one section, spliced into docs/results.md between its
 #                                      markers: ground-truth, aa, podee, glints, binomial-glints,
-#                                      area-lights, area-glints, speed
+#                                      area-lights, area-glints, prefiltered-glints, speed
 # It installs what it uses (jq, ffmpeg) and builds what it needs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -461,6 +461,8 @@ binomial_glints_section() {
 
 # Glints under area lights: tools/results/area-glints.sh.
 source tools/results/area-glints.sh
+# Prefiltered glints (deng2022, yan2016): tools/results/prefiltered-glints.sh.
+source tools/results/prefiltered-glints.sh
 
 # A glossy mirror-coloured plane and sphere (f0 = 1, no diffuse) of GGX roughness $2 under one light
 # of kind $1 (quad, disk, sphere) that crosses the sphere's horizon: area_light_scene KIND ALPHA.
@@ -612,7 +614,7 @@ header() {
 # Prints a section between its markers.
 section() { echo "<!-- section:$1 -->"; "${1//-/_}_section"; echo "<!-- /section:$1 -->"; }
 
-sections="ground-truth aa podee glints binomial-glints area-lights area-glints speed"
+sections="ground-truth aa podee glints binomial-glints area-lights area-glints prefiltered-glints speed"
 if [[ $# -gt 0 && "$1" != all ]]; then
   [[ " $sections " == *" $1 "* ]] || { echo "make-results: unknown section '$1'; allowed: all $sections" >&2; exit 2; }
   grep -q "^<!-- section:$1 -->\$" docs/results.md ||

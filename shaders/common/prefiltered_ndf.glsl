@@ -35,6 +35,9 @@ bool pndfPresent(int material) { return material >= 0 && pndfRecords[material] !
 
 uint pndfLevelWord(PndfHeader h, int level, uint field) { return pndfRecords[h.at + 12u + 8u * uint(level) + field]; }
 
+// The footprint sigma (texels) of the pyramid's first level.
+float pndfFirstSigma(int material) { return uintBitsToFloat(pndfLevelWord(pndfHeader(material), 0, 5u)); }
+
 // Whether block `bit` of footprint f is kept, and the float index of its row of the long factor.
 bool pndfBlockRow(PndfHeader h, uint f, int bit, out uint row) {
   const uint at = h.footprints + 4u * f;

@@ -2,7 +2,9 @@
 // time: the pixel footprint's NDF read from the material's CP-compressed pyramid of NDF images
 // (common/prefiltered_ndf.glsl) instead of summed over the map's elements as `yan2016` does.
 // Delta lights: a point query at the half vector; lights with extent: a box query over the
-// light's half-vector box. Cost independent of the footprint and of the light's size. Other
+// light's half-vector box. Cost independent of the footprint and of the light's size; footprints
+// finer than the pyramid's first level are summed over the map's elements as yan2016 does (the
+// paper's switch, sec. 5.1), at a cost bounded by that level's size. Other
 // materials are shaded as by `conventional` (lights with extent by LTC).
 // Descriptor: src/shading/methods/deng2022.cpp; docs/methods.md#deng2022.
 #include "common/lobe.glsl"
@@ -16,10 +18,18 @@ vec2 gFootprintCentre;  // texels of the map
 float gFootprintSigma;  // texels: the isotropic footprint of the same area
 float gMaskingAlpha;
 vec3 gDiffuseNormal;  // the map's filtered normal in the macro frame, for Lambert
+// Footprints finer than the pyramid's first level: Yan 2016's sum over the elements (k = 1), as
+// the paper does (sec. 5.1); its loop is empty (count 0) where the pyramid answers.
+bool gBelowPyramid;
+PositionNormalFootprint gElements;
 
-float normalGlintsDensity(vec2 s) { return pndfDensity(uMaterial, gFootprintCentre, gFootprintSigma, s); }
+float normalGlintsDensity(vec2 s) {
+  return gBelowPyramid ? positionNormalDensity(uNormalMap, gElements, 1, s)
+                       : pndfDensity(uMaterial, gFootprintCentre, gFootprintSigma, s);
+}
 float normalGlintsBoxMean(vec2 lo, vec2 hi) {
-  return pndfRangeMean(uMaterial, gFootprintCentre, gFootprintSigma, lo, hi);
+  return gBelowPyramid ? positionNormalBoxMean(uNormalMap, gElements, 1, lo, hi)
+                       : pndfRangeMean(uMaterial, gFootprintCentre, gFootprintSigma, lo, hi);
 }
 #include "common/normal_glints_shading.glsl"
 #endif
@@ -34,7 +44,14 @@ void prepareSurface(inout Surface s) {
   // The pyramid holds isotropic footprints: the one of the same area, sigma^2 = sqrt(det Sigma_p).
   gFootprintSigma = sqrt(sqrt(max(determinant(sigmaP), 0.0)));
   gFootprintCentre = fract(s.uv) * vec2(size);
-  gMaskingAlpha = materials[uMaterial].glints.y;
+  vec4 glints = materials[uMaterial].glints;  // x: sigma_r, y: masking alpha
+  gMaskingAlpha = glints.y;
+  // Below sigma_0 the elements within 3 sigma_0 (plus the element's own extent) are all a footprint
+  // can reach: a bounded loop, (6 sigma_0 + 3)^2 elements at most.
+  float sigma0 = pndfFirstSigma(uMaterial);
+  gBelowPyramid = param_small_footprints < 0.5 && gFootprintSigma < sigma0;
+  gElements = positionNormalFootprint(gFootprintCentre, sigmaP, size, 1, glints.x, 3.0 * sigma0 + 1.5);
+  if (!gBelowPyramid) gElements.count = ivec2(0);
 #endif
 }
 

@@ -25,6 +25,9 @@ struct ParamDecl {
   /// The precomputed tables each choice needs besides the method's own (indexed like `choices`;
   /// empty: none), made resident only when that choice is rendered.
   std::vector<std::vector<std::string>> choice_tables = {};
+  /// A setting of the data the renderer prepares for the method (deng2022's precompute), read on
+  /// the host and never by the module: no uniform is generated for it.
+  bool host_only = false;
 
   /// "0 .. 1", or "a|b|c" for an enumeration.
   [[nodiscard]] std::string allowed() const;

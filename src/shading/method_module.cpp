@@ -86,7 +86,10 @@ std::string generated_module_source(const MethodDescriptor& method, const std::s
                          " itself; parameter uniforms are generated from the descriptor's ParamDecls: remove the "
                          "declaration");
   for (const ParamDecl& p : method.params)
-    if (!uses.read.contains(p.name))
+    if (p.host_only && uses.read.contains(p.name))
+      throw RuntimeFailure(where + " reads param_" + p.name + ", a host-only parameter (ParamDecl::host_only): the "
+                           "module cannot see it");
+    else if (!p.host_only && !uses.read.contains(p.name))
       throw RuntimeFailure(where + " never reads parameter '" + p.name + "' (param_" + p.name +
                            ") that its descriptor declares; use it in the module or remove the declaration");
   for (const std::string& name : uses.read)
@@ -100,6 +103,7 @@ std::string generated_module_source(const MethodDescriptor& method, const std::s
   std::string out = "// Generated from the descriptor of method '" + method.id +
                     "' (shading/method_module.hpp): its parameters, then its module.\n";
   for (const ParamDecl& p : method.params) {
+    if (p.host_only) continue;
     if (p.compile_time)
       out += "const float " + std::string(kParamPrefix) + p.name + " = " +
              std::to_string(compile_time_choice(p, values)) + ".0;  // " + p.choices[compile_time_choice(p, values)] +

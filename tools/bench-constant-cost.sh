@@ -50,7 +50,7 @@ run() {  # run LABEL TILES LIGHT
   scene "$2" "$3" > "$work/s.toml"
   "$B" bench --scene "$work/s.toml" --methods "$methods" --bench-frames "$frames" --warmup 1 \
     --param yan2016.max_radius=128 --frames 1 -o "$work/$1" > /dev/null
-  printf '| %s | %s | %s | %s |\n' "$1" "$(ms "$work/$1/bench.json" conventional)" \
+  LC_ALL=C printf '| %s | %.2f | %.2f | %.2f |\n' "$1" "$(ms "$work/$1/bench.json" conventional)" \
     "$(ms "$work/$1/bench.json" deng2022)" "$(ms "$work/$1/bench.json" yan2016)"
 }
 

@@ -122,7 +122,7 @@ prefiltered_glints_section() {
   echo "### Constant cost"
   echo
   echo "\`tools/bench-constant-cost.sh build/release/glintlab 64 2\` on this machine (llvmpipe: times are"
-  echo "CPU-rasteriser times; the GPU's are in the next paragraph when a GPU was measured):"
+  echo "CPU-rasteriser times; an NVIDIA H200's, at 512x512, are in docs/gpu-timings.md):"
   echo
   tools/bench-constant-cost.sh "$B" 64 2
   echo

@@ -18,6 +18,16 @@
 #include "common/lights.glsl"
 #include "common/surface.glsl"
 
+// Puts the surface back into its macro (vertex) frame, where the model's P lives (over the
+// projected normals of the map's own tangent frame), and returns the map's filtered normal, about
+// which the diffuse part is Lambert (as in the reference).
+vec3 normalGlintsMacroFrame(inout Surface s) {
+  vec3 diffuseNormal = normalize(s.mappedNormal);
+  s.anisotropyRotation = 0.0;
+  setShadingNormal(s, s.vertexNormal);
+  return diffuseNormal;
+}
+
 // F G2 P / (4 v.z): the specular term times l.z, per unit irradiance, for a given P at h.
 vec3 normalGlintsSpecularCos(vec3 wo, vec3 wi, vec3 h, float P, vec3 f0, float maskingAlpha) {
   if (wo.z <= 0.0 || wi.z <= 0.0 || h.z <= 0.0) return vec3(0.0);

@@ -36,9 +36,7 @@ float normalGlintsBoxMean(vec2 lo, vec2 hi) {
 
 void prepareSurface(inout Surface s) {
 #if MATERIAL_NORMAL_GLINTS
-  gDiffuseNormal = normalize(s.mappedNormal);
-  s.anisotropyRotation = 0.0;
-  setShadingNormal(s, s.vertexNormal);
+  gDiffuseNormal = normalGlintsMacroFrame(s);
   ivec2 size = textureSize(uNormalMap, 0);
   mat2 sigmaP = pixelFootprintCovariance(s.dUVdx, s.dUVdy, size, param_footprint_sigma);
   // The pyramid holds isotropic footprints: the one of the same area, sigma^2 = sqrt(det Sigma_p).

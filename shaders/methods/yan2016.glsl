@@ -36,10 +36,7 @@ float truncationRadius() {
 
 void prepareSurface(inout Surface s) {
 #if MATERIAL_NORMAL_GLINTS
-  // The macro frame: the model's P is over the projected normals of the map's own tangent frame.
-  gDiffuseNormal = normalize(s.mappedNormal);
-  s.anisotropyRotation = 0.0;
-  setShadingNormal(s, s.vertexNormal);
+  gDiffuseNormal = normalGlintsMacroFrame(s);
   ivec2 size = textureSize(uNormalMap, 0);
   mat2 sigmaP = pixelFootprintCovariance(s.dUVdx, s.dUVdy, size, param_footprint_sigma);
   vec4 glints = materials[uMaterial].glints;  // x: sigma_r, y: masking alpha

@@ -29,7 +29,7 @@ double box_integral(const glm::dvec2& mean, const glm::dmat2& cov, glm::dvec2 lo
                                        0.8650633666889845, 0.9739065285171717};
   static constexpr double kWeights[5] = {0.2955242247147529, 0.2692667193099963, 0.2190863625159820,
                                          0.1494513491505806, 0.0666713443086881};
-  const double sx = std::sqrt(cov[0][0]), sy = std::sqrt(cov[1][1]);
+  const double sx = std::sqrt(cov[0][0]);
   const double a = std::max(lo.x, mean.x - 5 * sx), b = std::min(hi.x, mean.x + 5 * sx);
   if (!(a < b)) return 0.0;
   const double slope = cov[0][1] / cov[0][0];  // E[y | x] = mean.y + slope (x - mean.x)

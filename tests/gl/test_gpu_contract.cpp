@@ -68,6 +68,8 @@ TEST(GpuContract, GeneratedDefinesAreTheCppConstants) {
       {"FRAME_BLOCK_BINDING", kFrameBlockBinding},
       {"LIGHT_BLOCK_BINDING", kLightBlockBinding},
       {"MATERIAL_BLOCK_BINDING", kMaterialBlockBinding},
+      {"PREFILTERED_NDF_RECORDS_BINDING", kPrefilteredNdfRecordsBinding},
+      {"PREFILTERED_NDF_VALUES_BINDING", kPrefilteredNdfValuesBinding},
       {"NORMAL_MAP_UNIT", kNormalMapUnit},
       {"SLOPE_MOMENTS_UNIT", kSlopeMomentsUnit},
       {"SLOPE_CROSS_MOMENT_UNIT", kSlopeCrossMomentUnit},

@@ -12,42 +12,13 @@
 
 #include "core/metrics.hpp"
 #include "gl_fixture.hpp"
+#include "normal_glints_floor.hpp"
 #include "random_area_lights.hpp"
 
 using namespace glintlab;
 using namespace glintlab::test;
 
 namespace {
-
-constexpr float kFootprint = 0.5f;  // the method's default footprint_sigma and the reference's filter
-
-// A receding normal-map-glints floor (a 64^2 bumps map, `tiling` repeats over the 4 m plane) under
-// a point light, or a sphere and a disk light.
-TestScene floor_scene(double tiling, bool area_lights, int width = 48, int height = 32) {
-  TestScene s;
-  s.film(width, height)
-      .camera({0, 0.6, 1.6}, {0, 0, -0.8}, 40)
-      .material("steel", {{"type", "normal-map-glints"},
-                          {"intrinsic_roughness", 0.02},
-                          {"f0", 0.9},
-                          {"normal_map", TomlKeys{{"generator", "bumps"}, {"resolution", 64}, {"alpha", 0.25},
-                                                  {"waves", 48}, {"max_frequency", 8}, {"seed", 3}}},
-                          {"normal_map_tiling", tiling}})
-      .plane("steel", {{"size", 4}});
-  if (area_lights)
-    s.sphere_light({0.4, 0.9, -1.6}, 0.08, {300, 300, 300}, {{"visible", false}})
-        .disk_light({-0.6, 0.7, -1.2}, {0.3, -1, 0.4}, 0.1, {200, 250, 300}, {{"visible", false}});
-  else
-    s.point_light({0.3, 1.0, -1.8}, 3);
-  return s;
-}
-
-ReferenceFrame filtered_reference(SceneFixture& f, int spp) {
-  ReferenceSettings settings;
-  settings.spp = spp;
-  settings.filter = PixelFilter::gaussian(kFootprint);
-  return f.reference_at(f.scene.camera, f.scene.film.width, f.scene.film.height, settings);
-}
 
 struct Errors {
   double yan, conventional, lean, noise, energy, energy_noise;
@@ -69,8 +40,8 @@ TEST(Yan2016, ConvergesToTheGaussianFilteredReference) {
   // About two texels a pixel: with 2 x 2 elements per texel, closer than the filtered (lean) and the
   // unfiltered (conventional) shadings, and closer than with one element per texel (the elements'
   // linearised normals are the model's error: docs/methods.md#yan2016).
-  SceneFixture near(floor_scene(2.0, false));
-  const ReferenceFrame near_ref = filtered_reference(near, 64);
+  SceneFixture near(normal_glints_floor(2.0, false));
+  const ReferenceFrame near_ref = footprint_filtered_reference(near, 64);
   const Errors one = errors_of(near, near_ref), two = errors_of(near, near_ref, {{"elements_per_texel", "2"}});
   print("near, k = 1", one);
   print("near, k = 2", two);
@@ -79,8 +50,8 @@ TEST(Yan2016, ConvergesToTheGaussianFilteredReference) {
   EXPECT_LT(two.yan, 0.25 * two.conventional);
   EXPECT_NEAR(two.energy, 1.0, 0.05 + 3 * two.energy_noise);
   // Tens of texels a pixel: the footprint's distribution instead of the pixel centre's normal.
-  SceneFixture far(floor_scene(12.0, false, 32, 20));
-  const Errors e = errors_of(far, filtered_reference(far, 256));
+  SceneFixture far(normal_glints_floor(12.0, false, 32, 20));
+  const Errors e = errors_of(far, footprint_filtered_reference(far, 256));
   print("far, k = 1", e);
   EXPECT_LT(e.yan, 0.25 * e.conventional);
   EXPECT_NEAR(e.energy, 1.0, 0.05 + 3 * e.energy_noise);
@@ -88,8 +59,8 @@ TEST(Yan2016, ConvergesToTheGaussianFilteredReference) {
 
 TEST(Yan2016, TheReferencesFootprintIsTheClosest) {
   // The same method with a footprint narrower or wider than the reference's filter is farther.
-  SceneFixture f(floor_scene(8.0, false, 32, 20));
-  const Image ref = filtered_reference(f, 256).mean.total;
+  SceneFixture f(normal_glints_floor(8.0, false, 32, 20));
+  const Image ref = footprint_filtered_reference(f, 256).mean.total;
   const double matched = rmse(f.method("yan2016").total, ref);
   const double narrow = rmse(f.method("yan2016", {{"footprint_sigma", "0.2"}}).total, ref);
   const double wide = rmse(f.method("yan2016", {{"footprint_sigma", "1.25"}}).total, ref);
@@ -99,8 +70,8 @@ TEST(Yan2016, TheReferencesFootprintIsTheClosest) {
 }
 
 TEST(Yan2016, LightsWithExtentThroughTheirHalfVectorBox) {
-  SceneFixture f(floor_scene(2.0, true, 32, 20));
-  const Errors e = errors_of(f, filtered_reference(f, 64), {{"elements_per_texel", "2"}});
+  SceneFixture f(normal_glints_floor(2.0, true, 32, 20));
+  const Errors e = errors_of(f, footprint_filtered_reference(f, 64), {{"elements_per_texel", "2"}});
   print("area lights, near, k = 2", e);
   EXPECT_LT(e.yan, 0.25 * e.conventional);
   EXPECT_LT(e.yan, 0.6 * e.lean);
@@ -119,7 +90,7 @@ TEST(Yan2016, OtherMaterialsAreShadedAsConventional) {
 TEST(Yan2016, NoNanForRandomLights) {
   std::mt19937 rng(16);
   for (int trial = 0; trial < 2; ++trial) {
-    TestScene s = floor_scene(trial == 0 ? 2.0 : 32.0, false, 24, 16);
+    TestScene s = normal_glints_floor(trial == 0 ? 2.0 : 32.0, false, 24, 16);
     add_random_area_lights(s, rng, trial);
     SceneFixture f(s);
     for (const char* k : {trial == 0 ? "1" : "2"}) {

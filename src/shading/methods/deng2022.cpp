@@ -1,4 +1,5 @@
 // Descriptor of `deng2022`: the footprint's NDF from a CP-compressed pyramid of NDF images (Deng et al. 2022).
+#include "shading/methods/shared_params.hpp"
 #include "shading/registry.hpp"
 
 namespace glintlab {
@@ -21,14 +22,14 @@ MethodDescriptor deng2022_method() {
                   "Prefiltering of Glinty Appearance Using Tensor Decomposition, ACM TOG 41(2), 2022",
       .summary = "On normal-map-glints materials, the NDF of the pixel's footprint comes from a precomputed pyramid "
                  "of NDF images (Yan 2016's P-NDF of Gaussian footprints on a grid per level, sigma doubling per "
-                 "level) cut into angular blocks, each group of blocks CP-decomposed; a point query for delta "
-                 "lights and a box query through the factors' prefix sums for lights with extent, trilinear "
-                 "across footprint centres and levels: a cost independent of the footprint and of the light. The "
+                 "level) cut into angular blocks, each group of blocks CP-decomposed, queried with the isotropic "
+                 "footprint of the pixel's footprint's area (finer than the first level: yan2016's element sum); a "
+                 "point query for delta lights and a box query through the factors' prefix sums for lights with "
+                 "extent, trilinear across footprint centres and levels: a cost independent of the footprint and of "
+                 "the light. The "
                  "pyramid is precomputed on first use per map and settings and cached. Other materials are "
                  "shaded as by conventional (lights with extent by LTC).",
-      .params = {{"footprint_sigma", 0.5f, 0.05f, 4.0f,
-                  "standard deviation of the pixel's Gaussian footprint in pixels (as yan2016's; the pyramid "
-                  "stores isotropic footprints: the one of the same area is queried)"},
+      .params = {footprint_sigma_param(),
                  {"small_footprints", 0, 0, 1,
                   "footprints finer than the pyramid's first level: yan2016 (summed over the map's elements, as "
                   "the paper does; bounded by that level's size) or clamp (the first level's NDF: blurred)",

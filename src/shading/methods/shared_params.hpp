@@ -72,6 +72,14 @@ inline ParamDecl binomial_remaining_count_param() {
           /*compile_time=*/true};
 }
 
+/// The pixel's Gaussian footprint of the methods on normal-map-glints materials (yan2016, deng2022).
+inline ParamDecl footprint_sigma_param() {
+  return {"footprint_sigma", 0.5f, 0.05f, 4.0f,
+          "standard deviation of the pixel's Gaussian footprint in pixels, mapped to the normal map's texels "
+          "by the uv Jacobian (0.5: about a pixel's box; the reference's --reference-filter gaussian:0.5 "
+          "matches it)"};
+}
+
 inline constexpr const char* kChermain2020Citation =
     "X. Chermain, B. Sauvage, J.-M. Dischler, C. Dachsbacher, Procedural Physically based BRDF for Real-Time "
     "Rendering of Glints, Pacific Graphics 2020 (CGF 39(7))";

@@ -18,9 +18,7 @@ MethodDescriptor yan2016_method() {
                  "mean over the light's half-vector region as an axis-aligned box. The truncation box is at most "
                  "max_radius texels (larger footprints are shrunk to fit). Other materials are shaded as by "
                  "conventional (lights with extent by LTC).",
-      .params = {{"footprint_sigma", 0.5f, 0.05f, 4.0f,
-                  "standard deviation of the pixel's Gaussian footprint in pixels (0.5: about a pixel's box; the "
-                  "reference's --reference-filter gaussian:0.5 matches it)"},
+      .params = {footprint_sigma_param(),
                  {"max_radius", 32.0f, 1.0f, 128.0f,
                   "largest half extent of the element search box in texels: a footprint whose 3-sigma box is "
                   "larger is shrunk to fit (under-blurred); the cost is O(max_radius^2 k^2) per light, and the "

@@ -157,6 +157,20 @@ float gaussianBoxMean(vec2 mean, mat2 cov, vec2 lo, vec2 hi) {
   return sum * share * 0.3989422804 / sx;
 }
 
+// A truncation radius (texels) within llvmpipe's 65535 loop iterations per invocation: at most
+// maxRadius, and the element loops of all the scene's lights together under 60000, (2 r k + 1)^2
+// elements per light. Applied on every driver, so that images agree. Needs the forward pass's
+// LIGHT_RANGES (a method module's context; absent in the tests' compute harness).
+#ifdef LIGHT_RANGES
+float positionNormalRadiusBudget(float maxRadius, const int k) {
+  const ivec2 ranges[LIGHT_KIND_COUNT] = LIGHT_RANGES;
+  int lights = 0;
+  for (int i = 0; i < LIGHT_KIND_COUNT; ++i) lights += ranges[i].y - ranges[i].x;
+  float perLight = 60000.0 / float(max(lights, 1));
+  return min(maxRadius, (floor(sqrt(perLight)) - 1.0) / (2.0 * float(k)));
+}
+#endif
+
 // sum_e w_e X_e / sum_e w_e over the footprint's elements, where X_e is the element's density
 // N2(s; mean_e, cov_e) at s = lo (`box` false), or its mean over the box [lo, hi] (`box` true).
 // One loop over a flat index with a per-pixel trip count (never unrolled; llvmpipe counts every

@@ -45,10 +45,11 @@ void prepareSurface(inout Surface s) {
   vec4 glints = materials[uMaterial].glints;  // x: sigma_r, y: masking alpha
   gMaskingAlpha = glints.y;
   // Below sigma_0 the elements within 3 sigma_0 (plus the element's own extent) are all a footprint
-  // can reach: a bounded loop, (6 sigma_0 + 3)^2 elements at most.
+  // can reach: a bounded loop, (6 sigma_0 + 3)^2 elements at most, within llvmpipe's loop budget.
   float sigma0 = pndfFirstSigma(uMaterial);
   gBelowPyramid = param_small_footprints < 0.5 && gFootprintSigma < sigma0;
-  gElements = positionNormalFootprint(gFootprintCentre, sigmaP, size, 1, glints.x, 3.0 * sigma0 + 1.5);
+  gElements = positionNormalFootprint(gFootprintCentre, sigmaP, size, 1, glints.x,
+                                       positionNormalRadiusBudget(3.0 * sigma0 + 1.5, 1));
   if (!gBelowPyramid) gElements.count = ivec2(0);
 #endif
 }

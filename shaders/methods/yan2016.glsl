@@ -22,16 +22,6 @@ float normalGlintsBoxMean(vec2 lo, vec2 hi) {
 }
 #include "common/normal_glints_shading.glsl"
 
-// The truncation radius in texels: max_radius, and within llvmpipe's 65535 loop iterations per
-// invocation: the element loops of all the scene's lights together stay under 60000, (2 r k + 1)^2
-// elements per light. Applied on every driver, so that images agree.
-float truncationRadius() {
-  const ivec2 ranges[LIGHT_KIND_COUNT] = LIGHT_RANGES;
-  int lights = 0;
-  for (int i = 0; i < LIGHT_KIND_COUNT; ++i) lights += ranges[i].y - ranges[i].x;
-  float perLight = 60000.0 / float(max(lights, 1));
-  return min(param_max_radius, (floor(sqrt(perLight)) - 1.0) / (2.0 * float(ELEMENTS_PER_TEXEL)));
-}
 #endif
 
 void prepareSurface(inout Surface s) {
@@ -41,7 +31,7 @@ void prepareSurface(inout Surface s) {
   mat2 sigmaP = pixelFootprintCovariance(s.dUVdx, s.dUVdy, size, param_footprint_sigma);
   vec4 glints = materials[uMaterial].glints;  // x: sigma_r, y: masking alpha
   gFootprint = positionNormalFootprint(fract(s.uv) * vec2(size), sigmaP, size, ELEMENTS_PER_TEXEL, glints.x,
-                                       truncationRadius());
+                                       positionNormalRadiusBudget(param_max_radius, ELEMENTS_PER_TEXEL));
   gMaskingAlpha = glints.y;
 #endif
 }

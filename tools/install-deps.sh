@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages glintlab needs to build, test and run, if any are missing.
 # Usage: tools/install-deps.sh          what building, testing and running need (ffmpeg: animate's MP4s;
-#                                       clang and its libFuzzer runtime: the fuzz targets, docs/fuzzing.md)
+#                                       clang and its libFuzzer runtime: the fuzz targets, docs/fuzzing.md;
+#                                       GLFW and Dear ImGui: the viewer; xvfb: its test on a virtual display;
+#                                       chromium: the HTML report's test in a real browser)
 #        tools/install-deps.sh results  also what tools/make-results.sh uses (jq)
 # (as root, or with sudo available)
 set -euo pipefail
@@ -12,8 +14,10 @@ packages=(
   libglm-dev libopenexr-dev libstb-dev libtinygltf-dev libtinyobjloader-dev
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libeigen3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libglfw3-dev libimgui-dev
   clang libclang-rt-dev
   ffmpeg
+  xvfb xauth chromium
 )
 if [[ "${1:-}" == results ]]; then packages+=(jq); fi
 

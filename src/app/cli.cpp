@@ -16,6 +16,8 @@
 #include "scene/scene_loader.hpp"
 #include "shading/method_reference.hpp"
 #include "shading/registry.hpp"
+#include "view/view_command.hpp"
+#include "view/view_script.hpp"
 
 namespace glintlab {
 
@@ -197,6 +199,22 @@ int run_cli(int argc, char** argv) {
   bench->add_option("--warmup", bench_warmup, "untimed frames first")->default_str("3")->check(CLI::Range(0, 1000));
   bench->add_option("-o,--out", bench_o.out, "also write bench.json into this directory");
 
+  CommonOptions view_o;
+  ViewOptions view_options;
+  auto* view = app.add_subcommand("view", "open a window: methods switched live, split/flip against another method or the "
+                                          "reference, magnifier, error map, camera path and free camera (docs/viewer.md)");
+  add_common(view, view_o, false);
+  view->add_option("--compare", view_options.compare, "the second image of split and flip: a method id, or reference")
+      ->default_str("reference");
+  view->add_option("--mode", view_options.mode, "single, split or flip at the start")->default_str("single");
+  view->add_option("--frame", view_options.frame, "frame of the camera path to start on")->default_str("0");
+  view->add_option("--script", view_options.script,
+                   "run commands from FILE, one a frame; the commands:\n" + view_script_reference());
+  view->add_option("--window-width", view_options.window_width, "window width in screen pixels")
+      ->default_str("1280")->check(CLI::Range(320, 16384));
+  view->add_option("--window-height", view_options.window_height, "window height in screen pixels")
+      ->default_str("800")->check(CLI::Range(240, 16384));
+
   auto* methods_cmd = app.add_subcommand("methods", "list every method with its parameters, defaults and ranges");
   bool methods_markdown = false;
   methods_cmd->add_flag("--markdown", methods_markdown,
@@ -266,6 +284,8 @@ int run_cli(int argc, char** argv) {
       prefilter_o.use_cache = !prefilter_no_cache;
       prefilter_o.json = prefilter_json;
       run_prefilter_report(load_scene(prefilter_scene), prefilter_o);
+    } else if (app.got_subcommand("view")) {
+      return run_view(view_o, view_options);
     } else if (app.got_subcommand("bench")) {
       const auto methods = resolve_methods(bench_o.methods, bench_o.params);
       Session session(bench_o, Workload{.methods = 1});

@@ -1,9 +1,11 @@
 #include "core/metrics.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace glintlab {
 
@@ -58,6 +60,17 @@ Image abs_error_map(const Image& test, const Image& ref) {
   for (std::size_t i = 0; i < test.pixel_count(); ++i)
     out.pixels()[i] = glm::vec3(std::abs(luminance(test.pixels()[i]) - luminance(ref.pixels()[i])));
   return out;
+}
+
+float error_percentile(const Image& error_map, double fraction) {
+  if (error_map.empty()) return 0.0f;
+  std::vector<float> values;
+  values.reserve(error_map.pixel_count());
+  for (const glm::vec3& p : error_map.pixels()) values.push_back(p.r);
+  const auto nth = values.begin() + static_cast<std::ptrdiff_t>(std::clamp(fraction, 0.0, 1.0) *
+                                                                  static_cast<double>(values.size() - 1));
+  std::nth_element(values.begin(), nth, values.end());
+  return *nth;
 }
 
 ImageMetrics measure(const Image& total, const Image& specular, const Image& ref_total,

@@ -17,6 +17,9 @@ double max_abs_error(const Image& test, const Image& reference);
 double energy_ratio(const Image& test, const Image& reference);
 /// Per-pixel |luminance(test) - luminance(reference)| in the red channel (for error maps).
 Image abs_error_map(const Image& test, const Image& reference);
+/// The value below which `fraction` of an error map's pixels lie (0.995 scales the error maps:
+/// a few outliers do not wash out the rest); 0 for an empty map.
+float error_percentile(const Image& error_map, double fraction);
 
 /// Everything `compare` reports for one method.
 struct ImageMetrics {

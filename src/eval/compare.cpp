@@ -102,16 +102,9 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
   for (std::size_t i = 0; i < methods.size(); ++i) {
     rows.push_back({methods[i].method->id, measure(frames[i].total, frames[i].specular, reference.total, reference.specular)});
     const Image error = abs_error_map(frames[i].total, reference.total);
-    std::vector<float> sorted;
-    sorted.reserve(error.pixel_count());
-    for (std::size_t p = 0; p < error.pixel_count(); ++p) {
-      error_sum.pixels()[p] += error.pixels()[p];
-      sorted.push_back(error.pixels()[p].r);
-    }
+    for (std::size_t p = 0; p < error.pixel_count(); ++p) error_sum.pixels()[p] += error.pixels()[p];
     // One colour scale for all maps (the largest 99.5th percentile) so they compare at a glance.
-    auto nth = sorted.begin() + static_cast<std::ptrdiff_t>(0.995 * static_cast<double>(sorted.size() - 1));
-    std::nth_element(sorted.begin(), nth, sorted.end());
-    error_scale = std::max(error_scale, *nth);
+    error_scale = std::max(error_scale, error_percentile(error, 0.995));
   }
   if (error_scale <= 0.0f) error_scale = 1.0f;
   const auto regions = worst_regions(error_sum, std::max(16, std::min(session.width(), session.height()) / 8), 3);

@@ -97,7 +97,7 @@ Scene load_scene_showing_progress(const std::string& spec, bool show_progress) {
 
 }  // namespace
 
-Session::Session(const CommonOptions& options, std::optional<Workload> workload)
+Session::Session(const CommonOptions& options, std::optional<Workload> workload, const ContextFactory& make_context)
     : options_(options),
       scene_(load_scene_showing_progress(options.scene.empty() ? kDefaultScene : options.scene, !options.quiet)),
       cache_(options.no_cache ? std::filesystem::path() : ReferenceCache::default_directory()) {
@@ -132,7 +132,7 @@ Session::Session(const CommonOptions& options, std::optional<Workload> workload)
   workload->progressive = workload->reference && options_.spp_auto;
   if (const auto available = available_memory())
     require_memory(estimate_run_memory(*workload, width_, height_, scene_), *workload, width_, height_, *available);
-  context_ = GlContext::create_headless();
+  context_ = make_context();
   device_ = context_->info().renderer;
   gpu_scene_ = std::make_unique<GpuScene>(
       scene_, TableCache(default_table_cache_directory(), terminal_table_observer(!options.quiet)));
@@ -157,10 +157,10 @@ Session::Rendered Session::render_with_reference(const std::vector<MethodChoice>
   return r;
 }
 
-ReferenceFrame Session::reference(int frame, const std::vector<const Frame*>& ranked) {
+ReferenceFrame Session::reference(int frame, const std::vector<const Frame*>& ranked, const std::optional<Camera>& at) {
   ReferenceSettings settings = reference_;
   settings.seed = frame;
-  const Camera cam = camera(frame);
+  const Camera cam = at.value_or(camera(frame));
   if (!options_.spp_auto) {
     const auto key = ReferenceCache::key(scene_, cam, width_, height_, settings, *reference_backend_, device_);
     if (auto cached = cache_.load(key)) return *cached;

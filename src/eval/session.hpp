@@ -2,6 +2,7 @@
 // What every command needs: the GL context, the scene on the GPU, a renderer and the reference
 // cache, plus the resolved command-line choices shared by all commands.
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -54,8 +55,11 @@ class Session {
  public:
   /// `workload`: what the command holds at once, checked against the memory available before
   /// any GPU work (InputError when too large); default: every listed method's frame together,
-  /// a reference and compare's outputs.
-  explicit Session(const CommonOptions& options, std::optional<Workload> workload = std::nullopt);
+  /// a reference and compare's outputs. `make_context` makes the GL context everything is drawn
+  /// with: a headless one for the commands, the window's for the viewer (the same renderer).
+  using ContextFactory = std::function<std::unique_ptr<GlContext>()>;
+  explicit Session(const CommonOptions& options, std::optional<Workload> workload = std::nullopt,
+                   const ContextFactory& make_context = &GlContext::create_headless);
 
   [[nodiscard]] const Scene& scene() const { return scene_; }
   [[nodiscard]] int width() const { return width_; }
@@ -63,6 +67,7 @@ class Session {
   [[nodiscard]] int frames() const { return frames_; }
   [[nodiscard]] Camera camera(int frame) const { return scene_.path.at(scene_.camera, frame); }
   Renderer& renderer() { return *renderer_; }
+  GpuScene& gpu_scene() { return *gpu_scene_; }
   ReferenceBackend& reference_backend() { return *reference_backend_; }
   GlContext& context() { return *context_; }
 
@@ -72,7 +77,9 @@ class Session {
   /// With --spp N: N samples per pixel. With --spp auto: passes of kProgressivePassSpp are added
   /// until the reference's noise RMSE is at most noise_fraction times the smallest of the
   /// `ranked` methods' RMSEs and of their nonzero pairwise differences, or max_spp is reached.
-  ReferenceFrame reference(int frame, const std::vector<const Frame*>& ranked = {});
+  /// `at`: another camera than the frame's (the viewer's free camera), with the frame's seed.
+  ReferenceFrame reference(int frame, const std::vector<const Frame*>& ranked = {},
+                           const std::optional<Camera>& at = std::nullopt);
   /// Every method's frame, then the reference ranked by them (methods first: --spp auto sizes the
   /// reference by the differences between them; a NaN anywhere throws before anything is written).
   struct Rendered {

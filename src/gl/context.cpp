@@ -107,6 +107,15 @@ std::unique_ptr<GlContext> GlContext::create_headless() {
   return ctx;
 }
 
+std::unique_ptr<GlContext> GlContext::adopt_current(std::string platform) {
+  if (glGetString(GL_VERSION) == nullptr) throw RuntimeFailure("no OpenGL context is current to adopt");
+  if (epoxy_gl_version() < 45)
+    throw RuntimeFailure("the window's OpenGL context is older than 4.5; install the " + std::string(kPackageHint));
+  std::unique_ptr<GlContext> ctx(new GlContext());
+  ctx->platform_ = std::move(platform);
+  return ctx;
+}
+
 GlContext::~GlContext() {
   auto display = static_cast<EGLDisplay>(display_);
   if (display != EGL_NO_DISPLAY) {

@@ -1,7 +1,8 @@
 #pragma once
 // An OpenGL 4.5 core context with no display, through EGL: the NVIDIA (or other hardware) EGL
 // device when there is one, Mesa's llvmpipe through EGL_PLATFORM_SURFACELESS_MESA otherwise.
-// GLINTLAB_GL=software forces llvmpipe, GLINTLAB_GL=hardware refuses it.
+// GLINTLAB_GL=software forces llvmpipe, GLINTLAB_GL=hardware refuses it. A window's context (the
+// viewer's, made by GLFW) is adopted instead: the same renderer then draws into it.
 #include <memory>
 #include <string>
 
@@ -18,6 +19,10 @@ class GlContext {
  public:
   /// Throws RuntimeFailure naming what is missing and which Debian package provides it.
   static std::unique_ptr<GlContext> create_headless();
+  /// The context current on this thread, owned by someone else (a window): never destroyed here.
+  /// `platform` says what made it (e.g. "GLFW window (X11, GLX)"). Throws RuntimeFailure when no
+  /// context is current or it is older than OpenGL 4.5.
+  static std::unique_ptr<GlContext> adopt_current(std::string platform);
   ~GlContext();
   GlContext(const GlContext&) = delete;
   GlContext& operator=(const GlContext&) = delete;

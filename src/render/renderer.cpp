@@ -148,7 +148,13 @@ Frame Renderer::render(const MethodDescriptor& method, const ParamValues& params
 Frame Renderer::render_module(const std::string& module, const ParamValues& params, const Camera& camera, int width,
                               int height) {
   draw_module(module, params, camera, width, height);
-  return {RenderTarget::read(target_->total(), width, height), RenderTarget::read(target_->specular(), width, height)};
+  return read_frame();
+}
+
+Frame Renderer::read_frame() const {
+  if (!target_) throw RuntimeFailure("Renderer::read_frame: nothing has been drawn yet");
+  const int w = target_->width(), h = target_->height();
+  return {RenderTarget::read(target_->total(), w, h), RenderTarget::read(target_->specular(), w, h)};
 }
 
 }  // namespace glintlab

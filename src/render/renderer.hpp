@@ -55,6 +55,8 @@ class Renderer {
   Frame render(const MethodDescriptor& method, const ParamValues& params, const Camera& camera, int width, int height);
   /// Issues the draws of render() into the internal target without reading back (for timing).
   void draw(const MethodDescriptor& method, const ParamValues& params, const Camera& camera, int width, int height);
+  /// Reads back what the last draw or draw_module drew: render() is draw() then read_frame().
+  [[nodiscard]] Frame read_frame() const;
   /// The same with any shading module in the method slot (e.g. passes/unshaded.glsl).
   void draw_module(const std::string& module, const ParamValues& params, const Camera& camera, int width, int height);
   /// draw_module, read back (e.g. the diagnostics of passes/glint_cells.glsl).

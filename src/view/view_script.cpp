@@ -1,0 +1,200 @@
+#include "view/view_script.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "view/camera_controls.hpp"
+#include "view/viewer.hpp"
+
+namespace glintlab {
+
+namespace {
+
+struct Verb {
+  const char* name;
+  int min_args, max_args;
+  const char* usage;
+};
+
+// clang-format off
+constexpr Verb kVerbs[] = {
+    {"method", 1, 1, "method ID: show method ID (its parameters at their defaults)"},
+    {"compare", 1, 1, "compare ID|reference: the second image of split and flip"},
+    {"mode", 1, 1, "mode single|split|flip"},
+    {"split", 1, 1, "split F: the fraction of the width showing the first method (0 .. 1)"},
+    {"flip", 0, 0, "flip: show the other image of flip mode"},
+    {"param", 1, 1, "param NAME=VALUE: a parameter of the first method"},
+    {"compare-param", 1, 1, "compare-param NAME=VALUE: a parameter of the second method"},
+    {"reset-params", 0, 0, "reset-params: the first method's parameters to their defaults"},
+    {"error-overlay", 1, 2, "error-overlay on|off [OPACITY]: error maps against the reference over the methods"},
+    {"frame", 1, 1, "frame N: frame N of the scene's camera path (back on the path)"},
+    {"next", 0, 0, "next: the next frame of the path"},
+    {"previous", 0, 0, "previous: the previous frame of the path"},
+    {"play", 0, 0, "play: play the camera path"},
+    {"pause", 0, 0, "pause"},
+    {"orbit", 2, 2, "orbit YAW PITCH: orbit the target by degrees (leaves the path)"},
+    {"dolly", 1, 1, "dolly F: move to F times the distance to the target"},
+    {"fly", 3, 3, "fly X Y Z: move by metres right, up, forward"},
+    {"look", 2, 2, "look YAW PITCH: turn the view by degrees"},
+    {"path", 0, 0, "path: back to the scene's camera path"},
+    {"exposure", 1, 1, "exposure STOPS"},
+    {"bloom", 1, 1, "bloom B: star bloom strength (0 .. 1)"},
+    {"continuous", 1, 1, "continuous on|off: re-render every frame (frame times)"},
+    {"magnify", 1, 3, "magnify X Y ZOOM | magnify off: pin the magnifier on film pixel (X, Y)"},
+    {"screenshot", 1, 1, "screenshot PATH: the first method's frame as 'glintlab render -o PATH' writes it"},
+    {"window-screenshot", 1, 1, "window-screenshot FILE.png: the whole window, controls included"},
+    {"wait", 1, 1, "wait N: let N frames pass"},
+    {"quit", 0, 0, "quit"},
+};
+// clang-format on
+
+const Verb* find_verb(const std::string& name) {
+  for (const Verb& v : kVerbs)
+    if (name == v.name) return &v;
+  return nullptr;
+}
+
+std::string where(const ScriptCommand& c) { return c.file.string() + ":" + std::to_string(c.line) + ": "; }
+
+float number(const ScriptCommand& c, std::size_t i) {
+  const std::string& text = c.args.at(i);
+  try {
+    std::size_t used = 0;
+    const float v = std::stof(text, &used);
+    if (used == text.size() && std::isfinite(v)) return v;
+  } catch (const std::exception&) {
+  }
+  throw InputError(where(c) + c.verb + ": '" + text + "' is not a number; usage: " + find_verb(c.verb)->usage);
+}
+
+int integer(const ScriptCommand& c, std::size_t i) {
+  const float v = number(c, i);
+  if (v != static_cast<float>(static_cast<int>(v)))
+    throw InputError(where(c) + c.verb + ": '" + c.args[i] + "' is not a whole number; usage: " + find_verb(c.verb)->usage);
+  return static_cast<int>(v);
+}
+
+bool on_off(const ScriptCommand& c, std::size_t i) {
+  if (c.args.at(i) == "on") return true;
+  if (c.args.at(i) == "off") return false;
+  throw InputError(where(c) + c.verb + ": '" + c.args[i] + "'; allowed: on, off");
+}
+
+/// Checks what can be checked before any GL work: the words and numbers of each line.
+void check(const ScriptCommand& c) {
+  const std::string& v = c.verb;
+  if (v == "mode" && c.args[0] != "single" && c.args[0] != "split" && c.args[0] != "flip")
+    throw InputError(where(c) + "mode '" + c.args[0] + "'; allowed: single, split, flip");
+  if ((v == "param" || v == "compare-param") && c.args[0].find('=') == std::string::npos)
+    throw InputError(where(c) + v + " '" + c.args[0] + "': expected NAME=VALUE");
+  if (v == "error-overlay" || v == "continuous") on_off(c, 0);
+  if (v == "error-overlay" && c.args.size() == 2) number(c, 1);
+  if (v == "magnify" && !(c.args.size() == 1 && c.args[0] == "off") && c.args.size() != 3)
+    throw InputError(where(c) + "magnify: usage: " + find_verb(v)->usage);
+  if (v == "magnify" && c.args.size() == 3)
+    for (std::size_t i = 0; i < 3; ++i) integer(c, i);
+  if (v == "frame" || v == "wait") integer(c, 0);
+  if (v == "wait" && integer(c, 0) < 0) throw InputError(where(c) + "wait " + c.args[0] + ": allowed: 0 or more frames");
+  if (v == "split" || v == "dolly" || v == "exposure" || v == "bloom") number(c, 0);
+  if (v == "orbit" || v == "look") number(c, 0), number(c, 1);
+  if (v == "fly") number(c, 0), number(c, 1), number(c, 2);
+  if (v == "window-screenshot" && std::filesystem::path(c.args[0]).extension() != ".png")
+    throw InputError(where(c) + "window-screenshot " + c.args[0] + ": allowed: a .png file name");
+}
+
+WindowRequest run(const ScriptCommand& c, Viewer& viewer) {
+  const std::string& v = c.verb;
+  const auto& a = c.args;
+  WindowRequest request;
+  auto split_param = [&](const std::string& text) {
+    const auto eq = text.find('=');
+    return std::pair(text.substr(0, eq), text.substr(eq + 1));
+  };
+  if (v == "method") viewer.select_method(false, a[0]);
+  else if (v == "compare") a[0] == "reference" ? viewer.compare_with_reference() : viewer.select_method(true, a[0]);
+  else if (v == "mode") viewer.set_mode(a[0] == "single" ? CompareMode::Single : a[0] == "split" ? CompareMode::Split : CompareMode::Flip);
+  else if (v == "split") viewer.set_split(number(c, 0));
+  else if (v == "flip") viewer.flip();
+  else if (v == "param" || v == "compare-param") {
+    const auto [name, value] = split_param(a[0]);
+    viewer.set_param(v == "compare-param", name, value);
+  } else if (v == "reset-params") viewer.reset_params(false);
+  else if (v == "error-overlay") viewer.set_error_overlay(on_off(c, 0), a.size() == 2 ? number(c, 1) : viewer.state().overlay_opacity);
+  else if (v == "frame") {
+    viewer.return_to_path();
+    viewer.set_frame(integer(c, 0));
+  } else if (v == "next") viewer.step_frame(1);
+  else if (v == "previous") viewer.step_frame(-1);
+  else if (v == "play") viewer.set_playing(true);
+  else if (v == "pause") viewer.set_playing(false);
+  else if (v == "orbit") viewer.move_camera(orbit_camera(viewer.camera(), number(c, 0), number(c, 1)));
+  else if (v == "dolly") {
+    if (number(c, 0) <= 0.0f) throw InputError("dolly " + a[0] + ": allowed: a factor above 0");
+    viewer.move_camera(dolly_camera(viewer.camera(), number(c, 0)));
+  } else if (v == "fly") viewer.move_camera(fly_camera(viewer.camera(), {number(c, 0), number(c, 1), number(c, 2)}));
+  else if (v == "look") viewer.move_camera(look_camera(viewer.camera(), number(c, 0), number(c, 1)));
+  else if (v == "path") viewer.return_to_path();
+  else if (v == "exposure") viewer.set_exposure(number(c, 0));
+  else if (v == "bloom") viewer.set_bloom(number(c, 0));
+  else if (v == "continuous") viewer.set_continuous(on_off(c, 0));
+  else if (v == "magnify") {
+    if (a.size() == 1) request.unpin_magnifier = true;
+    else request.magnify = glm::ivec3(integer(c, 0), integer(c, 1), integer(c, 2));
+  } else if (v == "screenshot") {
+    const std::string exr = viewer.screenshot(a[0]);
+    std::printf("screenshot: %s and .png\n", exr.c_str());
+  } else if (v == "window-screenshot") request.window_screenshot = a[0];
+  else if (v == "wait") request.wait_frames = integer(c, 0);
+  else if (v == "quit") request.quit = true;
+  return request;
+}
+
+}  // namespace
+
+std::vector<ScriptCommand> read_view_script(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError("--script " + file.string() + ": cannot be read (no such file, or not readable)");
+  std::vector<ScriptCommand> commands;
+  std::string text;
+  for (int line = 1; std::getline(in, text); ++line) {
+    if (const auto hash = text.find('#'); hash != std::string::npos) text.erase(hash);
+    std::istringstream words(text);
+    ScriptCommand c{file, line, {}, {}};
+    if (!(words >> c.verb)) continue;
+    for (std::string w; words >> w;) c.args.push_back(w);
+    const Verb* verb = find_verb(c.verb);
+    if (!verb) {
+      std::string allowed;
+      for (const Verb& v : kVerbs) allowed += (allowed.empty() ? "" : ", ") + std::string(v.name);
+      throw InputError(where(c) + "unknown command '" + c.verb + "'; allowed: " + allowed);
+    }
+    if (static_cast<int>(c.args.size()) < verb->min_args || static_cast<int>(c.args.size()) > verb->max_args)
+      throw InputError(where(c) + c.verb + " takes " +
+                       (verb->min_args == verb->max_args ? std::to_string(verb->min_args)
+                                                         : std::to_string(verb->min_args) + " to " + std::to_string(verb->max_args)) +
+                       " argument(s), not " + std::to_string(c.args.size()) + "; usage: " + verb->usage);
+    check(c);
+    commands.push_back(std::move(c));
+  }
+  return commands;
+}
+
+WindowRequest run_script_command(const ScriptCommand& command, Viewer& viewer) {
+  try {
+    return run(command, viewer);
+  } catch (const InputError& e) {
+    throw InputError(where(command) + e.what());
+  }
+}
+
+std::string view_script_reference() {
+  std::string text;
+  for (const Verb& v : kVerbs) text += std::string("  ") + v.usage + "\n";
+  return text;
+}
+
+}  // namespace glintlab

@@ -27,7 +27,9 @@ ImTextureID texture_id(GLuint texture) { return reinterpret_cast<ImTextureID>(st
 std::string time_text(const GpuTime& t, bool software) {
   char text[96];
   // On llvmpipe the timer query misses the rasterisation (gl/gpu_timer.hpp): the wall time is the measure.
-  if (software) std::snprintf(text, sizeof text, "%.1f ms wall (GPU timer: %.2f ms, misses llvmpipe's raster)", t.wall_ms, t.gpu_ms);
+  // On llvmpipe the timer query may miss rasterisation done at the read or finish (gl/gpu_timer.hpp):
+  // the wall time is the measure there.
+  if (software) std::snprintf(text, sizeof text, "%.1f ms wall (software; GPU timer %.1f ms)", t.wall_ms, t.gpu_ms);
   else std::snprintf(text, sizeof text, "%.2f ms GPU timer, %.1f ms wall", t.gpu_ms, t.wall_ms);
   return text;
 }
@@ -93,8 +95,8 @@ void ViewPanels::side_panel(Viewer& viewer) {
     }
     if (const ReferenceFrame* r = viewer.reference())
       ImGui::TextWrapped("reference: %d spp, noise RMSE %.3g", r->spp, r->noise_rmse());
-    else if (viewer.needs_reference())
-      ImGui::TextWrapped("reference: rendering (%d spp)...", session.reference_settings().spp);
+    else if (viewer.reference_pending())
+      ImGui::TextWrapped("reference: rendering %d spp, or reading it from the cache...", session.reference_settings().spp);
   }
 
   if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) camera_controls(viewer);
@@ -146,7 +148,7 @@ void ViewPanels::method_controls(Viewer& viewer, bool second_slot) {
     const std::string key = (second_slot ? "B." : "A.") + p.name;
     const auto editing = editing_.find(key);
     float value = deferred && editing != editing_.end() ? editing->second : slot.params.at(p.name);
-    const char* note = p.host_only ? " (precomputes)" : p.compile_time ? " (recompiles)" : "";
+    const char* note = p.host_only ? " [precompute]" : p.compile_time ? " [compile]" : "";
     const std::string label = p.name + note;
     if (!p.choices.empty()) {
       const auto current = static_cast<std::size_t>(value);
@@ -230,6 +232,11 @@ void ViewPanels::picture(Viewer& viewer) {
 void ViewPanels::magnifier(Viewer& viewer, float film_x, float film_y) {
   const int zoom = pinned_ ? std::max(2, pinned_->z) : magnifier_zoom_;
   const float half = kMagnifierSide / static_cast<float>(zoom) / 2.0f;  // film pixels
+  // Where it looks, outlined on the picture.
+  ImGui::GetBackgroundDrawList()->AddRect(
+      ImVec2(image_x_ + (film_x - half) * image_scale_, image_y_ + (film_y - half) * image_scale_),
+      ImVec2(image_x_ + (film_x + half) * image_scale_, image_y_ + (film_y + half) * image_scale_),
+      IM_COL32(255, 210, 60, 200));
   const float w = static_cast<float>(viewer.width()), h = static_cast<float>(viewer.height());
   const ImVec2 uv0((film_x - half) / w, (film_y - half) / h), uv1((film_x + half) / w, (film_y + half) / h);
   const ImGuiIO& io = ImGui::GetIO();

@@ -205,9 +205,17 @@ void Viewer::update() {
     display_dirty_ = true;
   }
   if (needs_reference() && !has_reference()) {
-    reference_ = session_.reference(state_.frame, {&a_->frame}, state_.free_camera);
-    reference_key_ = view_key();
-    display_dirty_ = true;
+    // A reference not in the cache takes a while: the first call shows the methods and says so
+    // (reference_pending), the next one renders it.
+    if (!reference_pending_) {
+      reference_pending_ = true;
+      display_dirty_ = true;
+    } else {
+      reference_ = session_.reference(state_.frame, {&a_->frame}, state_.free_camera);
+      reference_key_ = view_key();
+      reference_pending_ = false;
+      display_dirty_ = true;
+    }
   }
   if (!display_dirty_) return;
 
@@ -218,7 +226,8 @@ void Viewer::update() {
       d = blend_images(d, error_map_display(f.total, truth->total), state_.overlay_opacity);
     return d;
   };
-  if (state_.mode == CompareMode::Single) {
+  const bool second_shown = second_method || truth;
+  if (state_.mode == CompareMode::Single || !second_shown) {
     display_ = shown_image(a_->frame, true);
   } else {
     const bool show_first = state_.mode == CompareMode::Split || !state_.showing_second;

@@ -77,6 +77,8 @@ class Viewer {
   [[nodiscard]] bool needs_reference() const;
   /// Is the reference of the current view already at hand (rendered or in the cache)?
   [[nodiscard]] bool has_reference() const { return reference_ && reference_key_ == view_key(); }
+  /// Needed, not at hand: the next update() renders it (or reads it from the cache).
+  [[nodiscard]] bool reference_pending() const { return reference_pending_; }
 
   /// Renders what changed since the last call (everything, if continuous) and rebuilds the
   /// displayed image and its texture. May take long when the reference must be rendered.
@@ -110,6 +112,7 @@ class Viewer {
   std::string a_key_, b_key_, reference_key_;
   std::optional<ReferenceFrame> reference_;
   bool display_dirty_ = true;
+  bool reference_pending_ = false;
   Image display_;
   gl::Texture texture_;
   int texture_width_ = 0, texture_height_ = 0;

@@ -126,6 +126,37 @@ TEST_F(View, ScriptedScreenshotIsTheHeadlessRenderOfTheSameMethodAndFrame) {
   EXPECT_GT(variance, 1e-3) << "the window screenshot is blank";
 }
 
+TEST_F(View, EveryCommandRunsAndDisplaySettingsChangeOnlyThePng) {
+  require_xvfb();
+  const fs::path shot = dir / "shot.exr", moved = dir / "moved.exr";
+  const fs::path script = write("script.txt",
+                                "compare lean\n"
+                                "compare-param area_lights=representative-point\n"
+                                "mode flip\nflip\nflip\nmode single\n"
+                                "param scale=2\nreset-params\n"
+                                "play\nwait 2\npause\nnext\nprevious\n"
+                                "continuous on\nwait 1\ncontinuous off\n"
+                                "magnify 10 10 4\nmagnify off\n"
+                                "frame 1\nexposure 1.5\nbloom 0.5\n"
+                                "screenshot " + shot.string() + "\n"
+                                "orbit 30 10\ndolly 0.8\nfly 0.1 0 0.2\nlook 5 -3\n"
+                                "screenshot " + moved.string() + "\n"
+                                "path\nquit\n");
+  const CommandResult view = run(under_xvfb("view " + kScene + " --method vlachos --script '" + script.string() + "'"));
+  ASSERT_EQ(view.code, 0) << view.err;
+  const fs::path headless = dir / "headless.exr";
+  ASSERT_EQ(run(glintlab("render " + kScene + " --method vlachos --frame 1 -o '" + headless.string() + "'")).code, 0);
+  // Exposure and bloom are display settings: the EXR is the render's, the PNG is not.
+  EXPECT_EQ(read_bytes(shot), read_bytes(headless));
+  EXPECT_NE(read_bytes(fs::path(shot).replace_extension(".png")), read_bytes(fs::path(headless).replace_extension(".png")));
+  const std::string json = read_bytes(fs::path(shot).replace_extension(".json"));
+  EXPECT_NE(json.find("\"exposure\": 1.5"), std::string::npos) << json;
+  EXPECT_EQ(json.find("render_command"), std::string::npos) << "a command that writes another PNG: " << json;
+  // The free camera moved the picture, and says it is off the path.
+  EXPECT_FALSE(same_pixels(moved, shot));
+  EXPECT_NE(read_bytes(fs::path(moved).replace_extension(".json")).find("\"on_path\": false"), std::string::npos);
+}
+
 TEST_F(View, ABadScriptIsExit2BeforeAnyWindowOpens) {
   const fs::path script = write("bad.txt", "method vlachos\nframe two\n");
   // No display at all: the script is read, and refused, first.

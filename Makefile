@@ -2,11 +2,12 @@
 #   make demo   install missing Debian packages, build (Release), compare every method on the default scene
 #   make test   install missing Debian packages, build (Release and the clang fuzz targets), run the whole
 #               suite through ctest, then the fuzz targets' smoke pass (docs/fuzzing.md)
+#   make view   open the viewer on the default scene (needs a display; docs/viewer.md)
 #   make fuzz   run every fuzz target for FUZZ_SECONDS each (default 600; docs/fuzzing.md)
 #   make bench-tables  time generating and loading each precomputed table (Google Benchmark; not in test)
 #   make bench-normal-maps  time the procedural normal-map generators at their largest inputs (the same)
 #   make ltc-fit-report  fit both LTC tables: generation time and the fit error over the grid (markdown)
-.PHONY: all deps build build-fuzz demo test fuzz bench bench-tables bench-normal-maps ltc-fit-report clean
+.PHONY: all deps build build-fuzz demo view test fuzz bench bench-tables bench-normal-maps ltc-fit-report clean
 
 BUILD := build/release
 FUZZ_BUILD := build/fuzz
@@ -30,6 +31,9 @@ build-fuzz: deps
 
 demo: build
 	$(BUILD)/glintlab compare --scene builtin:spheres --methods all -o out/demo
+
+view: build
+	$(BUILD)/glintlab view --mode split
 
 test: build build-fuzz
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)

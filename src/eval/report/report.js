@@ -384,6 +384,24 @@
           limitations.push(run.id + ': ' + video.getAttribute('src') + ' not played: this browser has no H.264 decoder');
         else problems.push(run.id + ': video ' + video.getAttribute('src') + ' did not load' + (video.error ? ' (error ' + video.error.code + ')' : ''));
       }
+      // Every method's image and error map through the viewer's own controls.
+      const select = section.querySelector('.controls select');
+      const errorMap = section.querySelector('.controls input[type=checkbox]');
+      if (select) {
+        const top = section.querySelector('.viewer img.top');
+        for (const option of select.options) {
+          for (const error of [false, true]) {
+            select.value = option.value;
+            errorMap.checked = error;
+            select.dispatchEvent(new Event('change'));
+            await settled(top);
+            if (top.complete && top.naturalWidth > 0) images++;
+            else problems.push(run.id + ': image ' + top.getAttribute('src') + ' did not load');
+          }
+        }
+        errorMap.checked = false;
+        select.dispatchEvent(new Event('change'));
+      }
       const slider = section.querySelector('input.slider');
       if (slider) {
         const top = section.querySelector('.viewer img.top');
@@ -403,7 +421,8 @@
         else problems.push(run.id + ': ' + found.length + ' crop labels, ' + expected + ' expected, in the order of the strips');
       }
     }
-    show(null);
+    const firstCompare = data.runs.find((r) => r.kind === 'compare');
+    show(firstCompare ? firstCompare.id : null);  // what a screenshot taken after the test shows
     problems.push(...loadErrors);
     out.textContent = (problems.length ? 'FAIL' : 'PASS') + ' runs=' + data.runs.length + ' images=' + images +
       ' videos=' + videos + ' sliders=' + sliders + ' crop-labels=' + labels +

@@ -215,6 +215,19 @@ std::string id_text(const fs::path& relative) {
   return id;
 }
 
+/// The folder all inputs are in (for one input, the input itself): run ids are paths below it,
+/// so that `report out/a/x out/b` names its runs a/x/... and b/..., as `report out` would.
+fs::path common_folder(const std::vector<fs::path>& inputs) {
+  fs::path common = fs::weakly_canonical(fs::absolute(inputs.front()));
+  for (const fs::path& input : inputs) {
+    const fs::path p = fs::weakly_canonical(fs::absolute(input));
+    fs::path shared;
+    for (auto a = common.begin(), b = p.begin(); a != common.end() && b != p.end() && *a == *b; ++a, ++b) shared /= *a;
+    common = shared;
+  }
+  return common;
+}
+
 }  // namespace
 
 const char* ReportRun::kind() const {
@@ -224,13 +237,17 @@ const char* ReportRun::kind() const {
 
 ReportInputs read_report_inputs(const std::vector<fs::path>& inputs) {
   if (inputs.empty()) throw InputError("report: no INPUT given; allowed: output directories of compare, animate, bench");
-  ReportInputs result;
-  std::map<std::string, int> ids;
   for (const fs::path& input : inputs) {
     std::error_code ec;
     if (!fs::is_directory(input, ec))
       throw InputError(input.string() + ": " + (fs::exists(input, ec) ? "not a directory" : "no such directory") +
                        "; allowed: an output directory of compare, animate or bench, or a folder above them");
+  }
+  const fs::path base = common_folder(inputs);
+  ReportInputs result;
+  std::map<std::string, int> ids;
+  for (const fs::path& input : inputs) {
+    std::error_code ec;
     std::vector<fs::path> files;
     for (auto it = fs::recursive_directory_iterator(input, ec); it != fs::recursive_directory_iterator(); it.increment(ec)) {
       if (ec) throw InputError(input.string() + ": cannot be searched: " + ec.message());
@@ -242,7 +259,6 @@ ReportInputs read_report_inputs(const std::vector<fs::path>& inputs) {
       if ((name == "metrics.json" || name == "bench.json") && it->is_regular_file(ec)) files.push_back(it->path());
     }
     std::sort(files.begin(), files.end());
-    const fs::path base = fs::weakly_canonical(input).filename();
     for (const fs::path& file : files) {
       const json j = parse_json_file(file);
       const std::string kind = kind_of(j);
@@ -255,8 +271,8 @@ ReportInputs read_report_inputs(const std::vector<fs::path>& inputs) {
       ReportRun run;
       run.dir = file.parent_path();
       run.metrics = file;
-      const fs::path relative = fs::relative(run.dir, input, ec);
-      std::string id = id_text(relative.empty() || relative == "." ? base : relative);
+      const fs::path relative = fs::weakly_canonical(fs::absolute(run.dir)).lexically_relative(base);
+      std::string id = id_text(relative.empty() || relative == "." ? base.filename() : relative);
       if (const int seen = ids[id]++; seen > 0) id += "~" + std::to_string(seen + 1);
       run.id = id;
       run.scene = root["scene"].text();

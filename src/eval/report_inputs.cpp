@@ -34,6 +34,12 @@ class Field {
     for (std::size_t i = 0; i < value_.size(); ++i) all.emplace_back(value_[i], file_, key_ + "[" + std::to_string(i) + "]");
     return all;
   }
+  /// The elements of an array that must hold at least one (a run's methods).
+  [[nodiscard]] std::vector<Field> some_elements() const {
+    std::vector<Field> all = elements();
+    if (all.empty()) fail(key_, "is empty", "at least one entry");
+    return all;
+  }
   [[nodiscard]] double number() const {
     if (!value_.is_number()) fail(key_, "is " + shown(), "a number");
     return value_.get<double>();
@@ -116,7 +122,7 @@ CompareRun read_compare(const Field& root, const fs::path& dir) {
   CompareRun run;
   run.reference_noise_rmse = root["reference_noise_rmse"].number();
   run.error_map_scale = root["error_map_scale"].number();
-  for (const Field& m : root["methods"].elements()) {
+  for (const Field& m : root["methods"].some_elements()) {
     CompareRow& r = run.rows.emplace_back();
     r.method = m["method"].file_name();
     r.rmse = m["rmse"].number();
@@ -158,7 +164,7 @@ AnimateRun read_animate(const Field& root, const fs::path& dir) {
   run.reference_noise_rmse = root["reference_noise_rmse"].number();
   run.flicker_floor = root["flicker_floor"].number();
   std::vector<std::string> streams{"reference"};
-  for (const Field& m : root["methods"].elements()) {
+  for (const Field& m : root["methods"].some_elements()) {
     AnimateRow& r = run.rows.emplace_back();
     r.method = m["method"].file_name();
     r.mean_rmse = m["mean_rmse"].number();
@@ -175,7 +181,7 @@ AnimateRun read_animate(const Field& root, const fs::path& dir) {
 BenchRun read_bench(const Field& root) {
   BenchRun run;
   run.frames = root["frames"].integer();
-  for (const Field& m : root["methods"].elements()) {
+  for (const Field& m : root["methods"].some_elements()) {
     BenchRow& r = run.rows.emplace_back();
     r.method = m["method"].text();  // "(unshaded)" too: bench shows no files by method name
     r.gpu_ms = m["gpu_ms_median"].number();

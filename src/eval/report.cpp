@@ -56,7 +56,9 @@ ReportSummary run_report(const std::vector<fs::path>& inputs, const fs::path& ou
     for (const auto& asset : report_assets(run)) {
       std::error_code ec;
       fs::copy_file(run.dir / asset, folder / asset, fs::copy_options::overwrite_existing, ec);
-      if (ec) throw RuntimeFailure((folder / asset).string() + ": cannot copy " + (run.dir / asset).string() + ": " + ec.message());
+      if (ec)
+        throw RuntimeFailure((folder / asset).string() + ": cannot copy " + (run.dir / asset).string() + ": " +
+                             ec.message());
       summary.bytes += fs::file_size(folder / asset);
       ++summary.assets;
     }

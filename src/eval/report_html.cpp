@@ -38,16 +38,16 @@ json with_error(json c, const std::string& error_key) {
 json compare_data(const CompareRun& c, const std::string& assets) {
   const double noise = c.reference_noise_rmse;
   const std::string noise_label = "the reference's noise RMSE";
-  json table = {{"sort", "rmse"},
-                {"columns",
-                 {column("method", "method", "", 0), with_noise(column("rmse", "RMSE", "lower", 4), noise, noise_label),
-                  with_noise(column("rmse_specular", "RMSE specular", "lower", 4), noise, noise_label),
-                  column("psnr", "PSNR (dB)", "higher", 3),
-                  with_error(column("energy_ratio", "energy ratio", "one", 4), "energy_ratio_error"),
-                  with_error(column("energy_ratio_specular", "energy ratio specular", "one", 4),
-                             "energy_ratio_specular_error"),
-                  column("max_error", "max error", "lower", 4)}},
-                {"floors", {{{"label", "(reference noise)"}, {"values", {{"rmse", noise}, {"rmse_specular", noise}}}}}}};
+  json table = {
+      {"sort", "rmse"},
+      {"columns",
+       {column("method", "method", "", 0), with_noise(column("rmse", "RMSE", "lower", 4), noise, noise_label),
+        with_noise(column("rmse_specular", "RMSE specular", "lower", 4), noise, noise_label),
+        column("psnr", "PSNR (dB)", "higher", 3),
+        with_error(column("energy_ratio", "energy ratio", "one", 4), "energy_ratio_error"),
+        with_error(column("energy_ratio_specular", "energy ratio specular", "one", 4), "energy_ratio_specular_error"),
+        column("max_error", "max error", "lower", 4)}},
+      {"floors", {{{"label", "(reference noise)"}, {"values", {{"rmse", noise}, {"rmse_specular", noise}}}}}}};
   json images = {{"reference", assets + "/reference.png"}, {"methods", json::array()}};
   json columns = {"reference"};
   for (const auto& r : c.rows) {
@@ -60,19 +60,19 @@ json compare_data(const CompareRun& c, const std::string& assets) {
                              {"energy_ratio_specular", r.energy_ratio_specular},
                              {"energy_ratio_specular_error", r.energy_ratio_specular_error},
                              {"max_error", r.max_error}});
-    images["methods"].push_back(
-        {{"method", r.method}, {"image", assets + "/" + r.method + ".png"}, {"error", assets + "/" + r.method + "-error.png"}});
+    images["methods"].push_back({{"method", r.method},
+                                 {"image", assets + "/" + r.method + ".png"},
+                                 {"error", assets + "/" + r.method + "-error.png"}});
     columns.push_back(r.method);
   }
   json regions = json::array();
   for (const auto& w : c.regions)
-    regions.push_back({{"strip", assets + "/" + w.file},
-                       {"x", w.x},
-                       {"y", w.y},
-                       {"size", w.size},
-                       {"cell", w.cell},
-                       {"gap", w.gap}});
-  return {{"table", table}, {"images", images}, {"regions", regions}, {"columns", columns},
+    regions.push_back(
+        {{"strip", assets + "/" + w.file}, {"x", w.x}, {"y", w.y}, {"size", w.size}, {"cell", w.cell}, {"gap", w.gap}});
+  return {{"table", table},
+          {"images", images},
+          {"regions", regions},
+          {"columns", columns},
           {"error_map_scale", c.error_map_scale}};
 }
 
@@ -113,8 +113,7 @@ json bench_data(const BenchRun& b) {
                 {"base", base_name},
                 {"columns",
                  {column("method", "method", "", 0), column("wall_ms", "wall ms", "lower", 4),
-                  column("wall_ratio", "wall / " + base_name, "lower", 3),
-                  column("gpu_ms", "GPU ms", "lower", 4),
+                  column("wall_ratio", "wall / " + base_name, "lower", 3), column("gpu_ms", "GPU ms", "lower", 4),
                   column("gpu_ratio", "GPU / " + base_name, "lower", 3)}},
                 {"floors", json::array()}};
   std::vector<PlotBar> wall, gpu;
@@ -161,12 +160,15 @@ std::string report_page(const ReportInputs& inputs) {
   for (const auto& run : inputs.runs) {
     json facts = json::array();
     for (const auto& [label, value] : run.facts) facts.push_back({label, value});
-    json r = {{"id", run.id},      {"kind", run.kind()},     {"scene", run.scene},
+    json r = {{"id", run.id},       {"kind", run.kind()},   {"scene", run.scene},
               {"width", run.width}, {"height", run.height}, {"facts", facts}};
     const std::string assets = report_asset_folder(run);
-    if (const auto* c = std::get_if<CompareRun>(&run.data)) r.update(compare_data(*c, assets));
-    else if (const auto* a = std::get_if<AnimateRun>(&run.data)) r.update(animate_data(*a, assets));
-    else r.update(bench_data(std::get<BenchRun>(run.data)));
+    if (const auto* c = std::get_if<CompareRun>(&run.data))
+      r.update(compare_data(*c, assets));
+    else if (const auto* a = std::get_if<AnimateRun>(&run.data))
+      r.update(animate_data(*a, assets));
+    else
+      r.update(bench_data(std::get<BenchRun>(run.data)));
     runs.push_back(r);
   }
   // JSON inside <script>: '<' only occurs in strings there, where \u003c means the same and no

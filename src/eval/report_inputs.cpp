@@ -25,13 +25,15 @@ class Field {
   [[nodiscard]] bool has(const std::string& name) const { return value_.is_object() && value_.contains(name); }
   [[nodiscard]] Field operator[](const std::string& name) const {
     const std::string key = key_.empty() ? name : key_ + "." + name;
-    if (!value_.is_object() || !value_.contains(name)) fail(key, "is missing", "the key, as glintlab's compare, animate and bench write it");
+    if (!value_.is_object() || !value_.contains(name))
+      fail(key, "is missing", "the key, as glintlab's compare, animate and bench write it");
     return {value_.at(name), file_, key};
   }
   [[nodiscard]] std::vector<Field> elements() const {
     if (!value_.is_array()) fail(key_, "is " + shown(), "an array");
     std::vector<Field> all;
-    for (std::size_t i = 0; i < value_.size(); ++i) all.emplace_back(value_[i], file_, key_ + "[" + std::to_string(i) + "]");
+    for (std::size_t i = 0; i < value_.size(); ++i)
+      all.emplace_back(value_[i], file_, key_ + "[" + std::to_string(i) + "]");
     return all;
   }
   /// The elements of an array that must hold at least one (a run's methods).
@@ -55,11 +57,11 @@ class Field {
   /// A method id or a file name: used as a path inside the run's directory, so nothing that leaves it.
   [[nodiscard]] std::string file_name() const {
     const std::string name = text();
-    const bool plain = !name.empty() && name[0] != '.' &&
-                       std::all_of(name.begin(), name.end(), [](unsigned char c) {
-                         return std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '+';
-                       });
-    if (!plain) fail(key_, "is " + shown(), "a plain name of letters, digits, '-', '_', '.', '+' (not starting with '.')");
+    const bool plain = !name.empty() && name[0] != '.' && std::all_of(name.begin(), name.end(), [](unsigned char c) {
+      return std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '+';
+    });
+    if (!plain)
+      fail(key_, "is " + shown(), "a plain name of letters, digits, '-', '_', '.', '+' (not starting with '.')");
     return name;
   }
   [[nodiscard]] const fs::path& file() const { return file_; }
@@ -105,9 +107,12 @@ std::vector<std::pair<std::string, std::string>> facts_of(const json& j) {
   for (const auto& [key, label] : keys) {
     if (!j.contains(key)) continue;
     const json& v = j.at(key);
-    if (v.is_string()) facts.emplace_back(label, v.get<std::string>());
-    else if (v.is_boolean()) facts.emplace_back(label, v.get<bool>() ? "yes" : "no");
-    else if (v.is_number()) facts.emplace_back(label, number_text(v.get<double>()));
+    if (v.is_string())
+      facts.emplace_back(label, v.get<std::string>());
+    else if (v.is_boolean())
+      facts.emplace_back(label, v.get<bool>() ? "yes" : "no");
+    else if (v.is_number())
+      facts.emplace_back(label, number_text(v.get<double>()));
   }
   return facts;
 }
@@ -115,7 +120,8 @@ std::vector<std::pair<std::string, std::string>> facts_of(const json& j) {
 void require_file(const fs::path& file, const Field& from) {
   std::error_code ec;
   if (!fs::is_regular_file(file, ec))
-    throw InputError(file.string() + ": missing; " + from.file().string() + " names it (a run's files are published together)");
+    throw InputError(file.string() + ": missing; " + from.file().string() +
+                     " names it (a run's files are published together)");
 }
 
 CompareRun read_compare(const Field& root, const fs::path& dir) {
@@ -242,7 +248,8 @@ const char* ReportRun::kind() const {
 }
 
 ReportInputs read_report_inputs(const std::vector<fs::path>& inputs) {
-  if (inputs.empty()) throw InputError("report: no INPUT given; allowed: output directories of compare, animate, bench");
+  if (inputs.empty())
+    throw InputError("report: no INPUT given; allowed: output directories of compare, animate, bench");
   for (const fs::path& input : inputs) {
     std::error_code ec;
     if (!fs::is_directory(input, ec))
@@ -255,7 +262,8 @@ ReportInputs read_report_inputs(const std::vector<fs::path>& inputs) {
   for (const fs::path& input : inputs) {
     std::error_code ec;
     std::vector<fs::path> files;
-    for (auto it = fs::recursive_directory_iterator(input, ec); it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    for (auto it = fs::recursive_directory_iterator(input, ec); it != fs::recursive_directory_iterator();
+         it.increment(ec)) {
       if (ec) throw InputError(input.string() + ": cannot be searched: " + ec.message());
       const std::string name = it->path().filename().string();
       if (!name.empty() && name[0] == '.') {
@@ -269,7 +277,8 @@ ReportInputs read_report_inputs(const std::vector<fs::path>& inputs) {
       const json j = parse_json_file(file);
       const std::string kind = kind_of(j);
       if (kind.empty()) {
-        result.warnings.push_back(file.string() + ": not a compare, animate or bench output (no 'crops', no "
+        result.warnings.push_back(file.string() +
+                                  ": not a compare, animate or bench output (no 'crops', no "
                                   "'flicker_floor', no methods[].wall_ms_median); skipped");
         continue;
       }
@@ -285,9 +294,12 @@ ReportInputs read_report_inputs(const std::vector<fs::path>& inputs) {
       run.width = root["width"].integer();
       run.height = root["height"].integer();
       run.facts = facts_of(j);
-      if (kind == "compare") run.data = read_compare(root, run.dir);
-      else if (kind == "animate") run.data = read_animate(root, run.dir);
-      else run.data = read_bench(root);
+      if (kind == "compare")
+        run.data = read_compare(root, run.dir);
+      else if (kind == "animate")
+        run.data = read_animate(root, run.dir);
+      else
+        run.data = read_bench(root);
       for (const auto& asset : report_assets(run)) require_file(run.dir / asset, root);
       result.runs.push_back(std::move(run));
     }

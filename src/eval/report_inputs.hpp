@@ -61,9 +61,9 @@ struct BenchRun {
 
 /// One output directory's run.
 struct ReportRun {
-  std::string id;                  ///< unique in the report, path-like: "spheres", "area-lights/disk-0.1/ltc"
-  std::filesystem::path dir;       ///< the output directory
-  std::filesystem::path metrics;   ///< the JSON file it was read from
+  std::string id;                 ///< unique in the report, path-like: "spheres", "area-lights/disk-0.1/ltc"
+  std::filesystem::path dir;      ///< the output directory
+  std::filesystem::path metrics;  ///< the JSON file it was read from
   std::string scene;
   int width = 0, height = 0;
   /// Label and value of what describes the run (device, reference samples, ...), in display order.

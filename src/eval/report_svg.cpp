@@ -39,8 +39,8 @@ double axis_top(double largest) {
 
 void dashed_mark(std::ostringstream& s, double x1, double y1, double x2, double y2, const std::string& label,
                  double value) {
-  s << "<g class=\"mark\"><title>" << xml_escaped(label) << ": " << value_text(value) << "</title><line x1=\"" << num(x1)
-    << "\" y1=\"" << num(y1) << "\" x2=\"" << num(x2) << "\" y2=\"" << num(y2)
+  s << "<g class=\"mark\"><title>" << xml_escaped(label) << ": " << value_text(value) << "</title><line x1=\""
+    << num(x1) << "\" y1=\"" << num(y1) << "\" x2=\"" << num(x2) << "\" y2=\"" << num(y2)
     << "\" stroke=\"#444\" stroke-width=\"1.5\" stroke-dasharray=\"6 4\"/></g>\n";
 }
 
@@ -55,12 +55,23 @@ std::string xml_escaped(const std::string& text) {
   std::string out;
   for (const char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -85,8 +96,8 @@ std::string line_plot_svg(const std::string& title, const std::string& y_label, 
 
   std::ostringstream s;
   s << "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"plot\" viewBox=\"0 0 " << num(width) << " " << num(height)
-    << "\" role=\"img\" aria-label=\"" << xml_escaped(title) << "\">\n<text x=\"" << num(left) << "\" y=\"20\" class=\"title\">"
-    << xml_escaped(title) << "</text>\n";
+    << "\" role=\"img\" aria-label=\"" << xml_escaped(title) << "\">\n<text x=\"" << num(left)
+    << "\" y=\"20\" class=\"title\">" << xml_escaped(title) << "</text>\n";
   const double step = tick_step(y_top, 5);
   for (double v = 0; v <= y_top * (1 + 1e-9); v += step)
     s << "<line x1=\"" << num(left) << "\" x2=\"" << num(left + plot_w) << "\" y1=\"" << num(py(v)) << "\" y2=\""
@@ -154,15 +165,16 @@ std::string bar_chart_svg(const std::string& title, const std::string& unit, con
       << (b.note.empty() ? "" : ", ") << xml_escaped(b.note) << "</title><text x=\"" << num(label_w - 8) << "\" y=\""
       << num(y + 15) << "\" class=\"legend\" text-anchor=\"end\">" << xml_escaped(b.label) << "</text><rect x=\""
       << num(label_w) << "\" y=\"" << num(y + 3) << "\" width=\"" << num(std::max(1.0, px(b.value) - label_w))
-      << "\" height=\"" << num(row - 6) << "\" fill=\"" << fill << "\"/><text x=\"" << num(px(b.value) + 6)
-      << "\" y=\"" << num(y + 15) << "\" class=\"tick\">" << value_text(b.value) << " " << xml_escaped(unit)
+      << "\" height=\"" << num(row - 6) << "\" fill=\"" << fill << "\"/><text x=\"" << num(px(b.value) + 6) << "\" y=\""
+      << num(y + 15) << "\" class=\"tick\">" << value_text(b.value) << " " << xml_escaped(unit)
       << (b.note.empty() ? "" : "  ") << xml_escaped(b.note) << "</text></g>\n";
   }
   const double bottom = top + row * static_cast<double>(bars.size());
   for (const auto& m : marks) {
     dashed_mark(s, px(m.value), top - 4, px(m.value), bottom, m.label, m.value);
-    s << "<text x=\"" << num(px(m.value)) << "\" y=\"" << num(bottom + 16) << "\" class=\"tick\" text-anchor=\"middle\">"
-      << xml_escaped(m.label) << " " << value_text(m.value) << "</text>\n";
+    s << "<text x=\"" << num(px(m.value)) << "\" y=\"" << num(bottom + 16)
+      << "\" class=\"tick\" text-anchor=\"middle\">" << xml_escaped(m.label) << " " << value_text(m.value)
+      << "</text>\n";
   }
   s << "</svg>";
   return s.str();

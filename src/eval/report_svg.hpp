@@ -32,8 +32,8 @@ std::string line_plot_svg(const std::string& title, const std::string& y_label, 
 struct PlotBar {
   std::string label;
   double value = 0;
-  std::string note;     ///< written after the value, e.g. "x1.35 of conventional"
-  bool muted = false;   ///< drawn grey: a row that is not a method (a floor)
+  std::string note;    ///< written after the value, e.g. "x1.35 of conventional"
+  bool muted = false;  ///< drawn grey: a row that is not a method (a floor)
   std::size_t colour = 0;
 };
 

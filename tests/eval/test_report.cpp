@@ -44,8 +44,8 @@ Ran shell(const std::string& command, const fs::path& home) {
   const fs::path out = home / "stdout.txt", err = home / "stderr.txt";
   fs::create_directories(home);
   const std::string cmd = "HOME=" + quoted(home) + " XDG_CONFIG_HOME=" + quoted(home / "config") +
-                          " XDG_CACHE_HOME=" + quoted(home / "cache") + " " + command + " >" + quoted(out) +
-                          " 2>" + quoted(err);
+                          " XDG_CACHE_HOME=" + quoted(home / "cache") + " " + command + " >" + quoted(out) + " 2>" +
+                          quoted(err);
   const int status = std::system(cmd.c_str());
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(out), read_text(err)};
 }
@@ -74,12 +74,15 @@ struct BrowserResult {
 };
 
 BrowserResult open_selftest(const fs::path& report, const fs::path& home, const fs::path& screenshot) {
-  const Ran r = shell("timeout 120 chromium --headless --no-sandbox --disable-gpu --allow-file-access-from-files "
-                      "--user-data-dir=" + quoted(home / "profile") +
-                          " --enable-logging=stderr --v=0 --virtual-time-budget=60000 --window-size=1280,900"
-                          " --screenshot=" + quoted(screenshot) + " --dump-dom " +
-                          quoted("file://" + fs::absolute(report / "index.html").string() + "#selftest"),
-                      home);
+  const Ran r = shell(
+      "timeout 120 chromium --headless --no-sandbox --disable-gpu --allow-file-access-from-files "
+      "--user-data-dir=" +
+          quoted(home / "profile") +
+          " --enable-logging=stderr --v=0 --virtual-time-budget=60000 --window-size=1280,900"
+          " --screenshot=" +
+          quoted(screenshot) + " --dump-dom " +
+          quoted("file://" + fs::absolute(report / "index.html").string() + "#selftest"),
+      home);
   std::smatch m;
   std::string line;
   if (std::regex_search(r.out, m, std::regex("<pre id=\"selftest\">([^<]*)</pre>"))) line = m[1];
@@ -130,14 +133,15 @@ TEST(Report, ChromiumLoadsEveryImageAndVideoAndTheSliderMoves) {
   }
   const auto crops = nlohmann::json::parse(read_text(scratch / "runs" / "compare" / "metrics.json"))["crops"].size();
   EXPECT_EQ(pngs, 1 + 2 * 2 + static_cast<int>(crops));  // reference, each method and its error map, the strips
-  EXPECT_EQ(mp4s, 3);                                     // reference and both methods
+  EXPECT_EQ(mp4s, 3);                                    // reference and both methods
   const std::string page = read_text(scratch / "report" / "index.html");
   EXPECT_EQ(page.find(scratch.path().string()), std::string::npos) << "the page names a path of this machine";
   const std::regex url("https?://(?!www\\.w3\\.org/2000/svg)");
   EXPECT_FALSE(std::regex_search(page, url)) << "the page names a network URL";
 
   const BrowserResult ok = open_selftest(scratch / "report", home, scratch / "shot.png");
-  if (!ok.started) GTEST_SKIP() << "chromium --headless does not start (exit " << ok.code << "): " << ok.log.substr(0, 600);
+  if (!ok.started)
+    GTEST_SKIP() << "chromium --headless does not start (exit " << ok.code << "): " << ok.log.substr(0, 600);
   ASSERT_EQ(ok.selftest.rfind("PASS", 0), 0u) << ok.selftest << "\n" << ok.log;
   EXPECT_NE(ok.selftest.find("runs=3 "), std::string::npos) << ok.selftest;
   EXPECT_NE(ok.selftest.find("sliders=1 "), std::string::npos) << ok.selftest;
@@ -171,8 +175,10 @@ TEST(Report, BadInputExitsTwoNamingTheFileAndKeyAndLeavesTheOldReport) {
     const Ran r = run_glintlab("report -o " + quoted(out) + " " + inputs, home);
     EXPECT_EQ(r.code, 2) << inputs << "\n" << r.err;
     for (const auto& f : fragments) EXPECT_NE(r.err.find(f), std::string::npos) << "'" << f << "' not in: " << r.err;
-    if (before.empty()) EXPECT_FALSE(fs::exists(out)) << "partial output for " << inputs;
-    else EXPECT_EQ(read_text(out / "index.html"), before) << "the old report changed";
+    if (before.empty())
+      EXPECT_FALSE(fs::exists(out)) << "partial output for " << inputs;
+    else
+      EXPECT_EQ(read_text(out / "index.html"), before) << "the old report changed";
   };
   auto with_metrics = [&](const std::function<void(nlohmann::json&)>& edit) {
     nlohmann::json j = nlohmann::json::parse(good_metrics);

@@ -1,10 +1,13 @@
 #include "eval/report_html.hpp"
 
+#include <cstdio>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string_view>
 
+#include "core/colour.hpp"
 #include "core/error.hpp"
+#include "core/image.hpp"
 #include "eval/report_svg.hpp"
 
 namespace glintlab {
@@ -33,6 +36,24 @@ json with_noise(json c, double noise, const std::string& noise_label) {
 json with_error(json c, const std::string& error_key) {
   c["error_key"] = error_key;
   return c;
+}
+
+/// The colours of compare's error maps from 0 to their scale, as a CSS gradient: false_colour
+/// itself evaluated at even steps, so the legend is the ramp the maps were painted with.
+std::string error_ramp_css() {
+  constexpr int steps = 17;
+  Image values(steps, 1);
+  for (int i = 0; i < steps; ++i) values.at(i, 0) = glm::vec3(static_cast<float>(i) / (steps - 1));
+  const Image colours = false_colour(values, 1.0f);
+  std::string css = "linear-gradient(to right";
+  for (int i = 0; i < steps; ++i) {
+    const glm::vec3 c = glm::clamp(colours.at(i, 0), 0.0f, 1.0f) * 255.0f + 0.5f;
+    char stop[64];
+    std::snprintf(stop, sizeof stop, ", rgb(%d,%d,%d) %.2f%%", static_cast<int>(c.r), static_cast<int>(c.g),
+                  static_cast<int>(c.b), 100.0 * i / (steps - 1));
+    css += stop;
+  }
+  return css + ")";
 }
 
 json compare_data(const CompareRun& c, const std::string& assets) {
@@ -73,7 +94,8 @@ json compare_data(const CompareRun& c, const std::string& assets) {
           {"images", images},
           {"regions", regions},
           {"columns", columns},
-          {"error_map_scale", c.error_map_scale}};
+          {"error_map_scale", c.error_map_scale},
+          {"error_ramp", error_ramp_css()}};
 }
 
 json animate_data(const AnimateRun& a, const std::string& assets) {

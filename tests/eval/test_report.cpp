@@ -1,7 +1,8 @@
 // `glintlab report` as a person uses it: tiny compare, animate and bench outputs made by glintlab,
 // the report opened in Debian's chromium (headless) with #selftest, which checks that every image
 // and video loads and the slider moves (a report with an image removed must FAIL it), and a
-// screenshot that is not blank. Bad input: exit 2, a message naming the file and key, no output,
+// screenshot that is not blank. Each crop cell, as the page's data places and labels it, holds the
+// pixels of its method's image. Bad input: exit 2, a message naming the file and key, no output,
 // an old report left whole. The plots' geometry against the values drawn.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -52,7 +53,7 @@ Ran shell(const std::string& command, const fs::path& home) {
 
 Ran run_glintlab(const std::string& args, const fs::path& home) { return shell("'" GLINTLAB_BINARY "' " + args, home); }
 
-const std::string kTiny = "-q --scene builtin:spheres --width 48 --height 32 --methods conventional,toksvig ";
+const std::string kTiny = "-q --scene builtin:spheres --width 48 --height 32 --methods conventional,vlachos ";
 
 /// compare, animate (3 frames) and bench of two methods on a 48x32 film, under `dir`.
 void make_outputs(const fs::path& dir, const fs::path& home, bool all) {
@@ -152,10 +153,10 @@ TEST(Report, ChromiumLoadsEveryImageAndVideoAndTheSliderMoves) {
 
   // The self-test can fail: the same report without one method's image.
   fs::copy(scratch / "report", scratch / "broken", fs::copy_options::recursive);
-  fs::remove(scratch / "broken" / "assets" / "compare" / "toksvig.png");
+  fs::remove(scratch / "broken" / "assets" / "compare" / "vlachos.png");
   const BrowserResult broken = open_selftest(scratch / "broken", home, scratch / "broken.png");
   EXPECT_EQ(broken.selftest.rfind("FAIL", 0), 0u) << broken.selftest;
-  EXPECT_NE(broken.selftest.find("toksvig.png"), std::string::npos) << broken.selftest;
+  EXPECT_NE(broken.selftest.find("vlachos.png"), std::string::npos) << broken.selftest;
 
   // Every video was played unless the browser cannot decode H.264: then the self-test says so.
   if (const auto at = ok.selftest.find("LIMITATION"); at != std::string::npos)
@@ -199,10 +200,10 @@ TEST(Report, BadInputExitsTwoNamingTheFileAndKeyAndLeavesTheOldReport) {
   // A good report, then bad input again: the report stays as it was.
   std::ofstream(metrics) << good_metrics;
   ASSERT_EQ(run_glintlab("report -o " + quoted(out) + " " + quoted(runs), home).code, 0);
-  fs::rename(runs / "compare" / "toksvig-error.png", scratch / "aside.png");
-  expect_refused(quoted(runs), {(runs / "compare" / "toksvig-error.png").string(), "missing"});
-  EXPECT_TRUE(fs::exists(out / "assets" / "compare" / "toksvig-error.png"));
-  fs::rename(scratch / "aside.png", runs / "compare" / "toksvig-error.png");
+  fs::rename(runs / "compare" / "vlachos-error.png", scratch / "aside.png");
+  expect_refused(quoted(runs), {(runs / "compare" / "vlachos-error.png").string(), "missing"});
+  EXPECT_TRUE(fs::exists(out / "assets" / "compare" / "vlachos-error.png"));
+  fs::rename(scratch / "aside.png", runs / "compare" / "vlachos-error.png");
 
   // Metrics of no known kind are skipped with a warning; a report of nothing is refused.
   fs::create_directories(runs / "other");
@@ -213,6 +214,36 @@ TEST(Report, BadInputExitsTwoNamingTheFileAndKeyAndLeavesTheOldReport) {
   EXPECT_NE(skipped.err.find("skipped"), std::string::npos) << skipped.err;
   fs::remove_all(out);
   expect_refused(quoted(runs / "other"), {(runs / "other").string(), "no compare, animate or bench output"});
+}
+
+TEST(Report, EachCropCellShowsTheMethodItIsLabelledWith) {
+  const ScratchDirectory scratch;
+  const fs::path home = scratch / "home", report = scratch / "report";
+  make_outputs(scratch / "runs", home, false);
+  ASSERT_EQ(run_glintlab("report -o " + quoted(report) + " " + quoted(scratch / "runs"), home).code, 0);
+  // The page's own data: the label of each column and the window each cell shows of a strip.
+  const std::string page = read_text(report / "index.html");
+  const std::string open = "<script type=\"application/json\" id=\"report-data\">";
+  const auto begin = page.find(open) + open.size();
+  const auto run = nlohmann::json::parse(page.substr(begin, page.find("</script>", begin) - begin))["runs"][0];
+  ASSERT_EQ(run["kind"], "compare");
+  ASSERT_FALSE(run["regions"].empty());
+  for (const auto& region : run["regions"]) {
+    const glintlab::Image strip = glintlab::read_ldr_image(report / region["strip"].get<std::string>());
+    const int cell = region["cell"], gap = region["gap"], size = region["size"], x0 = region["x"], y0 = region["y"];
+    for (std::size_t column = 0; column < run["columns"].size(); ++column) {
+      const std::string label = run["columns"][column];
+      const glintlab::Image image = glintlab::read_ldr_image(report / "assets" / "compare" / (label + ".png"));
+      int differing = 0;
+      for (int y = 0; y < cell; ++y)
+        for (int x = 0; x < cell; ++x) {
+          const auto shown = strip.at(static_cast<int>(column) * (cell + gap) + x, y);
+          const auto source = image.at(x0 + x * size / cell, y0 + y * size / cell);
+          differing += shown != source;
+        }
+      EXPECT_EQ(differing, 0) << label << "'s cell of " << region["strip"];
+    }
+  }
 }
 
 TEST(Report, ANewReportReplacesTheAssetsOfTheOld) {

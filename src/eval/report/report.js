@@ -77,10 +77,18 @@ function metricsTable(run) {
         el('th', {title: c.better ? 'click: sort worst to best, again: best to worst' : 'click: sort by name'}, c.label,
            el('span', {class: 'arrow'}));
     th.dataset.key = c.key;
-    th.addEventListener('click', () => {
+    th.tabIndex = 0;
+    const sortBy = () => {
       state.worstFirst = state.key === c.key ? !state.worstFirst : true;
       state.key = c.key;
       fill();
+    };
+    th.addEventListener('click', sortBy);
+    th.addEventListener('keydown', (e) => {
+      if (e.key === 'Enter' || e.key === ' ') {
+        e.preventDefault();
+        sortBy();
+      }
     });
     headRow.append(th);
   }
@@ -224,6 +232,11 @@ function viewer(run, chosen) {
   const showRegions = el('input', {type: 'checkbox'});
   showRegions.checked = true;
   const legend = el('p', {class: 'note'});
+  // The error maps' colours from 0 to the run's scale: the ramp compare paints them with.
+  const ramp =
+      el('div', {class: 'ramp'}, el('span', {text: '0'}), el('span', {class: 'bar'}),
+         el('span', {text: formatted(run.error_map_scale, 3) + ' and above'}));
+  ramp.querySelector('.bar').style.background = run.error_ramp;
   const update = () => {
     const m = methods.find((x) => x.method === select.value);
     const src = errorMap.checked ? m.error : m.image;
@@ -237,6 +250,7 @@ function viewer(run, chosen) {
             ' \u2212 reference| in false colour, one scale for every method of this run (full colour at ' +
             formatted(run.error_map_scale, 3) + ').' :
         'Left of the split: the reference; right: ' + m.method + '. Drag on the image or the slider to move the split.';
+    ramp.hidden = !errorMap.checked;
     frame.closest('section')?.querySelectorAll('.cell').forEach(
         (c) => c.classList.toggle('chosen', c.dataset.column === m.method));
   };
@@ -247,7 +261,7 @@ function viewer(run, chosen) {
   const controls =
       el('div', {class: 'controls'}, el('label', null, 'reference | ', select),
          el('label', null, errorMap, ' error map'), el('label', null, showRegions, ' worst regions'));
-  return {nodes: [controls, frame, slider, legend], update};
+  return {nodes: [controls, frame, slider, legend, ramp], update};
 }
 
 function regions(run) {

@@ -160,6 +160,11 @@ json bench_data(const BenchRun& b) {
   return {{"table", table}, {"plots", plots}, {"frames", b.frames}};
 }
 
+/// The page's script, one concept a file, concatenated in this order into one <script>: each part
+/// uses the helpers of those before it.
+constexpr const char* kScriptParts[] = {"common.js",     "table.js",    "viewer.js", "sections.js",
+                                        "navigation.js", "selftest.js", "main.js"};
+
 std::string template_file(const std::string& name) {
   const auto& files = report_template_files();
   const auto it = files.find(name);
@@ -200,7 +205,9 @@ std::string report_page(const ReportInputs& inputs) {
     data += c == '<' ? std::string("\\u003c") : std::string(1, c);
   std::string page = template_file("page.html");
   replace_once(page, "/*@STYLE@*/", template_file("report.css"));
-  replace_once(page, "/*@SCRIPT@*/", template_file("report.js"));
+  std::string script;
+  for (const char* part : kScriptParts) script += template_file(part) + "\n";
+  replace_once(page, "/*@SCRIPT@*/", script);
   replace_once(page, "@DATA@", data);  // last: the data may hold any text
   return page;
 }

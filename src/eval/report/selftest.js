@@ -56,6 +56,11 @@ async function selftest() {
             images++;
           else
             problems.push(run.id + ': image ' + top.getAttribute('src') + ' did not load');
+          const rampShown = section.querySelector('.ramp').offsetParent !== null;
+          if (rampShown !== error)
+            problems.push(
+                run.id + ': the error map\u2019s colour ramp is ' + (rampShown ? 'shown' : 'hidden') +
+                ' with the error map ' + (error ? 'on' : 'off'));
         }
       }
       errorMap.checked = false;

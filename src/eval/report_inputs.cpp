@@ -1,8 +1,11 @@
 #include "eval/report_inputs.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -46,9 +49,13 @@ class Field {
     if (!value_.is_number()) fail(key_, "is " + shown(), "a number");
     return value_.get<double>();
   }
-  [[nodiscard]] int integer() const {
-    if (!value_.is_number_integer()) fail(key_, "is " + shown(), "an integer");
-    return value_.get<int>();
+  [[nodiscard]] int integer(int least = std::numeric_limits<int>::min()) const {
+    const std::string allowed =
+        least == std::numeric_limits<int>::min() ? "an integer" : "an integer from " + std::to_string(least);
+    if (!value_.is_number_integer()) fail(key_, "is " + shown(), allowed);
+    const auto v = value_.get<std::int64_t>();
+    if (v < least || v > std::numeric_limits<int>::max()) fail(key_, "is " + shown(), allowed);
+    return static_cast<int>(v);
   }
   [[nodiscard]] std::string text() const {
     if (!value_.is_string()) fail(key_, "is " + shown(), "a string");
@@ -144,18 +151,18 @@ CompareRun read_compare(const Field& root, const fs::path& dir) {
   for (const Field& c : root["crops"].elements()) {
     WorstRegion& w = run.regions.emplace_back();
     w.file = c["file"].file_name();
-    w.x = c["x"].integer();
-    w.y = c["y"].integer();
-    w.size = c["size"].integer();
+    w.x = c["x"].integer(0);
+    w.y = c["y"].integer(0);
+    w.size = c["size"].integer(1);
     const fs::path strip = dir / w.file;
     require_file(strip, root);
     const auto dims = check_png_header(strip);
     if (!dims) throw InputError(strip.string() + ": not a PNG file; " + root.file().string() + " names it");
     // compare writes cell and gap since the report; older outputs: the strip's height, 2-px gaps.
-    w.cell = c.has("cell") ? c["cell"].integer() : static_cast<int>(dims->second);
-    w.gap = c.has("gap") ? c["gap"].integer() : 2;
-    const std::int64_t width = static_cast<std::int64_t>(columns) * (w.cell + w.gap) - w.gap;
-    if (w.cell < 1 || w.gap < 0 || dims->first != width || dims->second != w.cell)
+    w.cell = c.has("cell") ? c["cell"].integer(1) : static_cast<int>(dims->second);
+    w.gap = c.has("gap") ? c["gap"].integer(0) : 2;
+    const std::int64_t width = static_cast<std::int64_t>(columns) * (static_cast<std::int64_t>(w.cell) + w.gap) - w.gap;
+    if (dims->first != width || dims->second != w.cell)
       throw InputError(strip.string() + ": is " + std::to_string(dims->first) + "x" + std::to_string(dims->second) +
                        "; allowed: the strip of " + std::to_string(columns) + " crops (reference and methods) of " +
                        std::to_string(w.cell) + " px, " + std::to_string(w.gap) + " px apart, that " +
@@ -166,7 +173,7 @@ CompareRun read_compare(const Field& root, const fs::path& dir) {
 
 AnimateRun read_animate(const Field& root, const fs::path& dir) {
   AnimateRun run;
-  run.frames = root["frames"].integer();
+  run.frames = root["frames"].integer(1);
   run.reference_noise_rmse = root["reference_noise_rmse"].number();
   run.flicker_floor = root["flicker_floor"].number();
   std::vector<std::string> streams{"reference"};
@@ -186,7 +193,7 @@ AnimateRun read_animate(const Field& root, const fs::path& dir) {
 
 BenchRun read_bench(const Field& root) {
   BenchRun run;
-  run.frames = root["frames"].integer();
+  run.frames = root["frames"].integer(1);
   for (const Field& m : root["methods"].some_elements()) {
     BenchRow& r = run.rows.emplace_back();
     r.method = m["method"].text();  // "(unshaded)" too: bench shows no files by method name
@@ -291,8 +298,8 @@ ReportInputs read_report_inputs(const std::vector<fs::path>& inputs) {
       if (const int seen = ids[id]++; seen > 0) id += "~" + std::to_string(seen + 1);
       run.id = id;
       run.scene = root["scene"].text();
-      run.width = root["width"].integer();
-      run.height = root["height"].integer();
+      run.width = root["width"].integer(1);
+      run.height = root["height"].integer(1);
       run.facts = facts_of(j);
       if (kind == "compare")
         run.data = read_compare(root, run.dir);

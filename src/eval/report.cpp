@@ -20,8 +20,8 @@ namespace {
 
 /// OutputStage moves entries by rename(), which cannot replace a folder that is not empty: the
 /// old assets/ steps aside first, under a temporary name the next stage removes if this process
-/// dies, and comes back if publishing fails. index.html moves last, so the page a reader opens
-/// names only assets already there.
+/// dies, and comes back if publishing fails. index.html moves last: the new page never names an
+/// asset not yet there (the old page lacks its assets only between the two renames).
 void publish_replacing_assets(OutputStage& stage, const fs::path& out) {
   const fs::path assets = out / "assets";
   const fs::path aside = out / (".tmp-" + std::to_string(::getpid()) + "-assets");

@@ -15,6 +15,7 @@ set(glintlab_test_costs
   "^Podee\\.BeatsConventionalOnTheNearMirrorScenes$" 20
   "^Reference\\.SubPixelHighlightOfAMirrorSphere" 15
   "^Cli\\.SameCommandWritesIdenticalFiles$" 15
+  "^Report\\.ChromiumLoadsEveryImageAndVideoAndTheSliderMoves$" 12
   "^SpecularAA\\." 12
   "^QuadLight\\.EveryMethodRendersItFinite$" 12
   "^SpotLight\\.EveryMethodShades" 10

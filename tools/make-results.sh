@@ -6,7 +6,8 @@
 #   tools/make-results.sh SECTION      one section, spliced into docs/results.md between its
 #                                      markers: ground-truth, aa, podee, glints, binomial-glints,
 #                                      area-lights, area-glints, prefiltered-glints, speed
-# It installs what it uses (jq, ffmpeg) and builds what it needs.
+# It installs what it uses (jq, ffmpeg) and builds what it needs. After the sections, `glintlab
+# report` writes the HTML report of the runs: docs/report/ (headline runs) and out/results/report/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/install-deps.sh results
@@ -600,6 +601,22 @@ speed_section() {
   mv README.md.tmp README.md
 }
 
+# --- the HTML report (docs/report.md) ---------------------------------------------------------------
+
+# Every run under $out: $out/report/index.html (about 33 MB with its images and videos; not
+# committed). The headline runs of each section: docs/report/ (about 9 MB; committed, linked from
+# the README). Runs a section has not made yet are left out.
+report_runs="spheres tubes animate-spheres animate-tubes bench podee-sphere podee-mirror-disk-1024 animate-mirror-disk
+  podee-bench glints-glint-sphere-0 glints-anim-glint-sphere-0 glints-bench binomial/bin binomial/anim-bin
+  binomial/bench-bin area-lights/sphere-0.1 area-glints/gl-on area-glints/anim-gl-on area-glints/bench
+  prefiltered/normal-glints-flakes-near prefiltered/normal-glints-flakes-far prefiltered/normal-glints-flakes-anim"
+write_reports() {
+  $B report -o "$out/report" "$out"
+  local inputs=() r
+  for r in $report_runs; do if [[ -d "$out/$r" ]]; then inputs+=("$out/$r"); fi; done
+  if [[ ${#inputs[@]} -gt 0 ]]; then $B report -o docs/report "${inputs[@]}"; fi
+}
+
 header() {
   echo "# Measured results"
   echo
@@ -624,6 +641,7 @@ if [[ $# -gt 0 && "$1" != all ]]; then
     $0 == "<!-- /section:" s " -->" { skip = 0; next } !skip { print }' docs/results.md > docs/results.md.tmp
   mv docs/results.md.tmp docs/results.md
   echo "wrote the $1 section of docs/results.md"
+  write_reports
   exit 0
 fi
 {
@@ -632,3 +650,4 @@ fi
 } > "$out/results.md"
 mv "$out/results.md" docs/results.md
 echo "wrote docs/results.md"
+write_reports

@@ -10,6 +10,7 @@
 #include "eval/outputs.hpp"
 #include "eval/prefilter_report.hpp"
 #include "eval/progress.hpp"
+#include "eval/report.hpp"
 #include "eval/session.hpp"
 #include "render/reference_cache.hpp"
 #include "render/tables/gpu_tables.hpp"
@@ -241,6 +242,13 @@ int run_cli(int argc, char** argv) {
   prefilter->add_flag("--no-cache", prefilter_no_cache, "precompute even if the cache holds the pyramid");
   prefilter->add_option("-o,--out", prefilter_json, "also write the report as JSON to this file");
 
+  auto* report = app.add_subcommand("report", "a static HTML page (index.html, assets/) of compare, animate and bench "
+                                               "outputs: sortable metrics, a reference/method slider, videos, plots");
+  std::vector<std::string> report_inputs;
+  std::string report_out;
+  report->add_option("inputs", report_inputs, "output directories, searched for metrics.json and bench.json")->required();
+  report->add_option("-o,--out", report_out, "the report's directory")->required();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -286,6 +294,8 @@ int run_cli(int argc, char** argv) {
       run_prefilter_report(load_scene(prefilter_scene), prefilter_o);
     } else if (app.got_subcommand("view")) {
       return run_view(view_o, view_options);
+    } else if (app.got_subcommand("report")) {
+      run_report({report_inputs.begin(), report_inputs.end()}, report_out);
     } else if (app.got_subcommand("bench")) {
       const auto methods = resolve_methods(bench_o.methods, bench_o.params);
       Session session(bench_o, Workload{.methods = 1});

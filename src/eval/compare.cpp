@@ -48,15 +48,18 @@ std::vector<Region> worst_regions(const Image& error_sum, int size, int count) {
   return chosen;
 }
 
-/// Crops of the reference and each method side by side, enlarged, with 2-pixel gaps: an empty
+/// White pixels between the crops of a strip (metrics.json's crops[].gap).
+constexpr int kStripGap = 2;
+
+/// Crops of the reference and each method side by side, enlarged, kStripGap apart: an empty
 /// strip for `columns` crops of `r`; paste_crop fills one column.
 Image side_by_side_strip(int columns, const Region& r, int zoom) {
-  const int cell = r.size * zoom, gap = 2;
+  const int cell = r.size * zoom, gap = kStripGap;
   return Image(columns * (cell + gap) - gap, cell, glm::vec3(1.0f));
 }
 
 void paste_crop(Image& strip, int column, const Image& display, const Region& r, int zoom) {
-  const int cell = r.size * zoom, gap = 2;
+  const int cell = r.size * zoom, gap = kStripGap;
   const Image crop = display.crop(r.x, r.y, r.size, r.size).upscale(zoom);
   for (int y = 0; y < crop.height(); ++y)
     for (int x = 0; x < crop.width(); ++x) strip.at(column * (cell + gap) + x, y) = crop.at(x, y);
@@ -135,7 +138,14 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
   for (std::size_t r = 0; r < regions.size(); ++r) {
     const std::string name = "worst-region-" + std::to_string(r + 1) + ".png";
     write_png(staged / name, strips[r]);
-    crops.push_back({{"file", name}, {"x", regions[r].x}, {"y", regions[r].y}, {"size", regions[r].size}});
+    // zoom, cell (its side in the strip) and gap: what `glintlab report` needs to label each crop.
+    crops.push_back({{"file", name},
+                     {"x", regions[r].x},
+                     {"y", regions[r].y},
+                     {"size", regions[r].size},
+                     {"zoom", zooms[r]},
+                     {"cell", regions[r].size * zooms[r]},
+                     {"gap", kStripGap}});
   }
 
   std::ostringstream csv;

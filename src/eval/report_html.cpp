@@ -1,0 +1,215 @@
+#include "eval/report_html.hpp"
+
+#include <cstdio>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string_view>
+
+#include "core/colour.hpp"
+#include "core/error.hpp"
+#include "core/image.hpp"
+#include "eval/report_svg.hpp"
+
+namespace glintlab {
+
+// Generated from src/eval/report/ (glintlab_embed_files in src/eval/CMakeLists.txt).
+const std::map<std::string, std::string_view>& report_template_files();
+
+namespace {
+
+using nlohmann::json;
+
+/// A table column, `digits` significant digits shown: which way is better ("lower", "higher" or
+/// "one": closest to 1), and what differences in it the page may call a ranking: more than twice
+/// `noise`, or for a column with per-row standard errors (`error_key`), more than twice those of
+/// the two rows combined.
+json column(const std::string& key, const std::string& label, const std::string& better, int digits) {
+  return {{"key", key}, {"label", label}, {"better", better}, {"digits", digits}};
+}
+
+json with_noise(json c, double noise, const std::string& noise_label) {
+  c["noise"] = noise;
+  c["noise_label"] = noise_label;
+  return c;
+}
+
+json with_error(json c, const std::string& error_key) {
+  c["error_key"] = error_key;
+  return c;
+}
+
+/// The colours of compare's error maps from 0 to their scale, as a CSS gradient: false_colour
+/// itself evaluated at even steps, so the legend is the ramp the maps were painted with.
+std::string error_ramp_css() {
+  constexpr int steps = 17;
+  Image values(steps, 1);
+  for (int i = 0; i < steps; ++i) values.at(i, 0) = glm::vec3(static_cast<float>(i) / (steps - 1));
+  const Image colours = false_colour(values, 1.0f);
+  std::string css = "linear-gradient(to right";
+  for (int i = 0; i < steps; ++i) {
+    const glm::vec3 c = glm::clamp(colours.at(i, 0), 0.0f, 1.0f) * 255.0f + 0.5f;
+    char stop[64];
+    std::snprintf(stop, sizeof stop, ", rgb(%d,%d,%d) %.2f%%", static_cast<int>(c.r), static_cast<int>(c.g),
+                  static_cast<int>(c.b), 100.0 * i / (steps - 1));
+    css += stop;
+  }
+  return css + ")";
+}
+
+json compare_data(const CompareRun& c, const std::string& assets) {
+  const double noise = c.reference_noise_rmse;
+  const std::string noise_label = "the reference's noise RMSE";
+  json table = {
+      {"sort", "rmse"},
+      {"columns",
+       {column("method", "method", "", 0), with_noise(column("rmse", "RMSE", "lower", 4), noise, noise_label),
+        with_noise(column("rmse_specular", "RMSE specular", "lower", 4), noise, noise_label),
+        column("psnr", "PSNR (dB)", "higher", 3),
+        with_error(column("energy_ratio", "energy ratio", "one", 4), "energy_ratio_error"),
+        with_error(column("energy_ratio_specular", "energy ratio specular", "one", 4), "energy_ratio_specular_error"),
+        column("max_error", "max error", "lower", 4)}},
+      {"floors", {{{"label", "(reference noise)"}, {"values", {{"rmse", noise}, {"rmse_specular", noise}}}}}}};
+  json images = {{"reference", assets + "/reference.png"}, {"methods", json::array()}};
+  json columns = {"reference"};
+  for (const auto& r : c.rows) {
+    table["rows"].push_back({{"method", r.method},
+                             {"rmse", r.rmse},
+                             {"rmse_specular", r.rmse_specular},
+                             {"psnr", r.psnr},
+                             {"energy_ratio", r.energy_ratio},
+                             {"energy_ratio_error", r.energy_ratio_error},
+                             {"energy_ratio_specular", r.energy_ratio_specular},
+                             {"energy_ratio_specular_error", r.energy_ratio_specular_error},
+                             {"max_error", r.max_error}});
+    images["methods"].push_back({{"method", r.method},
+                                 {"image", assets + "/" + r.method + ".png"},
+                                 {"error", assets + "/" + r.method + "-error.png"}});
+    columns.push_back(r.method);
+  }
+  json regions = json::array();
+  for (const auto& w : c.regions)
+    regions.push_back(
+        {{"strip", assets + "/" + w.file}, {"x", w.x}, {"y", w.y}, {"size", w.size}, {"cell", w.cell}, {"gap", w.gap}});
+  return {{"table", table},
+          {"images", images},
+          {"regions", regions},
+          {"columns", columns},
+          {"error_map_scale", c.error_map_scale},
+          {"error_ramp", error_ramp_css()}};
+}
+
+json animate_data(const AnimateRun& a, const std::string& assets) {
+  json table = {{"sort", "mean_rmse"},
+                {"columns",
+                 {column("method", "method", "", 0),
+                  with_noise(column("mean_rmse", "mean RMSE", "lower", 4), a.reference_noise_rmse,
+                             "the reference's noise RMSE (mean over frames)"),
+                  with_noise(column("flicker", "flicker", "lower", 4), a.flicker_floor, "the flicker floor")}},
+                {"floors",
+                 {{{"label", "(reference floor)"},
+                   {"values", {{"mean_rmse", a.reference_noise_rmse}, {"flicker", a.flicker_floor}}}}}}};
+  std::vector<PlotSeries> series;
+  std::vector<PlotBar> flicker;
+  for (std::size_t i = 0; i < a.rows.size(); ++i) {
+    const auto& r = a.rows[i];
+    table["rows"].push_back({{"method", r.method}, {"mean_rmse", r.mean_rmse}, {"flicker", r.flicker}});
+    series.push_back({r.method, r.rmse_per_frame});
+    flicker.push_back({r.method, r.flicker, "", false, i});
+  }
+  json videos = json::array();
+  for (const auto& v : a.videos) videos.push_back({{"name", v}, {"src", assets + "/" + v + ".mp4"}});
+  json plots = {line_plot_svg("RMSE of each frame against the reference", "RMSE", series,
+                              {{"reference noise RMSE", a.reference_noise_rmse}}),
+                bar_chart_svg("Flicker over the frames", "", flicker, {{"flicker floor", a.flicker_floor}})};
+  return {{"table", table}, {"videos", videos}, {"plots", plots}, {"frames", a.frames}};
+}
+
+json bench_data(const BenchRun& b) {
+  // Ratios to conventional, the method every paper measures against; to the first row without it.
+  const BenchRow* base = &b.rows.front();
+  for (const auto& r : b.rows)
+    if (r.method == "conventional") base = &r;
+  const std::string base_name = base->method;
+  auto ratio = [](double ms, double base_ms) { return base_ms > 0 ? ms / base_ms : 0.0; };
+  json table = {{"sort", "wall_ms"},
+                {"base", base_name},
+                {"columns",
+                 {column("method", "method", "", 0), column("wall_ms", "wall ms", "lower", 4),
+                  column("wall_ratio", "wall / " + base_name, "lower", 3), column("gpu_ms", "GPU ms", "lower", 4),
+                  column("gpu_ratio", "GPU / " + base_name, "lower", 3)}},
+                {"floors", json::array()}};
+  std::vector<PlotBar> wall, gpu;
+  char note[64];
+  for (std::size_t i = 0; i < b.rows.size(); ++i) {
+    const auto& r = b.rows[i];
+    const bool method = r.method.empty() || r.method[0] != '(';  // "(unshaded)": the floor, not a method
+    const double wall_ratio = ratio(r.wall_ms, base->wall_ms), gpu_ratio = ratio(r.gpu_ms, base->gpu_ms);
+    table["rows"].push_back({{"method", r.method},
+                             {"wall_ms", r.wall_ms},
+                             {"wall_ratio", wall_ratio},
+                             {"gpu_ms", r.gpu_ms},
+                             {"gpu_ratio", gpu_ratio},
+                             {"muted", !method}});
+    std::snprintf(note, sizeof note, "x%.2f of %s", wall_ratio, base_name.c_str());
+    wall.push_back({r.method, r.wall_ms, note, !method, i});
+    std::snprintf(note, sizeof note, "x%.2f of %s", gpu_ratio, base_name.c_str());
+    gpu.push_back({r.method, r.gpu_ms, note, !method, i});
+  }
+  json plots = {bar_chart_svg("Wall time per frame (draw + glFinish, median)", "ms", wall, {}),
+                bar_chart_svg("GPU time per frame (GL_TIME_ELAPSED, median)", "ms", gpu, {})};
+  return {{"table", table}, {"plots", plots}, {"frames", b.frames}};
+}
+
+/// The page's script, one concept a file, concatenated in this order into one <script>: each part
+/// uses the helpers of those before it.
+constexpr const char* kScriptParts[] = {"common.js",     "table.js",    "viewer.js", "sections.js",
+                                        "navigation.js", "selftest.js", "main.js"};
+
+std::string template_file(const std::string& name) {
+  const auto& files = report_template_files();
+  const auto it = files.find(name);
+  if (it == files.end()) throw RuntimeFailure("report template " + name + " is not embedded in this build");
+  return std::string(it->second);
+}
+
+void replace_once(std::string& text, const std::string& placeholder, const std::string& value) {
+  const auto at = text.find(placeholder);
+  if (at == std::string::npos) throw RuntimeFailure("report template: no " + placeholder + " in page.html");
+  text.replace(at, placeholder.size(), value);
+}
+
+}  // namespace
+
+std::string report_asset_folder(const ReportRun& run) { return "assets/" + run.id; }
+
+std::string report_page(const ReportInputs& inputs) {
+  json runs = json::array();
+  for (const auto& run : inputs.runs) {
+    json facts = json::array();
+    for (const auto& [label, value] : run.facts) facts.push_back({label, value});
+    json r = {{"id", run.id},       {"kind", run.kind()},   {"scene", run.scene},
+              {"width", run.width}, {"height", run.height}, {"facts", facts}};
+    const std::string assets = report_asset_folder(run);
+    if (const auto* c = std::get_if<CompareRun>(&run.data))
+      r.update(compare_data(*c, assets));
+    else if (const auto* a = std::get_if<AnimateRun>(&run.data))
+      r.update(animate_data(*a, assets));
+    else
+      r.update(bench_data(std::get<BenchRun>(run.data)));
+    runs.push_back(r);
+  }
+  // JSON inside <script>: '<' only occurs in strings there, where \u003c means the same and no
+  // "</script>" or "<!--" can end the element early.
+  std::string data;
+  for (const char c : json{{"runs", runs}}.dump(-1, ' ', false, json::error_handler_t::replace))
+    data += c == '<' ? std::string("\\u003c") : std::string(1, c);
+  std::string page = template_file("page.html");
+  replace_once(page, "/*@STYLE@*/", template_file("report.css"));
+  std::string script;
+  for (const char* part : kScriptParts) script += template_file(part) + "\n";
+  replace_once(page, "/*@SCRIPT@*/", script);
+  replace_once(page, "@DATA@", data);  // last: the data may hold any text
+  return page;
+}
+
+}  // namespace glintlab

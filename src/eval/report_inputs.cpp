@@ -1,0 +1,337 @@
+#include "eval/report_inputs.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "core/png_header_check.hpp"
+
+namespace glintlab {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+/// A value inside a metrics file, with the way to it ("methods[2].rmse") for error messages.
+class Field {
+ public:
+  Field(const json& value, const fs::path& file, std::string key) : value_(value), file_(file), key_(std::move(key)) {}
+
+  [[nodiscard]] bool has(const std::string& name) const { return value_.is_object() && value_.contains(name); }
+  [[nodiscard]] Field operator[](const std::string& name) const {
+    const std::string key = key_.empty() ? name : key_ + "." + name;
+    if (!value_.is_object() || !value_.contains(name))
+      fail(key, "is missing", "the key, as glintlab's compare, animate and bench write it");
+    return {value_.at(name), file_, key};
+  }
+  [[nodiscard]] std::vector<Field> elements() const {
+    if (!value_.is_array()) fail(key_, "is " + shown(), "an array");
+    std::vector<Field> all;
+    for (std::size_t i = 0; i < value_.size(); ++i)
+      all.emplace_back(value_[i], file_, key_ + "[" + std::to_string(i) + "]");
+    return all;
+  }
+  /// The elements of an array that must hold at least one (a run's methods).
+  [[nodiscard]] std::vector<Field> some_elements() const {
+    std::vector<Field> all = elements();
+    if (all.empty()) fail(key_, "is empty", "at least one entry");
+    return all;
+  }
+  [[nodiscard]] double number() const {
+    if (!value_.is_number()) fail(key_, "is " + shown(), "a number");
+    return value_.get<double>();
+  }
+  [[nodiscard]] int integer(int least = std::numeric_limits<int>::min()) const {
+    const std::string allowed =
+        least == std::numeric_limits<int>::min() ? "an integer" : "an integer from " + std::to_string(least);
+    if (!value_.is_number_integer()) fail(key_, "is " + shown(), allowed);
+    const auto v = value_.get<std::int64_t>();
+    if (v < least || v > std::numeric_limits<int>::max()) fail(key_, "is " + shown(), allowed);
+    return static_cast<int>(v);
+  }
+  [[nodiscard]] std::string text() const {
+    if (!value_.is_string()) fail(key_, "is " + shown(), "a string");
+    return value_.get<std::string>();
+  }
+  /// A method id or a file name: used as a path inside the run's directory, so nothing that leaves it.
+  [[nodiscard]] std::string file_name() const {
+    const std::string name = text();
+    const bool plain = !name.empty() && name[0] != '.' && std::all_of(name.begin(), name.end(), [](unsigned char c) {
+      return std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '+';
+    });
+    if (!plain)
+      fail(key_, "is " + shown(), "a plain name of letters, digits, '-', '_', '.', '+' (not starting with '.')");
+    return name;
+  }
+  [[nodiscard]] const fs::path& file() const { return file_; }
+
+ private:
+  [[noreturn]] void fail(const std::string& key, const std::string& what, const std::string& allowed) const {
+    throw InputError(file_.string() + ": key '" + key + "' " + what + "; allowed: " + allowed);
+  }
+  [[nodiscard]] std::string shown() const {
+    std::string s = value_.dump(-1, ' ', false, json::error_handler_t::replace);
+    return s.size() > 40 ? s.substr(0, 40) + "..." : s;
+  }
+
+  const json& value_;
+  fs::path file_;
+  std::string key_;
+};
+
+std::string number_text(double v) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%.4g", v);
+  return s;
+}
+
+/// Label and value of the optional keys that describe a run, in display order.
+std::vector<std::pair<std::string, std::string>> facts_of(const json& j) {
+  static const std::vector<std::pair<const char*, const char*>> keys = {
+      {"device", "device"},
+      {"frame", "frame"},
+      {"frames", "frames"},
+      {"warmup", "warm-up frames"},
+      {"reference_backend", "reference backend"},
+      {"reference_filter", "reference pixel filter"},
+      {"reference_spp_min", "reference spp (least)"},
+      {"reference_spp", "reference spp"},
+      {"reference_passes", "reference passes"},
+      {"reference_auto", "reference spp auto"},
+      {"reference_noise_rmse", "reference noise RMSE"},
+      {"reference_energy_error", "reference energy error (relative)"},
+      {"flicker_floor", "flicker floor"},
+      {"error_map_scale", "error map scale (full colour)"}};
+  std::vector<std::pair<std::string, std::string>> facts;
+  for (const auto& [key, label] : keys) {
+    if (!j.contains(key)) continue;
+    const json& v = j.at(key);
+    if (v.is_string())
+      facts.emplace_back(label, v.get<std::string>());
+    else if (v.is_boolean())
+      facts.emplace_back(label, v.get<bool>() ? "yes" : "no");
+    else if (v.is_number())
+      facts.emplace_back(label, number_text(v.get<double>()));
+  }
+  return facts;
+}
+
+void require_file(const fs::path& file, const Field& from) {
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec))
+    throw InputError(file.string() + ": missing; " + from.file().string() +
+                     " names it (a run's files are published together)");
+}
+
+CompareRun read_compare(const Field& root, const fs::path& dir) {
+  CompareRun run;
+  run.reference_noise_rmse = root["reference_noise_rmse"].number();
+  run.error_map_scale = root["error_map_scale"].number();
+  for (const Field& m : root["methods"].some_elements()) {
+    CompareRow& r = run.rows.emplace_back();
+    r.method = m["method"].file_name();
+    r.rmse = m["rmse"].number();
+    r.rmse_specular = m["rmse_specular"].number();
+    r.psnr = m["psnr"].number();
+    r.max_error = m["max_error"].number();
+    r.energy_ratio = m["energy_ratio"].number();
+    r.energy_ratio_error = m["energy_ratio_error"].number();
+    r.energy_ratio_specular = m["energy_ratio_specular"].number();
+    r.energy_ratio_specular_error = m["energy_ratio_specular_error"].number();
+  }
+  const int columns = static_cast<int>(run.rows.size()) + 1;
+  for (const Field& c : root["crops"].elements()) {
+    WorstRegion& w = run.regions.emplace_back();
+    w.file = c["file"].file_name();
+    w.x = c["x"].integer(0);
+    w.y = c["y"].integer(0);
+    w.size = c["size"].integer(1);
+    const fs::path strip = dir / w.file;
+    require_file(strip, root);
+    const auto dims = check_png_header(strip);
+    if (!dims) throw InputError(strip.string() + ": not a PNG file; " + root.file().string() + " names it");
+    // compare writes cell and gap since the report; older outputs: the strip's height, 2-px gaps.
+    w.cell = c.has("cell") ? c["cell"].integer(1) : static_cast<int>(dims->second);
+    w.gap = c.has("gap") ? c["gap"].integer(0) : 2;
+    const std::int64_t width = static_cast<std::int64_t>(columns) * (static_cast<std::int64_t>(w.cell) + w.gap) - w.gap;
+    if (dims->first != width || dims->second != w.cell)
+      throw InputError(strip.string() + ": is " + std::to_string(dims->first) + "x" + std::to_string(dims->second) +
+                       "; allowed: the strip of " + std::to_string(columns) + " crops (reference and methods) of " +
+                       std::to_string(w.cell) + " px, " + std::to_string(w.gap) + " px apart, that " +
+                       root.file().string() + " describes: " + std::to_string(width) + "x" + std::to_string(w.cell));
+  }
+  return run;
+}
+
+AnimateRun read_animate(const Field& root, const fs::path& dir) {
+  AnimateRun run;
+  run.frames = root["frames"].integer(1);
+  run.reference_noise_rmse = root["reference_noise_rmse"].number();
+  run.flicker_floor = root["flicker_floor"].number();
+  std::vector<std::string> streams{"reference"};
+  for (const Field& m : root["methods"].some_elements()) {
+    AnimateRow& r = run.rows.emplace_back();
+    r.method = m["method"].file_name();
+    r.mean_rmse = m["mean_rmse"].number();
+    r.flicker = m["flicker"].number();
+    for (const Field& v : m["rmse_per_frame"].elements()) r.rmse_per_frame.push_back(v.number());
+    streams.push_back(r.method);
+  }
+  std::error_code ec;
+  for (const auto& s : streams)
+    if (fs::is_regular_file(dir / (s + ".mp4"), ec)) run.videos.push_back(s);
+  return run;
+}
+
+BenchRun read_bench(const Field& root) {
+  BenchRun run;
+  run.frames = root["frames"].integer(1);
+  for (const Field& m : root["methods"].some_elements()) {
+    BenchRow& r = run.rows.emplace_back();
+    r.method = m["method"].text();  // "(unshaded)" too: bench shows no files by method name
+    r.gpu_ms = m["gpu_ms_median"].number();
+    r.wall_ms = m["wall_ms_median"].number();
+  }
+  return run;
+}
+
+json parse_json_file(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file.string() + ": cannot be read");
+  std::stringstream text;
+  text << in.rdbuf();
+  try {
+    return json::parse(text.str());
+  } catch (const json::parse_error& e) {
+    throw InputError(file.string() + ": not valid JSON (" + e.what() + "); allowed: the metrics glintlab writes");
+  }
+}
+
+/// The kind of run a metrics file holds, by its keys; empty if none.
+std::string kind_of(const json& j) {
+  if (!j.is_object()) return "";
+  if (j.contains("crops")) return "compare";
+  if (j.contains("flicker_floor")) return "animate";
+  if (j.contains("methods") && j["methods"].is_array() && !j["methods"].empty() && j["methods"][0].is_object() &&
+      j["methods"][0].contains("wall_ms_median"))
+    return "bench";
+  return "";
+}
+
+/// A path-like id made of safe characters: it names the run's folder under assets/ and its URL.
+std::string id_text(const fs::path& relative) {
+  std::string id = relative.generic_string();
+  for (char& c : id)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.' && c != '/') c = '_';
+  return id;
+}
+
+/// The folder all inputs are in (for one input, the input itself): run ids are paths below it,
+/// so that `report out/a/x out/b` names its runs a/x/... and b/..., as `report out` would.
+fs::path common_folder(const std::vector<fs::path>& inputs) {
+  fs::path common = fs::weakly_canonical(fs::absolute(inputs.front()));
+  for (const fs::path& input : inputs) {
+    const fs::path p = fs::weakly_canonical(fs::absolute(input));
+    fs::path shared;
+    for (auto a = common.begin(), b = p.begin(); a != common.end() && b != p.end() && *a == *b; ++a, ++b) shared /= *a;
+    common = shared;
+  }
+  return common;
+}
+
+}  // namespace
+
+const char* ReportRun::kind() const {
+  static constexpr const char* names[] = {"compare", "animate", "bench"};
+  return names[data.index()];
+}
+
+ReportInputs read_report_inputs(const std::vector<fs::path>& inputs) {
+  if (inputs.empty())
+    throw InputError("report: no INPUT given; allowed: output directories of compare, animate, bench");
+  for (const fs::path& input : inputs) {
+    std::error_code ec;
+    if (!fs::is_directory(input, ec))
+      throw InputError(input.string() + ": " + (fs::exists(input, ec) ? "not a directory" : "no such directory") +
+                       "; allowed: an output directory of compare, animate or bench, or a folder above them");
+  }
+  const fs::path base = common_folder(inputs);
+  ReportInputs result;
+  std::map<std::string, int> ids;
+  for (const fs::path& input : inputs) {
+    std::error_code ec;
+    std::vector<fs::path> files;
+    for (auto it = fs::recursive_directory_iterator(input, ec); it != fs::recursive_directory_iterator();
+         it.increment(ec)) {
+      if (ec) throw InputError(input.string() + ": cannot be searched: " + ec.message());
+      const std::string name = it->path().filename().string();
+      if (!name.empty() && name[0] == '.') {
+        if (it->is_directory(ec)) it.disable_recursion_pending();
+        continue;
+      }
+      if ((name == "metrics.json" || name == "bench.json") && it->is_regular_file(ec)) files.push_back(it->path());
+    }
+    std::sort(files.begin(), files.end());
+    for (const fs::path& file : files) {
+      const json j = parse_json_file(file);
+      const std::string kind = kind_of(j);
+      if (kind.empty()) {
+        result.warnings.push_back(file.string() +
+                                  ": not a compare, animate or bench output (no 'crops', no "
+                                  "'flicker_floor', no methods[].wall_ms_median); skipped");
+        continue;
+      }
+      const Field root(j, file, "");
+      ReportRun run;
+      run.dir = file.parent_path();
+      run.metrics = file;
+      const fs::path relative = fs::weakly_canonical(fs::absolute(run.dir)).lexically_relative(base);
+      std::string id = id_text(relative.empty() || relative == "." ? base.filename() : relative);
+      if (const int seen = ids[id]++; seen > 0) id += "~" + std::to_string(seen + 1);
+      run.id = id;
+      run.scene = root["scene"].text();
+      run.width = root["width"].integer(1);
+      run.height = root["height"].integer(1);
+      run.facts = facts_of(j);
+      if (kind == "compare")
+        run.data = read_compare(root, run.dir);
+      else if (kind == "animate")
+        run.data = read_animate(root, run.dir);
+      else
+        run.data = read_bench(root);
+      for (const auto& asset : report_assets(run)) require_file(run.dir / asset, root);
+      result.runs.push_back(std::move(run));
+    }
+  }
+  if (result.runs.empty()) {
+    std::string list;
+    for (const auto& i : inputs) list += (list.empty() ? "" : ", ") + i.string();
+    throw InputError(list + ": no compare, animate or bench output (metrics.json, bench.json) found");
+  }
+  return result;
+}
+
+std::vector<std::string> report_assets(const ReportRun& run) {
+  std::vector<std::string> files;
+  if (const auto* c = std::get_if<CompareRun>(&run.data)) {
+    files.push_back("reference.png");
+    for (const auto& r : c->rows) {
+      files.push_back(r.method + ".png");
+      files.push_back(r.method + "-error.png");
+    }
+    for (const auto& w : c->regions) files.push_back(w.file);
+  } else if (const auto* a = std::get_if<AnimateRun>(&run.data)) {
+    for (const auto& v : a->videos) files.push_back(v + ".mp4");
+  }
+  return files;
+}
+
+}  // namespace glintlab

@@ -1,0 +1,89 @@
+#pragma once
+// What `glintlab report` reads: the output directories of compare, animate and bench, found by
+// searching the inputs for metrics.json and bench.json and told apart by their keys. Everything
+// is checked before the report writes a byte: a missing key, a broken file or a missing image
+// throws InputError naming the file and the key.
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace glintlab {
+
+struct CompareRow {
+  std::string method;
+  double rmse = 0, rmse_specular = 0, psnr = 0, max_error = 0;
+  double energy_ratio = 0, energy_ratio_error = 0;
+  double energy_ratio_specular = 0, energy_ratio_specular_error = 0;
+};
+
+/// One worst-region strip of compare: crops of the reference, then of each method in order, each
+/// `cell` pixels square, `gap` pixels apart.
+struct WorstRegion {
+  std::string file;
+  int x = 0, y = 0, size = 0;
+  int cell = 0, gap = 0;
+};
+
+struct CompareRun {
+  std::vector<CompareRow> rows;
+  std::vector<WorstRegion> regions;
+  double reference_noise_rmse = 0;
+  double error_map_scale = 0;
+};
+
+struct AnimateRow {
+  std::string method;
+  double mean_rmse = 0, flicker = 0;
+  std::vector<double> rmse_per_frame;
+};
+
+struct AnimateRun {
+  std::vector<AnimateRow> rows;
+  int frames = 0;
+  double reference_noise_rmse = 0;  ///< mean over frames
+  double flicker_floor = 0;
+  /// The MP4 of each stream ("reference", then the methods) that exists; others have none (animate
+  /// writes PNG frames instead when ffmpeg is missing or fails).
+  std::vector<std::string> videos;
+};
+
+struct BenchRow {
+  std::string method;
+  double gpu_ms = 0, wall_ms = 0;
+};
+
+struct BenchRun {
+  std::vector<BenchRow> rows;
+  int frames = 0;
+};
+
+/// One output directory's run.
+struct ReportRun {
+  std::string id;                 ///< unique in the report, path-like: "spheres", "area-lights/disk-0.1/ltc"
+  std::filesystem::path dir;      ///< the output directory
+  std::filesystem::path metrics;  ///< the JSON file it was read from
+  std::string scene;
+  int width = 0, height = 0;
+  /// Label and value of what describes the run (device, reference samples, ...), in display order.
+  std::vector<std::pair<std::string, std::string>> facts;
+  std::variant<CompareRun, AnimateRun, BenchRun> data;
+
+  [[nodiscard]] const char* kind() const;
+};
+
+struct ReportInputs {
+  std::vector<ReportRun> runs;
+  std::vector<std::string> warnings;  ///< files skipped: metrics of no known kind
+};
+
+/// Searches each input directory recursively (hidden folders skipped) for metrics.json and
+/// bench.json, in path order. Throws InputError for an input that is not a directory, a file that
+/// is not JSON or misses a key of its kind, a file it names that is missing, or no run at all.
+ReportInputs read_report_inputs(const std::vector<std::filesystem::path>& inputs);
+
+/// The file names a run's section shows, in its directory: images, error maps, strips, videos.
+std::vector<std::string> report_assets(const ReportRun& run);
+
+}  // namespace glintlab

@@ -144,7 +144,9 @@ TEST(FootprintKernels, TheRectangleWidensAtLeastAsMuchAsTheCovarianceAlongTheSlo
     EXPECT_GE(gpu[i].y, -tol) << i;
     // Peak density 1 / (pi sqrt(det A')): the rectangle's is never higher.
     EXPECT_LE(gpu[i].w, gpu[i].z * (1 + 1e-5)) << i;
-    if (a[i].w > 0.5f) EXPECT_NEAR(gpu[i].w, gpu[i].z, 1e-5 * gpu[i].z) << "axis-aligned " << i;
+    if (a[i].w > 0.5f) {
+      EXPECT_NEAR(gpu[i].w, gpu[i].z, 1e-5 * gpu[i].z) << "axis-aligned " << i;
+    }
     if (gpu[i].w < gpu[i].z * 0.99) ++strict;
   }
   EXPECT_GT(strict, 100);  // the ordering is not vacuous

@@ -70,8 +70,6 @@ double disk_integral(const glm::dmat3& Minv, glm::dvec3 c, glm::dvec3 u, glm::dv
   return sum;
 }
 
-glm::vec4 column(const glm::dmat3& m, int i) { return glm::vec4(glm::dvec3(m[i]), 0.0); }
-
 /// Inverse matrices of lobes from the identity to sharp (1 / 0.02) and skewed, with det > 0, and a
 /// mirror-like one.
 std::vector<glm::dmat3> lobe_matrices() {

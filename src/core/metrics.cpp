@@ -92,10 +92,14 @@ void FlickerAccumulator::add_frame(const Image& method, const Image& reference) 
     error.pixels()[i] = method.pixels()[i] - reference.pixels()[i];
   if (frames_ > 0) {
     require_same_size(error, previous_error_);
+    double frame_sum = 0;
     for (std::size_t i = 0; i < error.pixel_count(); ++i)
       for (int c = 0; c < 3; ++c)
-        sum_ += std::abs(static_cast<double>(error.pixels()[i][c]) - previous_error_.pixels()[i][c]);
-    count_ += 3.0 * static_cast<double>(error.pixel_count());
+        frame_sum += std::abs(static_cast<double>(error.pixels()[i][c]) - previous_error_.pixels()[i][c]);
+    const double frame_count = 3.0 * static_cast<double>(error.pixel_count());
+    per_frame_.push_back(frame_count > 0 ? frame_sum / frame_count : 0.0);
+    sum_ += frame_sum;
+    count_ += frame_count;
   }
   previous_error_ = std::move(error);
   ++frames_;

@@ -1,6 +1,7 @@
 #pragma once
 // Image metrics against a reference, on linear radiance (never on tonemapped values).
 #include <optional>
+#include <vector>
 
 #include "core/image.hpp"
 
@@ -37,10 +38,13 @@ class FlickerAccumulator {
   void add_frame(const Image& method, const Image& reference);
   /// 0 until two frames were added.
   [[nodiscard]] double flicker() const;
+  /// The same mean for each frame t >= 1 alone (frames() - 1 values; flicker() is their mean).
+  [[nodiscard]] const std::vector<double>& per_frame() const { return per_frame_; }
   [[nodiscard]] int frames() const { return frames_; }
 
  private:
   Image previous_error_;
+  std::vector<double> per_frame_;
   double sum_ = 0;
   double count_ = 0;
   int frames_ = 0;

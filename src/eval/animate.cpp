@@ -38,7 +38,7 @@ void TemporalAccumulator::add_frame(const Image& method, const Image& reference)
 TemporalMetrics TemporalAccumulator::result(const std::string& method) const {
   const double sum = std::accumulate(rmse_per_frame_.begin(), rmse_per_frame_.end(), 0.0);
   return {method, rmse_per_frame_, rmse_per_frame_.empty() ? 0.0 : sum / static_cast<double>(rmse_per_frame_.size()),
-          flicker_.flicker()};
+          flicker_.flicker(), flicker_.per_frame()};
 }
 
 void FlickerFloor::add_frame(const ReferenceFrame& reference) {
@@ -50,7 +50,10 @@ void FlickerFloor::add_frame(const ReferenceFrame& reference) {
 }
 
 ReferenceFloor FlickerFloor::floor() const {
-  return {halves_.flicker() / std::sqrt(2.0), frames_ > 0 ? noise_sum_ / frames_ : 0.0, spp_min_, spp_max_};
+  std::vector<double> per_frame = halves_.per_frame();
+  for (double& f : per_frame) f /= std::sqrt(2.0);
+  return {halves_.flicker() / std::sqrt(2.0), frames_ > 0 ? noise_sum_ / frames_ : 0.0, spp_min_, spp_max_,
+          std::move(per_frame)};
 }
 
 AnimateResult run_animate(Session& session, const std::vector<MethodChoice>& methods,
@@ -86,6 +89,7 @@ AnimateResult run_animate(Session& session, const std::vector<MethodChoice>& met
   json["reference_auto"] = session.options().spp_auto;
   json["reference_noise_rmse"] = reference_floor.noise_rmse;
   json["flicker_floor"] = reference_floor.flicker;
+  json["flicker_floor_per_frame"] = reference_floor.flicker_per_frame;
   json["flicker_floor_definition"] =
       "flicker of the reference's even passes against its odd passes, over sqrt(2): the flicker a second "
       "independent reference would show against the first; smaller method differences are noise";
@@ -94,7 +98,11 @@ AnimateResult run_animate(Session& session, const std::vector<MethodChoice>& met
   for (std::size_t i = 0; i < methods.size(); ++i) {
     const auto& r = results.emplace_back(accumulators[i].result(methods[i].method->id));
     json["methods"].push_back(
-        {{"method", r.method}, {"mean_rmse", r.mean_rmse}, {"flicker", r.flicker}, {"rmse_per_frame", r.rmse_per_frame}});
+        {{"method", r.method},
+         {"mean_rmse", r.mean_rmse},
+         {"flicker", r.flicker},
+         {"rmse_per_frame", r.rmse_per_frame},
+         {"flicker_per_frame", r.flicker_per_frame}});
   }
   // Publish: MP4s when ffmpeg is there, otherwise the PNG frames themselves.
   const bool ffmpeg = have_ffmpeg();

@@ -23,6 +23,7 @@ struct TemporalMetrics {
   std::vector<double> rmse_per_frame;
   double mean_rmse = 0;
   double flicker = 0;
+  std::vector<double> flicker_per_frame;  ///< of each frame t >= 1 against t - 1 (flicker is their mean)
 };
 
 /// One method's error over a sequence, added frame by frame: the RMSE of each frame, their mean,
@@ -42,6 +43,7 @@ struct ReferenceFloor {
   double flicker = 0;     ///< the flicker a second independent reference would show against the first
   double noise_rmse = 0;  ///< the reference's noise RMSE, mean over frames
   int spp_min = 0, spp_max = 0;
+  std::vector<double> flicker_per_frame;  ///< the floor of each frame t >= 1
 };
 
 /// The flicker floor from the even and odd passes of each frame's reference: two independent

@@ -1,6 +1,7 @@
 #include "eval/report_html.hpp"
 
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string_view>
@@ -108,19 +109,29 @@ json animate_data(const AnimateRun& a, const std::string& assets) {
                 {"floors",
                  {{{"label", "(reference floor)"},
                    {"values", {{"mean_rmse", a.reference_noise_rmse}, {"flicker", a.flicker_floor}}}}}}};
-  std::vector<PlotSeries> series;
+  std::vector<PlotSeries> series, flicker_series;
   std::vector<PlotBar> flicker;
+  bool flicker_of_each_frame = true;
   for (std::size_t i = 0; i < a.rows.size(); ++i) {
     const auto& r = a.rows[i];
     table["rows"].push_back({{"method", r.method}, {"mean_rmse", r.mean_rmse}, {"flicker", r.flicker}});
     series.push_back({r.method, r.rmse_per_frame});
     flicker.push_back({r.method, r.flicker, "", false, i});
+    // Frame 0 has no flicker: it is the first difference's end that is plotted.
+    std::vector<double> values{std::numeric_limits<double>::quiet_NaN()};
+    values.insert(values.end(), r.flicker_per_frame.begin(), r.flicker_per_frame.end());
+    flicker_series.push_back({r.method, values});
+    flicker_of_each_frame &= r.flicker_per_frame.size() + 1 == static_cast<std::size_t>(a.frames);
   }
   json videos = json::array();
   for (const auto& v : a.videos) videos.push_back({{"name", v}, {"src", assets + "/" + v + ".mp4"}});
   json plots = {line_plot_svg("RMSE of each frame against the reference", "RMSE", series,
-                              {{"reference noise RMSE", a.reference_noise_rmse}}),
-                bar_chart_svg("Flicker over the frames", "", flicker, {{"flicker floor", a.flicker_floor}})};
+                              {{"reference noise RMSE", a.reference_noise_rmse}})};
+  // Outputs of animate before it wrote each frame's flicker have the mean alone.
+  if (flicker_of_each_frame && a.frames > 1)
+    plots.push_back(line_plot_svg("Flicker of each frame (its error's change from the frame before)", "flicker",
+                                  flicker_series, {{"flicker floor (mean)", a.flicker_floor}}));
+  plots.push_back(bar_chart_svg("Flicker over the frames", "", flicker, {{"flicker floor", a.flicker_floor}}));
   return {{"table", table}, {"videos", videos}, {"plots", plots}, {"frames", a.frames}};
 }
 

@@ -183,6 +183,8 @@ AnimateRun read_animate(const Field& root, const fs::path& dir) {
     r.mean_rmse = m["mean_rmse"].number();
     r.flicker = m["flicker"].number();
     for (const Field& v : m["rmse_per_frame"].elements()) r.rmse_per_frame.push_back(v.number());
+    if (m.has("flicker_per_frame"))
+      for (const Field& v : m["flicker_per_frame"].elements()) r.flicker_per_frame.push_back(v.number());
     streams.push_back(r.method);
   }
   std::error_code ec;

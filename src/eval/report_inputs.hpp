@@ -37,6 +37,7 @@ struct AnimateRow {
   std::string method;
   double mean_rmse = 0, flicker = 0;
   std::vector<double> rmse_per_frame;
+  std::vector<double> flicker_per_frame;  ///< frames 1 .. frames - 1; empty in outputs older than it
 };
 
 struct AnimateRun {

@@ -119,12 +119,18 @@ std::string line_plot_svg(const std::string& title, const std::string& y_label, 
     const std::string colour = series_colour(i);
     s << "<g class=\"series\"><title>" << xml_escaped(p.name) << "</title><polyline fill=\"none\" stroke=\"" << colour
       << "\" stroke-width=\"2\" points=\"";
-    for (std::size_t f = 0; f < p.values.size(); ++f)
-      s << (f ? " " : "") << num(px(static_cast<double>(f))) << "," << num(py(p.values[f]));
+    // A value that is not finite is not drawn (a frame a quantity has no value at, such as the
+    // flicker of the first frame).
+    bool first = true;
+    for (std::size_t f = 0; f < p.values.size(); ++f) {
+      if (!std::isfinite(p.values[f])) continue;
+      s << (first ? "" : " ") << num(px(static_cast<double>(f))) << "," << num(py(p.values[f]));
+      first = false;
+    }
     s << "\"/>";
     if (p.values.size() <= 40)
       for (std::size_t f = 0; f < p.values.size(); ++f)
-        s << "<circle cx=\"" << num(px(static_cast<double>(f))) << "\" cy=\"" << num(py(p.values[f]))
+        if (std::isfinite(p.values[f])) s << "<circle cx=\"" << num(px(static_cast<double>(f))) << "\" cy=\"" << num(py(p.values[f]))
           << "\" r=\"2.5\" fill=\"" << colour << "\"><title>" << xml_escaped(p.name) << ", frame " << f << ": "
           << value_text(p.values[f]) << "</title></circle>";
     s << "</g>\n<rect x=\"" << num(legend_x) << "\" y=\"" << num(legend_y - 9) << "\" width=\"14\" height=\"4\" fill=\""

@@ -25,7 +25,8 @@ struct PlotMark {
 };
 
 /// Frame index on x, value on y from 0 to above the largest value or mark; one polyline per
-/// series in series_colour order, a legend, and each mark as a dashed line.
+/// series in series_colour order (values that are not finite left out), a legend, and each mark
+/// as a dashed line.
 std::string line_plot_svg(const std::string& title, const std::string& y_label, const std::vector<PlotSeries>& series,
                           const std::vector<PlotMark>& marks);
 

@@ -96,12 +96,26 @@ TEST(Animate, MetricsAreThoseOfTheFramesItRendered) {
     const double flicker = mean_change_of_difference(frames, reference_images);
     EXPECT_GT(flicker, 0.0) << m.method;
     EXPECT_NEAR(m.flicker, flicker, 1e-6 * flicker) << m.method;
+    // Per frame: frame t against t - 1 alone; flicker is their mean.
+    ASSERT_EQ(m.flicker_per_frame.size(), static_cast<std::size_t>(kFrames - 1));
+    double per_frame_mean = 0;
+    for (int t = 1; t < kFrames; ++t) {
+      const double expected = mean_change_of_difference({frames[t - 1], frames[t]}, {reference_images[t - 1], reference_images[t]});
+      EXPECT_NEAR(m.flicker_per_frame[t - 1], expected, 1e-6 * expected) << m.method << " frame " << t;
+      per_frame_mean += m.flicker_per_frame[t - 1] / (kFrames - 1);
+    }
+    EXPECT_NEAR(per_frame_mean, m.flicker, 1e-9 * m.flicker) << m.method;
   }
   // The floor: the flicker of the even passes against the odd ones, over sqrt(2), and the noise
   // of the references (the root mean square of their per-pixel standard errors), averaged.
   const double floor = mean_change_of_difference(evens, odds) / std::sqrt(2.0);
   EXPECT_GT(floor, 0.0);
   EXPECT_NEAR(result.reference.flicker, floor, 1e-6 * floor);
+  ASSERT_EQ(result.reference.flicker_per_frame.size(), static_cast<std::size_t>(kFrames - 1));
+  for (int t = 1; t < kFrames; ++t) {
+    const double expected = mean_change_of_difference({evens[t - 1], evens[t]}, {odds[t - 1], odds[t]}) / std::sqrt(2.0);
+    EXPECT_NEAR(result.reference.flicker_per_frame[t - 1], expected, 1e-6 * expected) << "frame " << t;
+  }
   double noise = 0;
   for (const auto& r : references) noise += rms_difference(r.standard_error, Image(24, 16)) / kFrames;
   EXPECT_NEAR(result.reference.noise_rmse, noise, 1e-9 * noise);
@@ -117,6 +131,7 @@ TEST(Animate, MetricsAreThoseOfTheFramesItRendered) {
   EXPECT_EQ(json.at("height"), 16);
   EXPECT_EQ(json.at("scene"), options.scene);
   EXPECT_DOUBLE_EQ(json.at("flicker_floor").get<double>(), result.reference.flicker);
+  EXPECT_EQ(json.at("flicker_floor_per_frame").get<std::vector<double>>(), result.reference.flicker_per_frame);
   ASSERT_EQ(json.at("methods").size(), methods.size());
   for (std::size_t i = 0; i < methods.size(); ++i) {
     const auto& m = json.at("methods")[i];
@@ -124,6 +139,7 @@ TEST(Animate, MetricsAreThoseOfTheFramesItRendered) {
     EXPECT_DOUBLE_EQ(m.at("mean_rmse").get<double>(), result.methods[i].mean_rmse);
     EXPECT_DOUBLE_EQ(m.at("flicker").get<double>(), result.methods[i].flicker);
     EXPECT_EQ(m.at("rmse_per_frame").get<std::vector<double>>(), result.methods[i].rmse_per_frame);
+    EXPECT_EQ(m.at("flicker_per_frame").get<std::vector<double>>(), result.methods[i].flicker_per_frame);
   }
   const bool mp4 = json.at("video") == "mp4";
   for (const std::string stream : {"reference", "conventional", "vlachos"}) {

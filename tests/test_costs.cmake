@@ -4,7 +4,7 @@
 # runs tests in declaration order, and a minute-long test that starts last leaves the other cores
 # idle; once a run has measured them, ctest orders by its own measurements instead.
 set(glintlab_test_costs
-  "^Images/EveryMethodOnBuiltinScene\\.IsFinite/(quad_light|gltf_showcase)( |$)" 60
+  "^Images/EveryMethodOnBuiltinScene\\.IsFinite/(quad_light|gltf_showcase|normal_glints_(noise|flakes))( |$)" 60
   "^GltfMaterials\\.TexturedMaterialEqualsTheMaterialOfItsTexels" 60
   "^Images/EveryMethodOnBuiltinScene\\.IsFinite/glint_area_lights" 45
   "^Shaders\\.EveryMethodAndPassCompiles" 35
@@ -20,6 +20,18 @@ set(glintlab_test_costs
   "^SpotLight\\.EveryMethodShades" 10
   "^Shaders\\.EveryChoiceOfACompileTimeParameterCompiles$" 10)
 
+# Tests that compile the same forward programs (the same methods, material variants and light
+# layout): each group shares a RESOURCE_LOCK, so that its tests run one after another and all but
+# the first find the programs in the GL driver's shader cache (a fresh build's cache is empty; two
+# tests that start together would both compile them, a minute of llvmpipe each).
+set(glintlab_test_locks
+  # point + sphere light, the normal-map-glints variant.
+  "^Images/EveryMethodOnBuiltinScene\\.IsFinite/normal_glints_(noise|brushed|scratches)( |$)" programs_normal_glints
+  # two point lights, the plain backdrop.
+  "^Images/EveryMethodOnBuiltinScene\\.IsFinite/glint_(sphere|tubes)( |$)" programs_two_points
+  # one quad light, the plain material.
+  "^(Images/EveryMethodOnBuiltinScene\\.IsFinite/quad_light|QuadLight\\.EveryMethodRendersItFinite)( |$)" programs_quad)
+
 get_cmake_property(glintlab_variables VARIABLES)
 foreach(list IN LISTS glintlab_variables)
   if(NOT list MATCHES "^test_.*_TESTS$")
@@ -32,6 +44,13 @@ foreach(list IN LISTS glintlab_variables)
       if(test MATCHES "${pattern}")
         set_tests_properties("${test}" PROPERTIES COST ${cost})
         break()
+      endif()
+    endwhile()
+    set(rest ${glintlab_test_locks})
+    while(rest)
+      list(POP_FRONT rest pattern lock)
+      if(test MATCHES "${pattern}")
+        set_tests_properties("${test}" PROPERTIES RESOURCE_LOCK ${lock})
       endif()
     endwhile()
   endforeach()

@@ -10,14 +10,14 @@ set(glintlab_test_costs
   "^Shaders\\.EveryMethodAndPassCompiles" 35
   "^Chermain\\.GeometricGlintAntiAliasing" 40
   "^Images/EveryMethodOnBuiltinScene\\." 30
-  "^SpotLight\\.HemisphereConeIsThePointLight$" 25
+  "^SpotLight\\.EveryMethodShades" 25
   "^SpecularAA\\.FilteringBeatsConventionalOnThinTubes$" 20
   "^Podee\\.BeatsConventionalOnTheNearMirrorScenes$" 20
   "^Reference\\.SubPixelHighlightOfAMirrorSphere" 15
   "^Cli\\.SameCommandWritesIdenticalFiles$" 15
   "^SpecularAA\\." 12
   "^QuadLight\\.EveryMethodRendersItFinite$" 12
-  "^SpotLight\\.EveryMethodShades" 10
+  "^SpotLight\\.HemisphereConeIsThePointLight$" 12
   "^Shaders\\.EveryChoiceOfACompileTimeParameterCompiles$" 10)
 
 # Tests that compile the same forward programs (the same methods, material variants and light
@@ -30,7 +30,9 @@ set(glintlab_test_locks
   # two point lights, the plain backdrop.
   "^Images/EveryMethodOnBuiltinScene\\.IsFinite/glint_(sphere|tubes)( |$)" programs_two_points
   # one quad light, the plain material.
-  "^(Images/EveryMethodOnBuiltinScene\\.IsFinite/quad_light|QuadLight\\.EveryMethodRendersItFinite)( |$)" programs_quad)
+  "^(Images/EveryMethodOnBuiltinScene\\.IsFinite/quad_light|QuadLight\\.EveryMethodRendersItFinite)( |$)" programs_quad
+  # one spot light (and a point light), a plain material: every method in EveryMethodShades.
+  "^SpotLight\\." programs_spot)
 
 get_cmake_property(glintlab_variables VARIABLES)
 foreach(list IN LISTS glintlab_variables)

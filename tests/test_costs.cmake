@@ -4,13 +4,13 @@
 # runs tests in declaration order, and a minute-long test that starts last leaves the other cores
 # idle; once a run has measured them, ctest orders by its own measurements instead.
 set(glintlab_test_costs
-  "^Images/EveryMethodOnBuiltinScene\\.IsFinite/(quad_light|gltf_showcase)( |$)" 60
+  "^Images/EveryMethodOnBuiltinScene\\.IsFinite/(quad_light|gltf_showcase|normal_glints_(noise|flakes))( |$)" 60
   "^GltfMaterials\\.TexturedMaterialEqualsTheMaterialOfItsTexels" 60
   "^Images/EveryMethodOnBuiltinScene\\.IsFinite/glint_area_lights" 45
   "^Shaders\\.EveryMethodAndPassCompiles" 35
   "^Chermain\\.GeometricGlintAntiAliasing" 40
   "^Images/EveryMethodOnBuiltinScene\\." 30
-  "^SpotLight\\.HemisphereConeIsThePointLight$" 25
+  "^SpotLight\\.EveryMethodShades" 25
   "^SpecularAA\\.FilteringBeatsConventionalOnThinTubes$" 20
   "^Podee\\.BeatsConventionalOnTheNearMirrorScenes$" 20
   "^Reference\\.SubPixelHighlightOfAMirrorSphere" 15
@@ -18,8 +18,22 @@ set(glintlab_test_costs
   "^Report\\.ChromiumLoadsEveryImageAndVideoAndTheSliderMoves$" 12
   "^SpecularAA\\." 12
   "^QuadLight\\.EveryMethodRendersItFinite$" 12
-  "^SpotLight\\.EveryMethodShades" 10
+  "^SpotLight\\.HemisphereConeIsThePointLight$" 12
   "^Shaders\\.EveryChoiceOfACompileTimeParameterCompiles$" 10)
+
+# Tests that compile the same forward programs (the same methods, material variants and light
+# layout): each group shares a RESOURCE_LOCK, so that its tests run one after another and all but
+# the first find the programs in the GL driver's shader cache (a fresh build's cache is empty; two
+# tests that start together would both compile them, a minute of llvmpipe each).
+set(glintlab_test_locks
+  # point + sphere light, the normal-map-glints variant.
+  "^Images/EveryMethodOnBuiltinScene\\.IsFinite/normal_glints_(noise|brushed|scratches)( |$)" programs_normal_glints
+  # two point lights, the plain backdrop.
+  "^Images/EveryMethodOnBuiltinScene\\.IsFinite/glint_(sphere|tubes)( |$)" programs_two_points
+  # one quad light, the plain material.
+  "^(Images/EveryMethodOnBuiltinScene\\.IsFinite/quad_light|QuadLight\\.EveryMethodRendersItFinite)( |$)" programs_quad
+  # one spot light (and a point light), a plain material: every method in EveryMethodShades.
+  "^SpotLight\\." programs_spot)
 
 get_cmake_property(glintlab_variables VARIABLES)
 foreach(list IN LISTS glintlab_variables)
@@ -33,6 +47,13 @@ foreach(list IN LISTS glintlab_variables)
       if(test MATCHES "${pattern}")
         set_tests_properties("${test}" PROPERTIES COST ${cost})
         break()
+      endif()
+    endwhile()
+    set(rest ${glintlab_test_locks})
+    while(rest)
+      list(POP_FRONT rest pattern lock)
+      if(test MATCHES "${pattern}")
+        set_tests_properties("${test}" PROPERTIES RESOURCE_LOCK ${lock})
       endif()
     endwhile()
   endforeach()

@@ -1,7 +1,7 @@
 #pragma once
 // The forward programs that Images/EveryMethodOnBuiltinScene (tests/render/test_images.cpp)
 // compiles: every method's module at its defaults, and the reference's, in each material variant
-// of a built-in scene, specialised on that scene's light kinds. Shaders.EveryMethodAndPassCompiles*
+// of the built-in scenes, with each light kind a scene of that variant has. Shaders.EveryMethodAndPassCompiles*
 // (tests/gl/test_shaders.cpp) compile the rest, so that every (module, material variant, light
 // kind) is compiled somewhere in the suite, and once: compiling is most of both tests' time on
 // llvmpipe, and the two never compile the same program (the light ranges differ).
@@ -12,22 +12,64 @@
 
 namespace glintlab::test {
 
-/// Each material variant of the built-in scenes, with the light kinds (indices into
-/// all_light_kinds()) of the scenes that have it.
-inline const std::map<MaterialVariant, std::set<int>>& builtin_scene_light_kinds() {
-  static const std::map<MaterialVariant, std::set<int>> kinds = [] {
-    std::map<MaterialVariant, std::set<int>> out;
+/// Each built-in scene's programs as (material variant, light kind) pairs: every material
+/// variant of the scene with each light kind (index into all_light_kinds()) it has.
+using ProgramPairs = std::set<std::pair<MaterialVariant, int>>;
+inline const std::map<std::string, ProgramPairs>& builtin_scene_program_pairs() {
+  static const std::map<std::string, ProgramPairs> pairs = [] {
+    std::map<std::string, ProgramPairs> out;
+    context();  // GpuScene uploads to the GL
     for (const auto& b : builtin_scenes()) {
       const Scene scene = load_scene("builtin:" + b.name);
       const GpuScene gpu(scene, test_table_cache());
-      std::set<int> present;
+      ProgramPairs& p = out[b.name];
       for (int k = 0; k < static_cast<int>(gpu.light_ranges().size()); ++k)
-        if (gpu.light_ranges()[k].x < gpu.light_ranges()[k].y) present.insert(k);
-      for (const auto& mesh : gpu.meshes()) out[material_variant(gpu, mesh.material)].insert(present.begin(), present.end());
+        if (gpu.light_ranges()[k].x < gpu.light_ranges()[k].y)
+          for (const auto& mesh : gpu.meshes()) p.insert({material_variant(gpu, mesh.material), k});
     }
     return out;
   }();
-  return kinds;
+  return pairs;
+}
+
+/// The built-in scenes Images/EveryMethodOnBuiltinScene renders every method on: the fewest whose
+/// material variants cover every built-in scene's (greedy: each step the scene adding the most
+/// (variant, light kind) pairs among those adding a variant, the first in builtin_scenes() order
+/// on ties). Drawing is what makes llvmpipe build a program's machine code, 2-3 s a program, most
+/// of the suite's time: so each method renders finite in every material variant, the other
+/// scenes render `conventional` and the reference, and Shaders.EveryMethodAndPassCompiles*
+/// compile the light kinds these scenes leave out.
+inline const std::set<std::string>& every_method_scenes() {
+  static const std::set<std::string> chosen = [] {
+    std::set<MaterialVariant> missing;
+    for (const auto& [scene, pairs] : builtin_scene_program_pairs())
+      for (const auto& p : pairs) missing.insert(p.first);
+    std::set<std::string> out;
+    while (!missing.empty()) {
+      std::string best;
+      std::pair<std::size_t, std::size_t> best_gain{0, 0};  // variants added, then pairs
+      for (const auto& b : builtin_scenes()) {
+        std::set<MaterialVariant> variants;
+        for (const auto& p : builtin_scene_program_pairs().at(b.name))
+          if (missing.contains(p.first)) variants.insert(p.first);
+        const std::pair<std::size_t, std::size_t> gain{variants.size(), builtin_scene_program_pairs().at(b.name).size()};
+        if (gain.first > 0 && gain > best_gain) best = b.name, best_gain = gain;
+      }
+      out.insert(best);
+      for (const auto& p : builtin_scene_program_pairs().at(best)) missing.erase(p.first);
+    }
+    return out;
+  }();
+  return chosen;
+}
+
+/// Each material variant of the scenes every method renders on, with their light kinds: what
+/// Images/EveryMethodOnBuiltinScene compiles by drawing.
+inline std::map<MaterialVariant, std::set<int>> builtin_scene_light_kinds() {
+  std::map<MaterialVariant, std::set<int>> out;
+  for (const auto& scene : every_method_scenes())
+    for (const auto& [variant, kind] : builtin_scene_program_pairs().at(scene)) out[variant].insert(kind);
+  return out;
 }
 
 }  // namespace glintlab::test

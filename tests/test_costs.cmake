@@ -4,12 +4,13 @@
 # runs tests in declaration order, and a minute-long test that starts last leaves the other cores
 # idle; once a run has measured them, ctest orders by its own measurements instead.
 set(glintlab_test_costs
-  "^Images/EveryMethodOnBuiltinScene\\.IsFinite/(quad_light|gltf_showcase|normal_glints_(noise|flakes))( |$)" 60
+  # The scenes every method renders on (every_method_scenes(), tests/builtin_scene_programs.hpp).
+  "^Images/EveryMethodOnBuiltinScene\\.IsFinite/(gltf_showcase|glint_area_lights|glint_tubes|normal_glints_noise)( |$)" 60
   "^GltfMaterials\\.TexturedMaterialEqualsTheMaterialOfItsTexels" 60
-  "^Images/EveryMethodOnBuiltinScene\\.IsFinite/glint_area_lights" 45
+  "^Images/EveryMethodOnBuiltinScene\\.IsFinite/glint_sphere( |$)" 45
   "^Shaders\\.EveryMethodAndPassCompiles" 35
   "^Chermain\\.GeometricGlintAntiAliasing" 40
-  "^Images/EveryMethodOnBuiltinScene\\." 30
+  "^Images/EveryMethodOnBuiltinScene\\." 5
   "^SpotLight\\.EveryMethodShades" 25
   "^SpecularAA\\.FilteringBeatsConventionalOnThinTubes$" 20
   "^Podee\\.BeatsConventionalOnTheNearMirrorScenes$" 20
@@ -26,12 +27,8 @@ set(glintlab_test_costs
 # the first find the programs in the GL driver's shader cache (a fresh build's cache is empty; two
 # tests that start together would both compile them, a minute of llvmpipe each).
 set(glintlab_test_locks
-  # point + sphere light, the normal-map-glints variant.
-  "^Images/EveryMethodOnBuiltinScene\\.IsFinite/normal_glints_(noise|brushed|scratches)( |$)" programs_normal_glints
   # two point lights, the plain backdrop.
   "^Images/EveryMethodOnBuiltinScene\\.IsFinite/glint_(sphere|tubes)( |$)" programs_two_points
-  # one quad light, the plain material.
-  "^(Images/EveryMethodOnBuiltinScene\\.IsFinite/quad_light|QuadLight\\.EveryMethodRendersItFinite)( |$)" programs_quad
   # one spot light (and a point light), a plain material: every method in EveryMethodShades.
   "^SpotLight\\." programs_spot)
 

@@ -6,7 +6,7 @@
 set(glintlab_test_costs
   # The scenes every method renders on (every_method_scenes(), tests/builtin_scene_programs.hpp).
   "^Images/EveryMethodOnBuiltinScene\\.IsFinite/(gltf_showcase|glint_area_lights|glint_tubes|normal_glints_noise)( |$)" 60
-  "^GltfMaterials\\.TexturedMaterialEqualsTheMaterialOfItsTexels" 60
+  "^GltfMaterials\\.TexturedMaterialEqualsTheMaterialOfItsTexels" 20
   "^Images/EveryMethodOnBuiltinScene\\.IsFinite/glint_sphere( |$)" 45
   "^Shaders\\.EveryMethodAndPassCompiles" 35
   "^Chermain\\.GeometricGlintAntiAliasing" 40
@@ -27,6 +27,9 @@ set(glintlab_test_costs
 # the first find the programs in the GL driver's shader cache (a fresh build's cache is empty; two
 # tests that start together would both compile them, a minute of llvmpipe each).
 set(glintlab_test_locks
+  # a directional, a point and a spot light; textured and plain materials (two_quads in
+  # tests/render/test_gltf_materials.cpp has the showcase's lights for this).
+  "^(Images/EveryMethodOnBuiltinScene\\.IsFinite/gltf_showcase|GltfMaterials\\.TexturedMaterialEqualsTheMaterialOfItsTexels.*)( |$)" programs_showcase
   # two point lights, the plain backdrop.
   "^Images/EveryMethodOnBuiltinScene\\.IsFinite/glint_(sphere|tubes)( |$)" programs_two_points
   # one spot light (and a point light), a plain material: every method in EveryMethodShades.

@@ -50,14 +50,20 @@ Document one_mesh(std::vector<PrimitiveDesc> primitives) {
 }
 
 /// Two quads seen from above: x < 0 and x > 0, lit by a directional light from the side.
-Scene two_quads(const ScratchDirectory& dir, const Document& doc) {
+/// The two quads of `doc`, seen from above, under a directional light. `showcase_lights` adds a
+/// point light and a spot light below the quads, which do not light their upper sides: the light
+/// kinds and counts of builtin:gltf-showcase, so that every program drawn here is one its
+/// every-method test compiled (shared through the GL driver's shader cache, tests/test_costs.cmake).
+Scene two_quads(const ScratchDirectory& dir, const Document& doc, bool showcase_lights = false) {
   write_gltf(dir / "quads.glb", doc);
-  return TestScene()
-      .film(kWidth, kHeight)
-      .orthographic_camera({0, 10, 0}, {0, 0, 0}, 2.0, {{"up", {0, 0, -1}}, {"near", 1}, {"far", 20}})
-      .array_table("shape", {{"type", "mesh"}, {"file", (dir / "quads.glb").string()}})
-      .directional_light({-0.3, -1.0, -0.5}, 2.0)
-      .scene();
+  TestScene scene = TestScene()
+                        .film(kWidth, kHeight)
+                        .orthographic_camera({0, 10, 0}, {0, 0, 0}, 2.0, {{"up", {0, 0, -1}}, {"near", 1}, {"far", 20}})
+                        .array_table("shape", {{"type", "mesh"}, {"file", (dir / "quads.glb").string()}})
+                        .directional_light({-0.3, -1.0, -0.5}, 2.0);
+  if (showcase_lights)
+    scene.point_light({0, -3, 0}, 5).light("spot", {{"position", {0, -3, 0}}, {"direction", {0, -1, 0}}});
+  return scene.scene();
 }
 
 /// Mean total (green) over the middle of the left or right half.
@@ -127,7 +133,7 @@ TEST(GltfMaterials, TexturedMaterialEqualsTheMaterialOfItsTexelsInEveryMethodAnd
   MaterialDesc factors{.name = "factors", .base_color = glm::vec4(factor * colour, 1), .metallic = metallic,
                        .roughness = roughness};
   doc.materials = {textured, factors};
-  SceneFixture f(two_quads(dir, doc));
+  SceneFixture f(two_quads(dir, doc, true));
   for (const auto& m : all_methods()) {
     const Frame img = f.method(m.id);
     const double left = half_mean(img.total, false), right = half_mean(img.total, true);

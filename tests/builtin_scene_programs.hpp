@@ -32,12 +32,12 @@ inline const std::map<std::string, ProgramPairs>& builtin_scene_program_pairs() 
   return pairs;
 }
 
-/// The built-in scenes Images/EveryMethodOnBuiltinScene renders every method on: the fewest whose
+/// The built-in scenes Images/EveryMethodOnBuiltinScene renders every method on: few whose
 /// material variants cover every built-in scene's (greedy: each step the scene adding the most
-/// (variant, light kind) pairs among those adding a variant, the first in builtin_scenes() order
-/// on ties). Drawing is what makes llvmpipe build a program's machine code, 2-3 s a program, most
-/// of the suite's time: so each method renders finite in every material variant, the other
-/// scenes render `conventional` and the reference, and Shaders.EveryMethodAndPassCompiles*
+/// variants, then with the most (variant, light kind) pairs, the first in builtin_scenes() order
+/// on ties). Drawing is what makes llvmpipe build a program's machine code, several seconds a
+/// program, most of the suite's time: so each method renders finite in every material variant,
+/// the other scenes render `conventional` and the reference, and Shaders.EveryMethodAndPassCompiles*
 /// compile the light kinds these scenes leave out.
 inline const std::set<std::string>& every_method_scenes() {
   static const std::set<std::string> chosen = [] {
@@ -65,11 +65,14 @@ inline const std::set<std::string>& every_method_scenes() {
 
 /// Each material variant of the scenes every method renders on, with their light kinds: what
 /// Images/EveryMethodOnBuiltinScene compiles by drawing.
-inline std::map<MaterialVariant, std::set<int>> builtin_scene_light_kinds() {
-  std::map<MaterialVariant, std::set<int>> out;
-  for (const auto& scene : every_method_scenes())
-    for (const auto& [variant, kind] : builtin_scene_program_pairs().at(scene)) out[variant].insert(kind);
-  return out;
+inline const std::map<MaterialVariant, std::set<int>>& builtin_scene_light_kinds() {
+  static const std::map<MaterialVariant, std::set<int>> kinds = [] {
+    std::map<MaterialVariant, std::set<int>> out;
+    for (const auto& scene : every_method_scenes())
+      for (const auto& [variant, kind] : builtin_scene_program_pairs().at(scene)) out[variant].insert(kind);
+    return out;
+  }();
+  return kinds;
 }
 
 }  // namespace glintlab::test

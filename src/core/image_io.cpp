@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "core/atomic_file.hpp"
+#include "core/colour.hpp"
 #include "core/error.hpp"
 #include "core/exr_header_check.hpp"
 #include "core/jpeg_header_check.hpp"
@@ -114,8 +115,7 @@ void write_png(const std::filesystem::path& path, const Image& img) {
   std::vector<std::uint8_t> bytes(img.pixel_count() * 3);
   for (std::size_t i = 0; i < img.pixel_count(); ++i)
     for (int c = 0; c < 3; ++c)
-      bytes[3 * i + c] = static_cast<std::uint8_t>(
-          std::lround(std::clamp(img.pixels()[i][c], 0.0f, 1.0f) * 255.0f));
+      bytes[3 * i + c] = unorm8(img.pixels()[i][c]);
   AtomicFile file(path);
   if (!stbi_write_png(file.temp_path().c_str(), img.width(), img.height(), 3, bytes.data(),
                       img.width() * 3))

@@ -18,9 +18,11 @@ double max_abs_error(const Image& test, const Image& reference);
 double energy_ratio(const Image& test, const Image& reference);
 /// Per-pixel |luminance(test) - luminance(reference)| in the red channel (for error maps).
 Image abs_error_map(const Image& test, const Image& reference);
-/// The value below which `fraction` of an error map's pixels lie (0.995 scales the error maps:
-/// a few outliers do not wash out the rest); 0 for an empty map.
+/// The value below which `fraction` of an error map's pixels lie; 0 for an empty map.
 float error_percentile(const Image& error_map, double fraction);
+/// The percentile that is the top of an error map's colour ramp (compare's maps, the viewer's
+/// overlay): a few outliers do not wash out the rest.
+inline constexpr double kErrorMapPercentile = 0.995;
 
 /// Everything `compare` reports for one method.
 struct ImageMetrics {

@@ -107,7 +107,7 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
     const Image error = abs_error_map(frames[i].total, reference.total);
     for (std::size_t p = 0; p < error.pixel_count(); ++p) error_sum.pixels()[p] += error.pixels()[p];
     // One colour scale for all maps (the largest 99.5th percentile) so they compare at a glance.
-    error_scale = std::max(error_scale, error_percentile(error, 0.995));
+    error_scale = std::max(error_scale, error_percentile(error, kErrorMapPercentile));
   }
   if (error_scale <= 0.0f) error_scale = 1.0f;
   const auto regions = worst_regions(error_sum, std::max(16, std::min(session.width(), session.height()) / 8), 3);

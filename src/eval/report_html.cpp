@@ -48,10 +48,10 @@ std::string error_ramp_css() {
   const Image colours = false_colour(values, 1.0f);
   std::string css = "linear-gradient(to right";
   for (int i = 0; i < steps; ++i) {
-    const glm::vec3 c = glm::clamp(colours.at(i, 0), 0.0f, 1.0f) * 255.0f + 0.5f;
+    const glm::vec3 c = colours.at(i, 0);
     char stop[64];
-    std::snprintf(stop, sizeof stop, ", rgb(%d,%d,%d) %.2f%%", static_cast<int>(c.r), static_cast<int>(c.g),
-                  static_cast<int>(c.b), 100.0 * i / (steps - 1));
+    std::snprintf(stop, sizeof stop, ", rgb(%d,%d,%d) %.2f%%", unorm8(c.r), unorm8(c.g), unorm8(c.b),
+                  100.0 * i / (steps - 1));
     css += stop;
   }
   return css + ")";

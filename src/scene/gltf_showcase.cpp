@@ -7,13 +7,11 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
 
+#include "core/colour.hpp"
+
 namespace glintlab::gltf {
 
 namespace {
-
-std::uint8_t to_byte(float value) {
-  return static_cast<std::uint8_t>(std::lround(std::clamp(value, 0.0f, 1.0f) * 255.0f));
-}
 
 /// A rigidly moved copy: a rotation keeps every tangent frame's handedness, so w is unchanged.
 Mesh moved(Mesh mesh, const glm::quat& rotation, glm::vec3 offset) {
@@ -190,7 +188,7 @@ Image8 make_image(int width, int height, const std::function<glm::vec4(glm::vec2
       const glm::vec4 c = rgba({(static_cast<float>(i) + 0.5f) / static_cast<float>(width),
                                 (static_cast<float>(j) + 0.5f) / static_cast<float>(height)});
       auto* texel = &image.rgba[(static_cast<std::size_t>(j) * width + i) * 4];
-      for (int k = 0; k < 4; ++k) texel[k] = to_byte(c[k]);
+      for (int k = 0; k < 4; ++k) texel[k] = unorm8(c[k]);
     }
   return image;
 }

@@ -38,7 +38,7 @@ Image blend_images(const Image& base, const Image& overlay, float opacity) {
 
 Image error_map_display(const Image& method, const Image& reference) {
   const Image error = abs_error_map(method, reference);
-  const float scale = error_percentile(error, 0.995);
+  const float scale = error_percentile(error, kErrorMapPercentile);
   return false_colour(error, scale > 0.0f ? scale : 1.0f);
 }
 
@@ -46,7 +46,7 @@ std::vector<std::uint8_t> to_rgba8(const Image& display) {
   std::vector<std::uint8_t> out(display.pixel_count() * 4, 255);
   for (std::size_t i = 0; i < display.pixel_count(); ++i)
     for (int c = 0; c < 3; ++c)
-      out[i * 4 + c] = static_cast<std::uint8_t>(std::lround(std::clamp(display.pixels()[i][c], 0.0f, 1.0f) * 255.0f));
+      out[i * 4 + c] = unorm8(display.pixels()[i][c]);
   return out;
 }
 

@@ -16,10 +16,10 @@ Image split_images(const Image& left, const Image& right, float split);
 Image blend_images(const Image& base, const Image& overlay, float opacity);
 
 /// compare's error map of `method` against `reference` (linear radiance): |luminance
-/// difference| in false colour, scaled so the 99.5th percentile is the top of the ramp.
+/// difference| in false colour, scaled so its kErrorMapPercentile is the top of the ramp.
 Image error_map_display(const Image& method, const Image& reference);
 
-/// RGBA8, row 0 at the top, each channel round(clamp(v) * 255) like the PNG writer.
+/// RGBA8, row 0 at the top, each channel unorm8(v) as in the PNGs.
 std::vector<std::uint8_t> to_rgba8(const Image& display);
 
 }  // namespace glintlab

@@ -279,9 +279,9 @@ void ViewPanels::keyboard_input(Viewer& viewer) {
   if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT)) viewer.step_frame(1);
   if (ImGui::IsKeyPressed(GLFW_KEY_LEFT)) viewer.step_frame(-1);
   if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) message_ = "written " + viewer.screenshot(screenshot_path_) + " and .png";
-  // Fly: a tenth of the distance to the target per second, so any scale of scene moves alike.
+  // Fly: the distance to the target per second, so a scene of any scale moves alike.
   const Camera c = viewer.camera();
-  const float speed = 0.1f * glm::length(c.target - c.position) * io.DeltaTime * 10.0f;
+  const float speed = glm::length(c.target - c.position) * io.DeltaTime;
   glm::vec3 move(0.0f);
   if (ImGui::IsKeyDown(GLFW_KEY_W)) move.z += speed;
   if (ImGui::IsKeyDown(GLFW_KEY_S)) move.z -= speed;

@@ -269,11 +269,11 @@ std::string Viewer::screenshot(const std::string& path) {
   nlohmann::json json;
   json["scene"] = session_.options().scene.empty() ? std::string(kDefaultScene) : session_.options().scene;
   json["method"] = a.method->id;
-  std::string params;
+  std::string params;  // the --param flags of what differs from the defaults
+  const ParamValues defaults = resolve_params(*a.method, {});
   for (const auto& p : a.method->params) {
     json["params"][p.name] = a.params.at(p.name);
-    if (a.params.at(p.name) != resolve_params(*a.method, {}).at(p.name))
-      params += " --param " + p.name + "=" + param_text(p, a.params.at(p.name));
+    if (a.params.at(p.name) != defaults.at(p.name)) params += " --param " + p.name + "=" + param_text(p, a.params.at(p.name));
   }
   json["frame"] = state_.frame;
   json["width"] = width();

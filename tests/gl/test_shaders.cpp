@@ -76,7 +76,7 @@ int expect_every_module_compiles_in(MaterialVariant v) {
       v.normal_map = normal_map;
       std::set<int> on_builtin_scenes;
       if (module.rendered_on_builtin_scenes)
-        if (const auto kinds = builtin_scene_light_kinds(); kinds.contains(v)) on_builtin_scenes = kinds.at(v);
+        if (const auto& kinds = builtin_scene_light_kinds(); kinds.contains(v)) on_builtin_scenes = kinds.at(v);
       if (on_builtin_scenes.size() == all_light_kinds().size()) continue;
       expect_compiles(module.path, v, two_lights_of_every_kind_but(on_builtin_scenes));
       ++compiled;

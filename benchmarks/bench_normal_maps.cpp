@@ -14,8 +14,8 @@
 #include "core/image.hpp"
 #include "core/image_io.hpp"
 
-#include "scene/bump_waves.hpp"
-#include "scene/normal_map.hpp"
+#include "scene/normal_maps/bump_waves.hpp"
+#include "scene/normal_maps/normal_map.hpp"
 
 namespace glintlab {
 namespace {

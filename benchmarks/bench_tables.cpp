@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "render/tables/registry.hpp"
+#include "tables/registry.hpp"
 #include "tables/table_cache.hpp"
 
 namespace glintlab {

@@ -1,4 +1,4 @@
-// Fits both LTC tables (src/ltc/ltc_fit.hpp) as their generator does and prints, as markdown, how
+// Fits both LTC tables (src/tables/ltc/ltc_fit.hpp) as their generator does and prints, as markdown, how
 // long each took and its fit error over the grid: the relative L1 distance of the LTC lobe from its
 // target over l.z > 0 (ltc_fit_error, 2 x 64 x 64 samples per cell). docs/methods.md's tables come
 // from here: `build/release/benchmarks/ltc_fit_report [threads]` (default: every hardware thread).
@@ -12,7 +12,7 @@
 #include <string>
 #include <thread>
 
-#include "ltc/ltc_table.hpp"
+#include "tables/ltc/ltc_table.hpp"
 
 namespace {
 

@@ -5,7 +5,7 @@
 
 #include "core/error.hpp"
 #include "fuzz_input.hpp"
-#include "scene/gltf_import.hpp"
+#include "scene/gltf/gltf_import.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const bool binary = size >= 4 && std::memcmp(data, "glTF", 4) == 0;

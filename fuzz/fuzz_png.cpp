@@ -14,7 +14,7 @@
 #include "core/image_io.hpp"
 #include "core/jpeg_header_check.hpp"
 #include "fuzz_input.hpp"
-#include "scene/normal_map.hpp"
+#include "scene/normal_maps/normal_map.hpp"
 
 namespace {
 

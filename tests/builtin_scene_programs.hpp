@@ -2,7 +2,7 @@
 // The forward programs that Images/EveryMethodOnBuiltinScene (tests/render/test_images.cpp)
 // compiles: every method's module at its defaults, and the reference's, in each material variant
 // of the built-in scenes, with each light kind a scene of that variant has. Shaders.EveryMethodAndPassCompiles*
-// (tests/gl/test_shaders.cpp) compile the rest, so that every (module, material variant, light
+// (tests/glsl/test_shaders.cpp) compile the rest, so that every (module, material variant, light
 // kind) is compiled somewhere in the suite, and once: compiling is most of both tests' time on
 // llvmpipe, and the two never compile the same program (the light ranges differ).
 #include <map>

@@ -13,7 +13,7 @@
 #include "render/gpu_scene.hpp"
 #include "render/reference_backend.hpp"
 #include "render/renderer.hpp"
-#include "render/tables/registry.hpp"
+#include "tables/registry.hpp"
 #include "render/shader_contract.hpp"
 #include "scene/scene_loader.hpp"
 #include "shading/registry.hpp"

@@ -1,7 +1,7 @@
 // Directional light (src/scene/lights/directional.cpp), a delta light at infinity. Fields:
 // colour_type.rgb: irradiance E at normal incidence [W/m^2]; direction_cos.xyz: travel direction.
-#include "common/light_data.glsl"
-#include "common/light_shapes.glsl"
+#include "lights/light_data.glsl"
+#include "lights/light_shapes.glsl"
 
 vec3 directionalLightCentreDirection(LightData L, vec3 p) { return -L.direction_cos.xyz; }
 

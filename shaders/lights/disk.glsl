@@ -1,7 +1,7 @@
 // Disk light (src/scene/lights/disk.cpp), one-sided. Fields: colour_type.rgb: radiance
 // [W/(m^2 sr)]; position_radius: centre and radius; direction_cos.xyz: emitting normal n.
-#include "common/light_data.glsl"
-#include "common/light_shapes.glsl"
+#include "lights/light_data.glsl"
+#include "lights/light_shapes.glsl"
 
 float diskLightArea(LightData L) {
   float r = L.position_radius.w;

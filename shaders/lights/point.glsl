@@ -1,7 +1,7 @@
 // Point light (src/scene/lights/point.cpp), a delta light. Fields: colour_type.rgb: intensity
 // I [W/sr]; position_radius.xyz: position.
-#include "common/light_data.glsl"
-#include "common/light_shapes.glsl"
+#include "lights/light_data.glsl"
+#include "lights/light_shapes.glsl"
 
 vec3 pointLightCentreDirection(LightData L, vec3 p) { return directionTowards(L.position_radius.xyz, p); }
 

@@ -1,8 +1,8 @@
 // Quad light (src/scene/lights/quad.cpp), a one-sided rectangle. Fields: colour_type.rgb:
 // radiance [W/(m^2 sr)]; position_radius.xyz: centre; direction_cos.xyz: emitting normal n;
 // axisU.xyz, axisV.xyz: half edges (u, v, n right-handed).
-#include "common/light_data.glsl"
-#include "common/light_shapes.glsl"
+#include "lights/light_data.glsl"
+#include "lights/light_shapes.glsl"
 
 float quadLightArea(LightData L) { return 4.0 * length(L.axisU.xyz) * length(L.axisV.xyz); }
 

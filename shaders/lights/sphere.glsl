@@ -1,7 +1,7 @@
 // Sphere light (src/scene/lights/sphere.cpp). Fields: colour_type.rgb: radiance [W/(m^2 sr)];
 // position_radius: centre and radius R. Seen from p it is the cone of half-angle asin(R / d).
-#include "common/light_data.glsl"
-#include "common/light_shapes.glsl"
+#include "lights/light_data.glsl"
+#include "lights/light_shapes.glsl"
 
 vec3 sphereLightCentreDirection(LightData L, vec3 p) { return directionTowards(L.position_radius.xyz, p); }
 

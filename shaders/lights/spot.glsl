@@ -2,8 +2,8 @@
 // away from its axis (KHR_lights_punctual). Fields: colour_type.rgb: intensity I [W/sr] on the
 // axis; position_radius.xyz: position; direction_cos.xyz: the unit axis it shines along, w: cos of
 // the outer angle; axisU.x: 1 / max(0.001, cos inner - cos outer).
-#include "common/light_data.glsl"
-#include "common/light_shapes.glsl"
+#include "lights/light_data.glsl"
+#include "lights/light_shapes.glsl"
 #include "lights/point.glsl"
 
 vec3 spotLightCentreDirection(LightData L, vec3 p) { return pointLightCentreDirection(L, p); }

@@ -1,8 +1,8 @@
 // Sun (src/scene/lights/sun.cpp): a distant disk, the cone of half-angle theta about -direction.
 // Fields: colour_type.rgb: irradiance E at normal incidence [W/m^2]; direction_cos.xyz: travel
 // direction, w: cos theta; axisU.w: 1 - cos theta, computed in double (exact at small angles).
-#include "common/light_data.glsl"
-#include "common/light_shapes.glsl"
+#include "lights/light_data.glsl"
+#include "lights/light_shapes.glsl"
 
 // 1 - cos theta from the CPU: 1 - direction_cos.w in float keeps only ~160 steps at 0.25 degrees.
 // Hand-built records (tests) must set it too.

@@ -3,7 +3,7 @@
 // as by `conventional`. Lights with extent: the light's half-vector region as the kernel of the
 // dictionary lookups, or the light as a point at its centre (parameter light_extent).
 // Descriptor: src/shading/methods/chermain2020.cpp; docs/methods.md#chermain2020.
-#include "common/glint_light_kernel.glsl"
+#include "glints/chermain/light_kernel.glsl"
 
 #if MATERIAL_GLINTS
 GlintSurface gGlint;
@@ -21,7 +21,7 @@ Radiance shadeLight(Surface s, LightData L) {
   centreLightIncidence(L, s.position, l, irradiance);
   vec2 dx = vec2(0.0), dy = vec2(0.0);
   // Lights with extent: the light's half-vector region is the kernel of the filtered lookups
-  // (common/glint_light_kernel.glsl); delta lights keep the unfiltered ones. Both constant.
+  // (glints/chermain/light_kernel.glsl); delta lights keep the unfiltered ones. Both constant.
   bool lightKernel = param_light_extent > 0.5 && lightHasExtent(L);
   if (lightKernel) addLightRegionToKernel(s, L, l, dx, dy);
   return shadeGlints(s, gGlint, l, irradiance, dx, dy, lightKernel);

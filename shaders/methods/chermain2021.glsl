@@ -4,7 +4,7 @@
 // Lights with extent: the pixel's kernel widened by the light's half-vector region, or the light
 // as a point at its centre (parameter light_extent).
 // Descriptor: src/shading/methods/chermain2021.cpp; docs/methods.md#chermain2021.
-#include "common/glint_light_kernel.glsl"
+#include "glints/chermain/light_kernel.glsl"
 
 #if MATERIAL_GLINTS
 GlintSurface gGlint;
@@ -35,7 +35,7 @@ Radiance shadeLight(Surface s, LightData L) {
   dx *= param_kernel;
   dy *= param_kernel;
   // Lights with extent: the pixel's kernel widened by the light's half-vector region
-  // (common/glint_light_kernel.glsl); a constant condition.
+  // (glints/chermain/light_kernel.glsl); a constant condition.
   if (param_light_extent > 0.5 && lightHasExtent(L)) addLightRegionToKernel(s, L, l, dx, dy);
   return shadeGlints(s, gGlint, l, irradiance, dx, dy, true);
 #else

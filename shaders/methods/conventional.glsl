@@ -1,7 +1,7 @@
 // Method `conventional`: the BRDF evaluated once at the pixel centre (the baseline to beat).
 // Descriptor: src/shading/methods/conventional.cpp; docs/methods.md#conventional.
-#include "common/lobe.glsl"
-#include "common/lobe_shading.glsl"
+#include "lobe/lobe.glsl"
+#include "lobe/lobe_shading.glsl"
 
 void prepareSurface(inout Surface s) {}
 

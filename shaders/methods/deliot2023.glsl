@@ -1,10 +1,10 @@
 // Method `deliot2023`: Deliot & Belcour 2023, glinty appearance by distributed binomial laws on
-// anisotropic grids, with the fixes of Kneiphof & Klein's code (common/binomial_*.glsl). Its
+// anisotropic grids, with the fixes of Kneiphof & Klein's code (glints/binomial/*.glsl). Its
 // material is the binomial-glints kind (MATERIAL_BINOMIAL_GLINTS); every other material is shaded
 // as by `conventional`. Descriptor: src/shading/methods/deliot2023.cpp; docs/methods.md#deliot2023.
-#include "common/binomial_shading.glsl"
-#include "common/lobe.glsl"
-#include "common/lobe_shading.glsl"
+#include "glints/binomial/shading.glsl"
+#include "lobe/lobe.glsl"
+#include "lobe/lobe_shading.glsl"
 
 #if MATERIAL_BINOMIAL_GLINTS
 BinomialSurface gBinomial;

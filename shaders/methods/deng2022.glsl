@@ -1,18 +1,18 @@
 // Method `deng2022`: Deng et al. 2022's constant-cost spatio-angular prefiltering, queried in real
 // time: the pixel footprint's NDF read from the material's CP-compressed pyramid of NDF images
-// (common/prefiltered_ndf.glsl) instead of summed over the map's elements as `yan2016` does.
+// (glints/normal-map/prefiltered_ndf.glsl) instead of summed over the map's elements as `yan2016` does.
 // Delta lights: a point query at the half vector; lights with extent: a box query over the
 // light's half-vector box. Cost independent of the footprint and of the light's size; footprints
 // finer than the pyramid's first level are summed over the map's elements as yan2016 does (the
 // paper's switch, sec. 5.1), at a cost bounded by that level's size. Other
 // materials are shaded as by `conventional` (lights with extent by LTC).
 // Descriptor: src/shading/methods/deng2022.cpp; docs/methods.md#deng2022.
-#include "common/lobe.glsl"
-#include "common/lobe_shading.glsl"
+#include "lobe/lobe.glsl"
+#include "lobe/lobe_shading.glsl"
 
 #if MATERIAL_NORMAL_GLINTS
-#include "common/position_normal.glsl"
-#include "common/prefiltered_ndf.glsl"
+#include "glints/normal-map/position_normal.glsl"
+#include "glints/normal-map/prefiltered_ndf.glsl"
 
 vec2 gFootprintCentre;  // texels of the map
 float gFootprintSigma;  // texels: the isotropic footprint of the same area
@@ -31,7 +31,7 @@ float normalGlintsBoxMean(vec2 lo, vec2 hi) {
   return gBelowPyramid ? positionNormalBoxMean(uNormalMap, gElements, 1, lo, hi)
                        : pndfRangeMean(uMaterial, gFootprintCentre, gFootprintSigma, lo, hi);
 }
-#include "common/normal_glints_shading.glsl"
+#include "glints/normal-map/shading.glsl"
 #endif
 
 void prepareSurface(inout Surface s) {

@@ -1,8 +1,8 @@
 // Method `kaplanyan-beckmann`: NDF filtering over the pixel footprint in slope space (Kaplanyan et al. 2016):
 // Beckmann NDF convolved with the footprint's full covariance, R' = R + 2C.
 // Descriptor: src/shading/methods/kaplanyan-beckmann.cpp; docs/methods.md#kaplanyan-beckmann.
-#include "common/footprint_filtering.glsl"
-#include "common/lobe_shading.glsl"
+#include "lobe/footprint_filtering.glsl"
+#include "lobe/lobe_shading.glsl"
 
 void prepareSurface(inout Surface s) {}
 

@@ -1,8 +1,8 @@
 // Method `kaplanyan-ggx`: NDF filtering over the pixel footprint in slope space (Kaplanyan et al. 2016):
 // the NDF averaged over the footprint's bounding rectangle in slope space (closed form).
 // Descriptor: src/shading/methods/kaplanyan-ggx.cpp; docs/methods.md#kaplanyan-ggx.
-#include "common/footprint_filtering.glsl"
-#include "common/lobe_shading.glsl"
+#include "lobe/footprint_filtering.glsl"
+#include "lobe/lobe_shading.glsl"
 
 void prepareSurface(inout Surface s) {}
 

@@ -1,8 +1,8 @@
 // Method `kaplanyan-rect`: NDF filtering over the pixel footprint in slope space (Kaplanyan et al. 2016):
 // the footprint's axis-aligned bounding rectangle as a diagonal covariance, R' = R + 2 diag(fp^2).
 // Descriptor: src/shading/methods/kaplanyan-rect.cpp; docs/methods.md#kaplanyan-rect.
-#include "common/footprint_filtering.glsl"
-#include "common/lobe_shading.glsl"
+#include "lobe/footprint_filtering.glsl"
+#include "lobe/lobe_shading.glsl"
 
 void prepareSurface(inout Surface s) {}
 

@@ -4,13 +4,13 @@
 // optionally the light cut into 2 x 2 or 4 x 4 cells split hierarchically. Other materials are
 // shaded as by `conventional`. Descriptor: src/shading/methods/kneiphof2024.cpp;
 // docs/methods.md#kneiphof2024.
-#include "common/lobe.glsl"
-#include "common/lobe_shading.glsl"
+#include "lobe/lobe.glsl"
+#include "lobe/lobe_shading.glsl"
 
 #if MATERIAL_BINOMIAL_GLINTS
 const int LIGHT_CELLS = 1 << (2 * int(param_subdivision + 0.5));  // 1 (none), 4 or 16
-#include "common/binomial_area_shading.glsl"
-#include "common/binomial_subdivision.glsl"
+#include "glints/binomial/area_shading.glsl"
+#include "glints/binomial/subdivision.glsl"
 BinomialSurface gBinomial;
 GlintLtc gLtc;  // the LTC terms of the pixel's lobe, shared by every light
 #endif

@@ -1,8 +1,8 @@
 // Method `lean`: LEAN mapping (Olano & Baker 2010): the normal map's slope moments, filtered by
 // the texture hardware, give the mean normal and the slope covariance inside the pixel's
 // texture footprint. Descriptor: src/shading/methods/lean.cpp; docs/methods.md#lean.
-#include "common/lobe_shading.glsl"
-#include "common/slope_moments.glsl"
+#include "lobe/lobe_shading.glsl"
+#include "lobe/slope_moments.glsl"
 
 Lobe gLeanLobe;  // this pixel's lobe, set by prepareSurface
 

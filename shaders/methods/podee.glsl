@@ -3,10 +3,10 @@
 // point closest to the light's centre is shaded and weighted by the fraction of the reflection
 // space the light covers. Extended to sphere lights and suns, and to glossy lobes.
 // Descriptor: src/shading/methods/podee.cpp; derivations: docs/methods.md#podee.
-#include "common/lobe_shading.glsl"
-#include "common/pixel_corners.glsl"
-#include "common/reflection_space_shading.glsl"
-#include "common/slope_moments.glsl"
+#include "lobe/lobe_shading.glsl"
+#include "podee/pixel_corners.glsl"
+#include "podee/reflection_space_shading.glsl"
+#include "lobe/slope_moments.glsl"
 
 CornerRays gCorners;  // this pixel's corner rays, set by prepareSurface
 Lobe gLobe;           // this pixel's lobe, set by prepareSurface

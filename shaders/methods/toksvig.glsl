@@ -1,7 +1,7 @@
 // Method `toksvig`: Toksvig's (2005) roughness from the length of the mip-filtered normal-map
 // normal. Descriptor: src/shading/methods/toksvig.cpp; docs/methods.md#toksvig.
-#include "common/lobe_shading.glsl"
-#include "common/roughness_filtering.glsl"
+#include "lobe/lobe_shading.glsl"
+#include "lobe/roughness_filtering.glsl"
 
 void prepareSurface(inout Surface s) {
   // Without a normal map the filtered normal has length 1 and alpha is unchanged.

@@ -1,7 +1,7 @@
 // Method `tokuyoshi`: projected-space NDF filtering (Tokuyoshi & Kaplanyan 2019, 2021).
 // Descriptor: src/shading/methods/tokuyoshi.cpp; docs/methods.md#tokuyoshi.
-#include "common/footprint_filtering.glsl"
-#include "common/lobe_shading.glsl"
+#include "lobe/footprint_filtering.glsl"
+#include "lobe/lobe_shading.glsl"
 
 void prepareSurface(inout Surface s) {}
 

@@ -1,7 +1,7 @@
 // Method `vlachos`: roughness clamped from below by the screen-space change of the vertex normal
 // (Vlachos 2015). Descriptor: src/shading/methods/vlachos.cpp; docs/methods.md#vlachos.
-#include "common/lobe_shading.glsl"
-#include "common/roughness_filtering.glsl"
+#include "lobe/lobe_shading.glsl"
+#include "lobe/roughness_filtering.glsl"
 
 void prepareSurface(inout Surface s) { s.alpha = vlachosAlpha(s.alpha, s.dNdx, s.dNdy, param_scale, param_exponent); }
 

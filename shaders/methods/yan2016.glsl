@@ -1,16 +1,16 @@
 // Method `yan2016`: Yan et al. 2016's position-normal distribution of the pixel's Gaussian footprint,
-// evaluated exactly by brute force over the normal map's elements (common/position_normal.glsl), on
+// evaluated exactly by brute force over the normal map's elements (glints/normal-map/position_normal.glsl), on
 // `normal-map-glints` materials: the baseline whose cost grows with the footprint. Delta lights
 // take P at the half vector; lights with extent its mean over their half-vector box. Other
 // materials are shaded as by `conventional` (lights with extent by LTC).
 // Descriptor: src/shading/methods/yan2016.cpp; docs/methods.md#yan2016.
-#include "common/lobe.glsl"
-#include "common/lobe_shading.glsl"
+#include "lobe/lobe.glsl"
+#include "lobe/lobe_shading.glsl"
 
 
 #if MATERIAL_NORMAL_GLINTS
 const int ELEMENTS_PER_TEXEL = int(param_elements_per_texel + 0.5) + 1;  // the choices "1", "2"
-#include "common/position_normal.glsl"
+#include "glints/normal-map/position_normal.glsl"
 
 PositionNormalFootprint gFootprint;
 float gMaskingAlpha;
@@ -20,7 +20,7 @@ float normalGlintsDensity(vec2 s) { return positionNormalDensity(uNormalMap, gFo
 float normalGlintsBoxMean(vec2 lo, vec2 hi) {
   return positionNormalBoxMean(uNormalMap, gFootprint, ELEMENTS_PER_TEXEL, lo, hi);
 }
-#include "common/normal_glints_shading.glsl"
+#include "glints/normal-map/shading.glsl"
 
 #endif
 

@@ -1,6 +1,6 @@
 // Visible area lights: their emitted radiance (front face only, unless two-sided), counted in
 // the total image but not in the specular one.
-#include "common/frame.glsl"
+#include "core/frame.glsl"
 
 uniform vec3 uRadiance;
 uniform bool uTwoSided;

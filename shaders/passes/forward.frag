@@ -1,20 +1,20 @@
 // Forward shading: builds the surface record once per fragment (derivatives in uniform control
 // flow), then sums the method's (or the reference's) radiance over every light. The module is
 // chosen by the renderer through the $METHOD include; this pass never names a method.
-// Variant defines (src/render/renderer.cpp): LIGHT_RANGES (common/light_loop.glsl),
+// Variant defines (src/render/renderer.cpp): LIGHT_RANGES (lights/light_loop.glsl),
 // MATERIAL_NORMAL_MAP (1 when the material has a normal map), MATERIAL_TEXTURES (1 when its
 // parameters vary per texel), MATERIAL_GLINTS, MATERIAL_BINOMIAL_GLINTS and MATERIAL_NORMAL_GLINTS
 // (the glinty material kinds, which only their methods and the reference tell apart) and REFERENCE_PASS (1 for ground truth, which evaluates the surface
 // itself at each sample: textures at their base level).
-#include "common/frame.glsl"
-#include "common/fragment_inputs.glsl"
-#include "common/lights.glsl"
+#include "core/frame.glsl"
+#include "core/fragment_inputs.glsl"
+#include "lights/lights.glsl"
 #if MATERIAL_TEXTURES
-#include "common/material_textures.glsl"
+#include "core/material_textures.glsl"
 #endif
-#include "common/surface.glsl"
+#include "core/surface.glsl"
 #include "$METHOD"
-#include "common/light_loop.glsl"
+#include "lights/light_loop.glsl"
 
 layout(location = 0) out vec4 outTotal;
 layout(location = 1) out vec4 outSpecular;

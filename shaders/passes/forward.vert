@@ -1,5 +1,5 @@
 // Transforms one shape's vertices to world and clip space (forward and emitter passes).
-#include "common/frame.glsl"
+#include "core/frame.glsl"
 
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;

@@ -1,8 +1,8 @@
 // Diagnostics, not a method: the number of glint cells inside each pixel's footprint at the two
-// levels the glinty BRDF blends (common/glint_ndf.glsl, without its guard of GLINT_MAX_CELLS per
+// levels the glinty BRDF blends (glints/chermain/ndf.glsl, without its guard of GLINT_MAX_CELLS per
 // level), in the specular output: r = level floor(lod), g = level floor(lod) + 1, b = 1 for a
 // glinty pixel. Each light adds its share, so the sum over the scene's lights is the count.
-#include "common/glint_shading.glsl"
+#include "glints/chermain/shading.glsl"
 
 const ivec2 kGlintCellsLightRanges[LIGHT_KIND_COUNT] = LIGHT_RANGES;
 vec3 gGlintCells = vec3(0.0);

@@ -5,32 +5,32 @@
 #ifndef REFERENCE_BINOMIAL_REALISATION
 #define REFERENCE_BINOMIAL_REALISATION 0  // passes/reference_realisation.glsl sets it
 #endif
-#include "common/brdf.glsl"
-#include "common/frame.glsl"
-#include "common/lights.glsl"
-#include "common/sampling.glsl"
-#include "common/surface.glsl"
+#include "core/brdf.glsl"
+#include "core/frame.glsl"
+#include "lights/lights.glsl"
+#include "core/sampling.glsl"
+#include "core/surface.glsl"
 // Included once whatever the variant: includes are expanded once, before the preprocessor drops
 // a branch, so a module both branches below include must come before them.
-#include "common/ltc_shading.glsl"
+#include "ltc/ltc_shading.glsl"
 #if MATERIAL_GLINTS
-#include "common/glint_shading.glsl"
+#include "glints/chermain/shading.glsl"
 GlintSurface gGlint;  // the glinty BRDF with this sub-pixel's own footprint, no anti-aliasing
 #elif MATERIAL_BINOMIAL_GLINTS
-#include "common/binomial_area_shading.glsl"
-#include "common/light_ndf_integral.glsl"
+#include "glints/binomial/area_shading.glsl"
+#include "glints/binomial/light_ndf_integral.glsl"
 #if REFERENCE_BINOMIAL_REALISATION
-#include "common/binomial_realisation.glsl"
+#include "glints/binomial/realisation.glsl"
 #endif
 BinomialSurface gBinomial;  // the binomial glints with this sub-pixel's own footprint
 // Cells one sub-pixel across (Shannon's limit at the sub-pixel scale; the pixel averages them).
 const float REFERENCE_SCREEN_SPACE_SCALE = 1.0;
 // Samples of each strategy for the probability that a facet reflects a light with extent: p's own
 // error, against quadrature over the light, is 0.5% relative on average and 7% at most wherever
-// p >= 1e-4 (tests/gl/test_glint_light_probability.cpp), far below the LTC's and the cap's.
+// p >= 1e-4 (tests/glsl/test_glint_light_probability.cpp), far below the LTC's and the cap's.
 const uint REFERENCE_GLINT_P_SAMPLES = 128u;
 #elif MATERIAL_NORMAL_GLINTS
-#include "common/normal_glints_surface.glsl"
+#include "glints/normal-map/surface.glsl"
 NormalGlintPoint gNormalGlint;  // this sub-pixel's point of the map (in the macro frame)
 #endif
 
@@ -70,8 +70,8 @@ vec3 materialSpecularCos(Surface s, vec3 wo, vec3 wi) {
 #endif
 }
 
-// Solid-angle density of the BRDF sampling strategy below (common/sampling.glsl, tested by
-// chi-square against the samplers in tests/gl/test_sampling.cpp).
+// Solid-angle density of the BRDF sampling strategy below (core/sampling.glsl, tested by
+// chi-square against the samplers in tests/glsl/test_sampling.cpp).
 float brdfSamplePdf(Surface s, vec3 wo, vec3 wi) {
 #if MATERIAL_NORMAL_GLINTS
   return normalGlintReflectionPdf(gNormalGlint, wo, wi);

@@ -1,5 +1,5 @@
 // The reference with binomial-glints materials as one fixed realisation of their microfacets
-// (common/binomial_realisation.glsl), integrated over each light by the reference's MIS: the
+// (glints/binomial/realisation.glsl), integrated over each light by the reference's MIS: the
 // reference backend `raster-realisation`. Every other material as passes/reference.glsl.
 #define REFERENCE_BINOMIAL_REALISATION 1
 #include "passes/reference.glsl"

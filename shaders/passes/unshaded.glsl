@@ -1,8 +1,8 @@
 // A shading module that returns nothing: `glintlab bench` draws the scene with it to measure the
 // fixed cost of a frame (clears, vertex work, rasterisation and the surface record), which no
 // method can go below. Included in place of a method module; not a method.
-#include "common/lights.glsl"
-#include "common/surface.glsl"
+#include "lights/lights.glsl"
+#include "core/surface.glsl"
 
 void prepareSurface(inout Surface s) {}
 

@@ -13,7 +13,7 @@
 #include "eval/report.hpp"
 #include "eval/session.hpp"
 #include "render/reference_cache.hpp"
-#include "render/tables/gpu_tables.hpp"
+#include "tables/gpu_tables.hpp"
 #include "scene/scene_loader.hpp"
 #include "shading/method_reference.hpp"
 #include "shading/registry.hpp"

@@ -2,8 +2,8 @@
 // The contract between the C++ side and the shaders: limits, binding points, texture units, codes
 // and the std140 layouts of the uniform blocks. The shaders never restate it: they include
 // generated/gpu_contract.glsl, written from these constants (src/render/shader_contract.cpp), and
-// tests/gl/test_gpu_contract.cpp checks the defines and the driver's std140 offsets against them.
-// Light kinds' codes are their positions in the registry (src/scene/light_kinds.cpp).
+// tests/glsl/test_gpu_contract.cpp checks the defines and the driver's std140 offsets against them.
+// Light kinds' codes are their positions in the registry (src/scene/lights/light_kinds.cpp).
 #include <cstddef>
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
@@ -11,7 +11,7 @@
 namespace glintlab {
 
 /// Limits of one scene: lights and materials live in uniform buffers (16 KiB, the minimum every
-/// GL 4.5 driver offers; uniform, not storage, buffers: see shaders/common/light_data.glsl).
+/// GL 4.5 driver offers; uniform, not storage, buffers: see shaders/lights/light_data.glsl).
 inline constexpr int kMaxLights = 128;
 inline constexpr int kMaxMaterials = 128;
 
@@ -20,33 +20,33 @@ inline constexpr int kFrameBlockBinding = 0;
 inline constexpr int kLightBlockBinding = 1;
 inline constexpr int kMaterialBlockBinding = 2;
 /// Storage-buffer binding points of the materials' prefiltered NDF pyramids (deng2022;
-/// src/prefilter/prefiltered_ndf_layout.hpp, shaders/common/prefiltered_ndf.glsl).
+/// src/prefilter/prefiltered_ndf_layout.hpp, shaders/glints/normal-map/prefiltered_ndf.glsl).
 inline constexpr int kPrefilteredNdfRecordsBinding = 0;
 inline constexpr int kPrefilteredNdfValuesBinding = 1;
 
-/// Texture units of a material's maps (shaders/common/fragment_inputs.glsl, slope_moments.glsl).
+/// Texture units of a material's maps (shaders/core/fragment_inputs.glsl, slope_moments.glsl).
 inline constexpr int kNormalMapUnit = 0;
 inline constexpr int kSlopeMomentsUnit = 1;
 inline constexpr int kSlopeCrossMomentUnit = 2;
-/// Texture units of a textured material's parameters (shaders/common/material_textures.glsl).
+/// Texture units of a textured material's parameters (shaders/core/material_textures.glsl).
 inline constexpr int kBaseColorUnit = 3;
 inline constexpr int kMetallicRoughnessUnit = 4;
 inline constexpr int kEmissiveUnit = 5;
-/// Per-draw texture transforms (uTextureTransforms in shaders/common/material.glsl), by slot.
+/// Per-draw texture transforms (uTextureTransforms in shaders/core/material.glsl), by slot.
 inline constexpr int kTextureSlotNormalMap = 0;
 inline constexpr int kTextureSlotBaseColor = 1;
 inline constexpr int kTextureSlotMetallicRoughness = 2;
 inline constexpr int kTextureSlotEmissive = 3;
 inline constexpr int kTextureSlots = 4;
 /// Units from here on hold the precomputed tables, in their registry's order
-/// (src/render/tables/registry.cpp); GLSL sees each as TABLE_UNIT_<ID>.
+/// (src/tables/registry.cpp); GLSL sees each as TABLE_UNIT_<ID>.
 inline constexpr int kFirstTableUnit = 6;
 
 /// MaterialGpu::f0_ndf.w: the microfacet distribution.
 inline constexpr int kNdfGgx = 0;
 inline constexpr int kNdfBeckmann = 1;
 
-/// One light: LightData in shaders/common/light_data.glsl (std140: five vec4, no padding). What
+/// One light: LightData in shaders/lights/light_data.glsl (std140: five vec4, no padding). What
 /// each field holds is the kind's (src/scene/lights/<kind>.cpp packs it, shaders/lights/<kind>.glsl
 /// reads it); colour_type.w is always the kind's code.
 struct LightGpu {
@@ -62,7 +62,7 @@ static_assert(offsetof(LightGpu, colour_type) == 0 && offsetof(LightGpu, positio
               offsetof(LightGpu, axis_v) == 64);
 static_assert(kMaxLights * sizeof(LightGpu) <= 16384, "the light block must fit GL's minimum uniform block size");
 
-/// One material: MaterialData in shaders/common/material.glsl (std140).
+/// One material: MaterialData in shaders/core/material.glsl (std140).
 struct MaterialGpu {
   glm::vec4 f0_ndf;          ///< rgb: Schlick F0; a: kNdfGgx or kNdfBeckmann
   glm::vec4 diffuse_tiling;  ///< rgb: Lambert albedo; a: normal-map repeats per uv unit
@@ -84,7 +84,7 @@ static_assert(offsetof(MaterialGpu, f0_ndf) == 0 && offsetof(MaterialGpu, diffus
               offsetof(MaterialGpu, metal_rough) == 96 && offsetof(MaterialGpu, dielectric_f0) == 112);
 static_assert(kMaxMaterials * sizeof(MaterialGpu) <= 16384, "the material block must fit GL's minimum uniform block size");
 
-/// Per-frame data: FrameBlock in shaders/common/frame.glsl (std140).
+/// Per-frame data: FrameBlock in shaders/core/frame.glsl (std140).
 struct FrameUniforms {
   glm::mat4 view_proj;
   glm::vec4 camera_pos;      ///< w: 1 perspective, 0 orthographic

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "prefilter/position_normal.hpp"
-#include "scene/parallel_rows.hpp"
+#include "scene/normal_maps/parallel_rows.hpp"
 
 namespace glintlab {
 

@@ -4,7 +4,7 @@
 // one below; each level's footprints grouped by position, their non-empty angular blocks stacked
 // into one tensor per group and CP-decomposed. Groups are independent and run on every core.
 #include "prefilter/prefiltered_ndf.hpp"
-#include "scene/normal_map.hpp"
+#include "scene/normal_maps/normal_map.hpp"
 
 namespace glintlab {
 

@@ -7,7 +7,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "scene/normal_map.hpp"
+#include "scene/normal_maps/normal_map.hpp"
 
 namespace glintlab {
 

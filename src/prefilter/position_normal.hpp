@@ -2,7 +2,7 @@
 // Position-normal distributions (Yan et al. 2016, "Position-Normal Distributions for Efficient
 // Rendering of Specular Microstructure", SIGGRAPH 2016): the NDF of the part of a normal-mapped
 // surface that a Gaussian pixel footprint sees, evaluated by brute force over Gaussian elements.
-// This is the exact baseline `yan2016` (its GLSL twin is shaders/common/position_normal.glsl) and
+// This is the exact baseline `yan2016` (its GLSL twin is shaders/glints/normal-map/position_normal.glsl) and
 // the source of every NDF image deng2022 precomputes. docs/methods.md#yan2016 has the derivation.
 #include <cstdint>
 #include <glm/mat2x2.hpp>
@@ -11,7 +11,7 @@
 
 #include "prefilter/ndf_image.hpp"
 #include "prefilter/normal_field.hpp"
-#include "scene/normal_map.hpp"
+#include "scene/normal_maps/normal_map.hpp"
 
 namespace glintlab {
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "prefilter/prefiltered_ndf.hpp"
-#include "scene/normal_map.hpp"
+#include "scene/normal_maps/normal_map.hpp"
 
 namespace glintlab {
 

@@ -5,7 +5,7 @@
 // grouped by position and level, each group's blocks a CP-decomposed 3-way tensor (sec. 4.2,
 // eq. 5); point queries (sec. 4.3, eq. 6) and box queries through the angular factors' prefix sums
 // (sec. 4.4, eq. 7). The layout below is also the GPU's (src/render/prefiltered_ndf_buffers.cpp,
-// shaders/common/prefiltered_ndf.glsl); docs/methods.md#deng2022 explains every choice.
+// shaders/glints/normal-map/prefiltered_ndf.glsl); docs/methods.md#deng2022 explains every choice.
 #include <cstddef>
 #include <cstdint>
 #include <glm/vec2.hpp>

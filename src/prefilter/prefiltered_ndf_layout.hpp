@@ -1,6 +1,6 @@
 #pragma once
 // The pyramids of a scene's materials packed into the two storage buffers the GPU query reads
-// (shaders/common/prefiltered_ndf.glsl): `records`, of uint words, and `values`, of floats.
+// (shaders/glints/normal-map/prefiltered_ndf.glsl): `records`, of uint words, and `values`, of floats.
 //
 // records: word m (m < max_materials) holds material m's header offset, or kNoPrefilteredNdf.
 //   header at H: [0] levels, [1] N, [2] B, [3] R, [4] extent (float bits), [5] first word of the

@@ -49,7 +49,7 @@ GpuMesh upload(const Mesh& mesh, const glm::mat4& transform, int material) {
   return g;
 }
 
-/// The kind's record, tagged with the kind's code (shaders/common/light_data.glsl, lightType).
+/// The kind's record, tagged with the kind's code (shaders/lights/light_data.glsl, lightType).
 LightGpu to_gpu(const Light& l) {
   LightGpu g = l.kind->pack(l);
   g.colour_type.w = static_cast<float>(l.kind->code());
@@ -199,7 +199,7 @@ GpuScene::GpuScene(const Scene& scene, TableCache tables)
   materials.resize(kMaxMaterials);  // the uniform block's declared size
   materials_ = gl::make_buffer(static_cast<GLsizeiptr>(materials.size() * sizeof(MaterialGpu)), materials.data());
 
-  // Sorted by kind, in the scene's order within a kind (shaders/common/light_loop.glsl).
+  // Sorted by kind, in the scene's order within a kind (shaders/lights/light_loop.glsl).
   std::vector<LightGpu> lights;
   for (const LightKind& kind : all_light_kinds()) {
     const int begin = static_cast<int>(lights.size());

@@ -13,17 +13,17 @@
 #include "core/gpu_contract.hpp"
 #include "gl/objects.hpp"
 #include "render/prefiltered_ndfs.hpp"
-#include "render/tables/gpu_tables.hpp"
+#include "tables/gpu_tables.hpp"
 #include "scene/scene.hpp"
 
 namespace glintlab {
 
-/// Index range [x, y) of each light kind (by code, src/scene/light_kind.hpp) in the kind-sorted
+/// Index range [x, y) of each light kind (by code, src/scene/lights/light_kind.hpp) in the kind-sorted
 /// light buffer.
 using LightRanges = std::vector<glm::ivec2>;
 
 /// Tables a material's program variant reads in every method and in the reference: a glinty
-/// material's BRDF (shaders/common/glint_shading.glsl) reads the glint dictionary.
+/// material's BRDF (shaders/glints/chermain/shading.glsl) reads the glint dictionary.
 std::vector<std::string> material_tables(const Material& material);
 
 struct GpuMesh {
@@ -64,7 +64,7 @@ class GpuScene {
   /// Whether the material's parameters vary per texel (Material::textures).
   [[nodiscard]] bool textured(int material) const { return textures_[index(material)].textured; }
   /// Binds a material's textures to their units and sets `program`'s per-draw texture transforms
-  /// (uTextureTransforms, shaders/common/material.glsl); uMaterial selects its uniform-block entry.
+  /// (uTextureTransforms, shaders/core/material.glsl); uMaterial selects its uniform-block entry.
   void bind_material(GLuint program, int material) const;
   /// The precomputed tables on the GPU. Those the materials' program variants read whatever the
   /// method (material_tables) are made resident on construction; a method's own

@@ -10,7 +10,7 @@
 
 #include "gl/objects.hpp"
 #include "prefilter/prefiltered_ndf.hpp"
-#include "scene/material.hpp"
+#include "scene/materials/material.hpp"
 
 namespace glintlab {
 

@@ -11,7 +11,7 @@
 #include "render/render_target.hpp"
 #include "render/renderer.hpp"
 #include "render/subpixel_filter.hpp"
-#include "render/tables/registry.hpp"
+#include "tables/registry.hpp"
 
 namespace glintlab {
 

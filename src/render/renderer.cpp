@@ -8,7 +8,7 @@
 #include "core/error.hpp"
 #include "gl/context.hpp"
 #include "render/shader_contract.hpp"
-#include "render/tables/registry.hpp"
+#include "tables/registry.hpp"
 #include "shading/method_module.hpp"
 
 namespace glintlab {

@@ -65,7 +65,7 @@ class Renderer {
 
   /// Draws every shape with `module` into the bound target, seen through `projection` (which may
   /// select a jittered tile of the film, as the raster reference does); `target` and `tile` fill
-  /// the frame block (shaders/common/frame.glsl).
+  /// the frame block (shaders/core/frame.glsl).
   void draw_view(const std::string& module, const ParamValues& params, const Camera& camera,
                  const glm::mat4& projection, glm::ivec4 target, glm::ivec4 tile);
 

@@ -4,8 +4,8 @@
 #include <cctype>
 
 #include "core/gpu_contract.hpp"
-#include "render/tables/registry.hpp"
-#include "scene/light_kind.hpp"
+#include "tables/registry.hpp"
+#include "scene/lights/light_kind.hpp"
 
 namespace glintlab {
 
@@ -68,7 +68,7 @@ std::string property(const std::string& name, bool (*has)(const LightKind&)) {
 
 std::string light_kinds_glsl() {
   std::string out = kHeader;
-  out += "// The light interface (shaders/common/lights.glsl) dispatched to each kind's functions\n"
+  out += "// The light interface (shaders/lights/lights.glsl) dispatched to each kind's functions\n"
          "// (shaders/lights/<kind>.glsl); with a constant kind (the light loop's) the dispatch folds away.\n";
   for (const LightKind& k : all_light_kinds()) out += "#include \"" + k.glsl_file() + "\"\n";
   out += "\n";
@@ -110,7 +110,7 @@ std::string light_kinds_glsl() {
 
 std::string shade_all_lights_glsl() {
   std::string out = kHeader;
-  out += "// One loop per kind, each with a constant kind and constant range (shaders/common/light_loop.glsl).\n"
+  out += "// One loop per kind, each with a constant kind and constant range (shaders/lights/light_loop.glsl).\n"
          "Radiance shadeAllLights(Surface s) {\n  Radiance sum = Radiance(vec3(0.0), vec3(0.0));\n";
   for (const LightKind& k : all_light_kinds()) out += "  addRadiance(sum, shadeLightsOfKind(s, " + code_name(k) + "));\n";
   return out + "  return sum;\n}\n";
@@ -118,7 +118,7 @@ std::string shade_all_lights_glsl() {
 
 std::string contract_glsl() {
   std::string out = kHeader;
-  out += "// The C++/GLSL contract (src/core/gpu_contract.hpp) and the light kinds' codes (src/scene/light_kinds.cpp).\n";
+  out += "// The C++/GLSL contract (src/core/gpu_contract.hpp) and the light kinds' codes (src/scene/lights/light_kinds.cpp).\n";
   for (const auto& [name, value] : contract_defines()) out += "#define " + name + " " + value + "\n";
   return out;
 }

@@ -2,8 +2,8 @@
 // GLSL generated from the C++ side, so that the shaders never restate a constant, a layout or the
 // list of light kinds: generated/gpu_contract.glsl (src/core/gpu_contract.hpp's constants and the
 // light kinds' codes as defines), generated/light_kinds.glsl (each kind's file and the dispatch
-// of the light interface, shaders/common/lights.glsl) and generated/shade_all_lights.glsl (the
-// light loop's call per kind, shaders/common/light_loop.glsl).
+// of the light interface, shaders/lights/lights.glsl) and generated/shade_all_lights.glsl (the
+// light loop's call per kind, shaders/lights/light_loop.glsl).
 #include <string>
 #include <utility>
 #include <vector>

@@ -11,7 +11,7 @@
 #include <tuple>
 
 #include "core/error.hpp"
-#include "scene/gltf_import.hpp"
+#include "scene/gltf/gltf_import.hpp"
 #include "scene/obj_check.hpp"
 
 namespace glintlab {

@@ -1,7 +1,7 @@
 #pragma once
 // Mesh files as one mesh: Wavefront OBJ (its materials ignored: the scene file assigns one), and
 // glTF 2.0 (.gltf, .glb) flattened (node transforms applied). Scenes import glTF files whole,
-// materials, lights and cameras included, through scene/gltf_import.hpp.
+// materials, lights and cameras included, through scene/gltf/gltf_import.hpp.
 #include <filesystem>
 
 #include "scene/mesh.hpp"

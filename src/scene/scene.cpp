@@ -3,7 +3,7 @@
 #include <span>
 
 #include "core/hash.hpp"
-#include "scene/light_kind.hpp"
+#include "scene/lights/light_kind.hpp"
 
 namespace glintlab {
 

@@ -8,8 +8,8 @@
 
 #include "core/gpu_contract.hpp"  // kMaxLights, kMaxMaterials: a scene's limits
 #include "scene/camera.hpp"
-#include "scene/light_kind.hpp"
-#include "scene/material.hpp"
+#include "scene/lights/light_kind.hpp"
+#include "scene/materials/material.hpp"
 #include "scene/mesh.hpp"
 
 namespace glintlab {

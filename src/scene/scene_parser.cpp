@@ -7,11 +7,11 @@
 #include <sstream>
 
 #include "core/error.hpp"
-#include "scene/gltf_import.hpp"
-#include "scene/gltf_showcase.hpp"
-#include "scene/light_kind.hpp"
+#include "scene/gltf/gltf_import.hpp"
+#include "scene/gltf/gltf_showcase.hpp"
+#include "scene/lights/light_kind.hpp"
 #include "scene/mesh_io.hpp"
-#include "scene/normal_glints.hpp"
+#include "scene/materials/normal_glints.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/toml_reader.hpp"
 

@@ -41,10 +41,10 @@ struct MethodDescriptor {
   std::string citation;  ///< the paper (or "baseline")
   std::string summary;   ///< one paragraph, shown by `glintlab methods`
   std::vector<ParamDecl> params;
-  /// Ids of the precomputed tables the module reads (src/render/tables/registry.cpp): made
+  /// Ids of the precomputed tables the module reads (src/tables/registry.cpp): made
   /// resident and bound before the renderer draws with it.
   std::vector<std::string> tables;
-  /// Whether the module reads the materials' prefiltered NDF pyramids (shaders/common/
+  /// Whether the module reads the materials' prefiltered NDF pyramids (shaders/glints/normal-map/
   /// prefiltered_ndf.glsl): the renderer makes those of the parameters' prefilter settings
   /// resident and binds them before drawing (src/render/prefiltered_ndfs.hpp).
   bool reads_prefiltered_ndfs = false;

@@ -1,7 +1,7 @@
 #pragma once
 // The CPU half of a precomputed table (docs/extending.md, "A precomputed table"): what it
 // is, what its values depend on and how they are generated. TableCache keeps the values on disk;
-// the render layer's Table (render/tables/table.hpp) adds how they are uploaded and bound.
+// the render layer's Table (tables/table.hpp) adds how they are uploaded and bound.
 #include <cstddef>
 #include <cstdint>
 #include <functional>

@@ -5,7 +5,7 @@
 
 #include "core/error.hpp"
 #include "eval/memory_budget.hpp"
-#include "scene/normal_map.hpp"
+#include "scene/normal_maps/normal_map.hpp"
 #include "scene/scene.hpp"
 
 using namespace glintlab;

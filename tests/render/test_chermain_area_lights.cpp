@@ -1,5 +1,5 @@
 // Lights with extent in the Chermain glint methods (parameter light_extent,
-// shaders/common/glint_light_kernel.glsl; docs/methods.md, "Area lights: the light's half-vector
+// shaders/glints/chermain/light_kernel.glsl; docs/methods.md, "Area lights: the light's half-vector
 // region as a slope-space kernel"): delta lights keep the point form bit for bit, a tiny light is
 // its point form, and for larger quad and sphere lights the half-vector kernel is closer to the
 // reference that samples the light than the light as a point at its centre, without more flicker;

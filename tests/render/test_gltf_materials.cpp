@@ -8,8 +8,8 @@
 #include <cmath>
 
 #include "gl_fixture.hpp"
-#include "scene/gltf_showcase.hpp"
-#include "scene/gltf_writer.hpp"
+#include "scene/gltf/gltf_showcase.hpp"
+#include "scene/gltf/gltf_writer.hpp"
 #include "scratch_directory.hpp"
 #include "shading/registry.hpp"
 

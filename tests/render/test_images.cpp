@@ -135,7 +135,7 @@ TEST(Images, ReferenceConvergesWithMoreSamples) {
 // One test per built-in scene, so that ctest runs them in parallel (most of their time is
 // compiling each scene's program variants on llvmpipe). These renders are also the suite's compile
 // check of every method's module and the reference's in each material variant a built-in scene has,
-// with that scene's light kinds: Shaders.EveryMethodAndPassCompiles* (tests/gl/test_shaders.cpp)
+// with that scene's light kinds: Shaders.EveryMethodAndPassCompiles* (tests/glsl/test_shaders.cpp)
 // compile only the (module, variant, light kind) they leave out, read from the scenes by
 // builtin_scene_light_kinds() (tests/builtin_scene_programs.hpp). So render every method, at its
 // defaults (but deng2022's precompute settings, below: host-only, the same programs), in every

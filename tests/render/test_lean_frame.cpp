@@ -1,4 +1,4 @@
-// LEAN's slope covariance in the shading frame (shaders/common/slope_moments.glsl,
+// LEAN's slope covariance in the shading frame (shaders/lobe/slope_moments.glsl,
 // leanShadingFrame): on a normal map of tilted domes, where a pixel's mean normal is tilted 40-60
 // degrees, `lean` must keep the reference's energy; with the covariance left in the vertex frame's
 // slopes the lobe there is 1/cos^2 too wide along the tilt and draws bright rings.

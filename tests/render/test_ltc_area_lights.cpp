@@ -1,5 +1,5 @@
 // Lights with extent integrated by linearly transformed cosines (`area_lights = ltc`,
-// shaders/common/ltc_shading.glsl) against the reference: the exact Lambert term of polygons and
+// shaders/ltc/ltc_shading.glsl) against the reference: the exact Lambert term of polygons and
 // disks (no fit involved), the GGX lobe within the fit's error on glossy surfaces, lights crossing
 // the horizon, and a randomized sweep of shapes, sizes and orientations without NaN.
 #include <gtest/gtest.h>

@@ -95,7 +95,7 @@ TEST(NarrowLobes, ShadingIsContinuousAsTheLobeNarrows) {
           a.emplace_back(alpha, offset, kind, refine);
           b.emplace_back(0.0f);
         }
-  const auto gpu = evaluate_glsl("#include \"common/lobe_shading.glsl\"\n", R"(
+  const auto gpu = evaluate_glsl("#include \"lobe/lobe_shading.glsl\"\n", R"(
 vec4 evaluate(vec4 a, vec4 b) {
   float theta = radians(0.5);
   vec3 l = normalize(vec3(0.3, 0.0, 1.0));  // towards the sun

@@ -12,7 +12,7 @@
 
 #include "gl_fixture.hpp"
 #include "random_area_lights.hpp"
-#include "scene/normal_glints.hpp"
+#include "scene/materials/normal_glints.hpp"
 
 using namespace glintlab;
 using namespace glintlab::test;

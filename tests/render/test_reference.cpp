@@ -11,7 +11,7 @@
 #include "core/metrics.hpp"
 #include "eval/commands.hpp"
 #include "gl_fixture.hpp"
-#include "scene/normal_map.hpp"
+#include "scene/normal_maps/normal_map.hpp"
 
 using namespace glintlab;
 using namespace glintlab::test;

@@ -1,4 +1,4 @@
-// glTF import (scene/gltf_import.hpp) and its place in scene files, on documents glintlab's own
+// glTF import (scene/gltf/gltf_import.hpp) and its place in scene files, on documents glintlab's own
 // writer makes: materials and their extensions in glintlab's form, uv and texture rows flipped to
 // v up, texture transforms conjugated by that flip, the file's tangents kept, lights and cameras
 // in the world, unimplemented extensions named, and every failure an InputError naming the file.
@@ -10,10 +10,10 @@
 #include <sys/stat.h>
 
 #include "core/error.hpp"
-#include "scene/gltf_import.hpp"
-#include "scene/gltf_showcase.hpp"
-#include "scene/gltf_writer.hpp"
-#include "scene/light_kind.hpp"
+#include "scene/gltf/gltf_import.hpp"
+#include "scene/gltf/gltf_showcase.hpp"
+#include "scene/gltf/gltf_writer.hpp"
+#include "scene/lights/light_kind.hpp"
 #include "scene/scene_loader.hpp"
 #include "scratch_directory.hpp"
 

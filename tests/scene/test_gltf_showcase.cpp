@@ -1,4 +1,4 @@
-// The showcase model (scene/gltf_showcase.hpp) that the built-in glTF scene loads, read back with
+// The showcase model (scene/gltf/gltf_showcase.hpp) that the built-in glTF scene loads, read back with
 // TinyGLTF's loader: everything the importer must handle is present and correct (materials and
 // their extensions, texture transforms, lights, camera, a nested hierarchy, primitives with and
 // without TANGENT), the PNGs decode to the document's pixels, and tangents and normal maps follow
@@ -13,7 +13,7 @@
 #include <glm/mat4x4.hpp>
 #include <set>
 
-#include "scene/gltf_showcase.hpp"
+#include "scene/gltf/gltf_showcase.hpp"
 #include "scene/gltf_test_support.hpp"
 #include "scratch_directory.hpp"
 

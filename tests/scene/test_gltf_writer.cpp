@@ -1,4 +1,4 @@
-// glintlab's glTF writer (scene/gltf_writer.hpp), read back with TinyGLTF's loader: a textured quad
+// glintlab's glTF writer (scene/gltf/gltf_writer.hpp), read back with TinyGLTF's loader: a textured quad
 // round-trips exactly through .glb and .gltf, the binary layout follows the glTF 2.0 spec
 // (chunks, 4-byte alignment, strides, targets, POSITION bounds), and inconsistent documents are
 // rejected before anything is written.
@@ -12,7 +12,7 @@
 
 #include "core/error.hpp"
 #include "scene/gltf_test_support.hpp"
-#include "scene/gltf_writer.hpp"
+#include "scene/gltf/gltf_writer.hpp"
 #include "scratch_directory.hpp"
 
 using namespace glintlab;

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "core/error.hpp"
-#include "scene/normal_map.hpp"
+#include "scene/normal_maps/normal_map.hpp"
 #include "scratch_directory.hpp"
 #include "test_scenes.hpp"
 

@@ -1,4 +1,4 @@
-// Procedural normal maps (src/scene/normal_map.hpp): the fast `bumps` and `brushed` evaluation
+// Procedural normal maps (src/scene/normal_maps/normal_map.hpp): the fast `bumps` and `brushed` evaluation
 // against its definition, the slope statistics they promise, `scratches` against its periodic
 // definition and its coverage, `flakes` jitter and flat cells, and progress reports.
 #include <gtest/gtest.h>
@@ -9,10 +9,10 @@
 #include <glm/trigonometric.hpp>
 
 #include "core/error.hpp"
-#include "scene/bump_waves.hpp"
+#include "scene/normal_maps/bump_waves.hpp"
 #include "scene/generation_progress.hpp"
-#include "scene/normal_map.hpp"
-#include "scene/scratches.hpp"
+#include "scene/normal_maps/normal_map.hpp"
+#include "scene/normal_maps/scratches.hpp"
 #include "test_scenes.hpp"
 
 using namespace glintlab;

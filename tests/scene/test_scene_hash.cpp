@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/light_kind.hpp"
+#include "scene/lights/light_kind.hpp"
 #include "test_scenes.hpp"
 
 using namespace glintlab;

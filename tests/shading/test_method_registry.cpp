@@ -120,8 +120,8 @@ TEST(MethodRegistry, ParameterValuesReachTheShader) {
 
 TEST(MethodRegistry, ADeclaredParameterTheModuleNeverReadsIsAnErrorNamingIt) {
   shaders().add_source("methods/test-unused.glsl", R"(
-#include "common/lobe.glsl"
-#include "common/lobe_shading.glsl"
+#include "lobe/lobe.glsl"
+#include "lobe/lobe_shading.glsl"
 // param_unused is named here only in a comment: that is not a use.
 void prepareSurface(inout Surface s) { s.alpha *= param_used; }
 Radiance shadeLight(Surface s, LightData L) { return shadeLobe(s, L, materialLobe(s)); }
@@ -136,8 +136,8 @@ Radiance shadeLight(Surface s, LightData L) { return shadeLobe(s, L, materialLob
 
 TEST(MethodRegistry, AParameterTheModuleReadsButDoesNotDeclareIsAnErrorNamingIt) {
   shaders().add_source("methods/test-undeclared.glsl", R"(
-#include "common/lobe.glsl"
-#include "common/lobe_shading.glsl"
+#include "lobe/lobe.glsl"
+#include "lobe/lobe_shading.glsl"
 void prepareSurface(inout Surface s) { s.alpha *= param_missing; }
 Radiance shadeLight(Surface s, LightData L) { return shadeLobe(s, L, materialLobe(s)); }
 )");

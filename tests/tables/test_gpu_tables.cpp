@@ -1,4 +1,4 @@
-// Precomputed tables on the GPU (src/render/tables): the registry, units and their GLSL defines,
+// Precomputed tables on the GPU (src/tables): the registry, units and their GLSL defines,
 // the upload against its declared size, and who makes a table resident: the scene's glinty
 // materials, and a method that declares it.
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include "core/error.hpp"
 
 #include "gl_fixture.hpp"
-#include "render/tables/gpu_tables.hpp"
+#include "tables/gpu_tables.hpp"
 #include "shading/registry.hpp"
 
 namespace glintlab {
@@ -54,7 +54,7 @@ TEST(Tables, EachHasItsOwnUnitAboveTheMaterialsTexturesAndAGlslDefine) {
 
 TEST(Tables, TheGlslSamplerReadsTheUnitTheRegistryBindsItTo) {
   // The define reaches GLSL: the sampler's binding, as the linked program reports it.
-  const auto r = test::evaluate_glsl("#include \"common/glint_dictionary.glsl\"",
+  const auto r = test::evaluate_glsl("#include \"glints/chermain/dictionary.glsl\"",
                                      "vec4 evaluate(vec4 a, vec4 b) { return vec4(TABLE_UNIT_GLINT_DICTIONARY); }",
                                      {glm::vec4(0)}, {glm::vec4(0)});
   EXPECT_EQ(r[0].x, static_cast<float>(find_table("glint-dictionary").unit));

@@ -11,7 +11,7 @@
 #include <ranges>
 
 #include "core/hash.hpp"
-#include "render/tables/registry.hpp"
+#include "tables/registry.hpp"
 #include "tables/table_cache.hpp"
 
 namespace glintlab {

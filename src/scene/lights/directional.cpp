@@ -1,7 +1,7 @@
 // Directional light: irradiance E [W/m^2] at normal incidence from one direction; a delta light
 // (shaders/lights/directional.glsl). With an angular radius it is a sun (sun.cpp): scenes written
 // before the sun kind existed keep their meaning.
-#include "scene/light_kind.hpp"
+#include "scene/lights/light_kind.hpp"
 #include "scene/lights/light_keys.hpp"
 
 namespace glintlab {

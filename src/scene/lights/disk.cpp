@@ -1,7 +1,7 @@
 // Disk light: a one-sided disk of radiance L [W/(m^2 sr)] (shaders/lights/disk.glsl).
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "scene/light_kind.hpp"
+#include "scene/lights/light_kind.hpp"
 #include "scene/lights/light_keys.hpp"
 
 namespace glintlab {

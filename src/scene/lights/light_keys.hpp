@@ -4,7 +4,7 @@
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 
-#include "scene/light.hpp"
+#include "scene/lights/light.hpp"
 #include "scene/toml_reader.hpp"
 
 namespace glintlab::light_keys {

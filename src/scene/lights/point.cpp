@@ -1,5 +1,5 @@
 // Point light: intensity I [W/sr] from a point; a delta light (shaders/lights/point.glsl).
-#include "scene/light_kind.hpp"
+#include "scene/lights/light_kind.hpp"
 #include "scene/lights/light_keys.hpp"
 
 namespace glintlab {

@@ -1,7 +1,7 @@
 // Sphere light: a sphere of radiance L [W/(m^2 sr)] (shaders/lights/sphere.glsl).
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "scene/light_kind.hpp"
+#include "scene/lights/light_kind.hpp"
 #include "scene/lights/light_keys.hpp"
 
 namespace glintlab {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "scene/light_kind.hpp"
+#include "scene/lights/light_kind.hpp"
 #include "scene/lights/light_keys.hpp"
 
 namespace glintlab {

@@ -2,7 +2,7 @@
 // radiance E / (pi sin^2 theta) over a cone of directions (shaders/lights/sun.glsl).
 #include <cmath>
 
-#include "scene/light_kind.hpp"
+#include "scene/lights/light_kind.hpp"
 #include "scene/lights/light_keys.hpp"
 
 namespace glintlab {

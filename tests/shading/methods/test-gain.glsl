@@ -1,7 +1,7 @@
 // Method `test-gain` (tests only): conventional's radiance times param_gain, declared in
 // tests/shading/methods/test-gain.cpp.
-#include "common/lobe.glsl"
-#include "common/lobe_shading.glsl"
+#include "lobe/lobe.glsl"
+#include "lobe/lobe_shading.glsl"
 
 void prepareSurface(inout Surface s) {}
 

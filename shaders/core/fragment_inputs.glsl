@@ -1,0 +1,41 @@
+// The forward pass's per-fragment inputs: interpolated vertex attributes (passes/forward.vert)
+// and the draw's material. Declared before the method module, so that a method may re-evaluate
+// the attributes elsewhere in the pixel (attributesAtOffset; see podee/pixel_corners.glsl).
+#include "core/material.glsl"
+#include "generated/gpu_contract.glsl"
+
+in vec3 vPosition;
+in vec3 vNormal;
+in vec4 vTangent;
+in vec2 vUV;
+
+layout(binding = NORMAL_MAP_UNIT) uniform sampler2D uNormalMap;
+uniform int uMaterial;
+
+// Normal-map coordinates of a uv (the material's tiling and texture transform applied).
+vec2 normalMapCoordinates(vec2 uv) { return uTextureTransforms[TEXTURE_SLOT_NORMAL_MAP] * vec3(uv, 1.0); }
+
+// The vertex attributes at `offset` pixels from the pixel centre, perspective-correct, as
+// interpolateAtOffset would give them (extrapolated linearly beyond the triangle). An attribute
+// divided by clip w, and 1/w (gl_FragCoord.w), are affine in screen space over the triangle, and
+// the 2x2 quad's helper invocations evaluate the same planes, so first-order steps along their
+// fine derivatives are exact. interpolateAtOffset itself is not used: Mesa's llvmpipe 22.x
+// interpolates perspective inputs affinely at an offset (errors of 30% at a pixel's corner on a
+// receding plane). Call in uniform control flow.
+struct VertexAttributes {
+  vec3 position, normal;
+  vec4 tangent;
+  vec2 uv;
+};
+
+vec4 affineAtOffset(vec4 v, vec2 offset) { return v + offset.x * dFdxFine(v) + offset.y * dFdyFine(v); }
+
+VertexAttributes attributesAtOffset(vec2 offset) {
+  float invW = gl_FragCoord.w;
+  float w = 1.0 / affineAtOffset(vec4(invW), offset).x;
+  vec4 position = affineAtOffset(vec4(vPosition, 1.0) * invW, offset) * w;
+  vec4 normal = affineAtOffset(vec4(vNormal, 0.0) * invW, offset) * w;
+  vec4 tangent = affineAtOffset(vTangent * invW, offset) * w;
+  vec4 uv = affineAtOffset(vec4(vUV, 0.0, 0.0) * invW, offset) * w;
+  return VertexAttributes(position.xyz, normal.xyz, tangent, uv.xy);
+}

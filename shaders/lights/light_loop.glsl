@@ -1,0 +1,31 @@
+// The sum of a shading module's shadeLight over every light of the scene, specialised on the
+// scene's lights. The light buffer is sorted by kind (src/render/gpu_scene.cpp) and the program
+// variant defines LIGHT_RANGES, the constant initialiser of each kind's index range [x, y).
+// shadeAllLights (generated from the kinds' registry) calls shadeLightsOfKind once per kind with
+// the kind's code as a constant: with constant ranges every loop has a constant trip count and a
+// constant kind, so the compiler drops absent kinds, unrolls short loops, folds the dispatch of
+// lights/lights.glsl to the kind's functions and loads each light from a constant offset. This
+// matters on SIMD CPU drivers: Mesa's llvmpipe runs both sides of every branch and each loop
+// iteration is costly, so an unspecialised loop costs the code of every kind for every light
+// (measured in docs/results.md, "Speed").
+#include "lights/lights.glsl"
+#include "core/surface.glsl"
+
+const ivec2 kLightRange[LIGHT_KIND_COUNT] = LIGHT_RANGES;
+
+void addRadiance(inout Radiance sum, Radiance r) {
+  sum.diffuse += r.diffuse;
+  sum.specular += r.specular;
+}
+
+Radiance shadeLightsOfKind(Surface s, const int kind) {
+  Radiance sum = Radiance(vec3(0.0), vec3(0.0));
+  for (int i = kLightRange[kind].x; i < kLightRange[kind].y; ++i) {
+    LightData L = lights[i];
+    L.colour_type.a = float(kind);  // a constant: lightType(L) folds to this kind
+    addRadiance(sum, shadeLight(s, L));
+  }
+  return sum;
+}
+
+#include "generated/shade_all_lights.glsl"

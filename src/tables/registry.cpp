@@ -1,0 +1,47 @@
+#include "tables/registry.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+#include "core/error.hpp"
+
+namespace glintlab {
+
+Table glint_dictionary_table();
+Table ltc_ggx_table();
+Table ltc_ndf_table();
+
+const std::vector<Table>& all_tables() {
+  static const std::vector<Table> tables = [] {
+    std::vector<Table> list = {
+        glint_dictionary_table(),
+        ltc_ggx_table(),
+        ltc_ndf_table(),
+    };
+    for (std::size_t i = 0; i < list.size(); ++i) list[i].unit = kFirstTableUnit + static_cast<int>(i);
+    return list;
+  }();
+  return tables;
+}
+
+const Table& find_table(const std::string& id) {
+  for (const auto& t : all_tables())
+    if (t.source.id == id) return t;
+  std::string known;
+  for (const auto& t : all_tables()) known += (known.empty() ? "" : ", ") + t.source.id;
+  throw InputError("unknown precomputed table '" + id + "'; allowed: " + known);
+}
+
+std::string table_define(const std::string& id) {
+  std::string name = "TABLE_UNIT_";
+  for (char c : id) name += std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::toupper(c)) : '_';
+  return name;
+}
+
+ShaderDefines table_defines() {
+  ShaderDefines defines;
+  for (const auto& t : all_tables()) defines.emplace_back(table_define(t.source.id), std::to_string(t.unit));
+  return defines;
+}
+
+}  // namespace glintlab

@@ -1,0 +1,173 @@
+// The C++/GLSL contract (src/core/gpu_contract.hpp): the defines the shaders get are the C++
+// constants, and the driver lays the uniform blocks out where the C++ records put their fields.
+#include <gtest/gtest.h>
+
+#include <cctype>
+#include <cstddef>
+
+#include "gl_fixture.hpp"
+#include "tables/registry.hpp"
+#include "render/shader_contract.hpp"
+#include "scene/lights/light_kind.hpp"
+
+using namespace glintlab;
+using namespace glintlab::test;
+
+namespace {
+
+/// The values of GLSL integer expressions, evaluated on the device.
+std::vector<int> glsl_values(const std::string& includes, const std::vector<std::string>& expressions) {
+  std::string body = "vec4 evaluate(vec4 a, vec4 b) {\n  int i = int(a.x);\n";
+  for (std::size_t i = 0; i < expressions.size(); ++i)
+    body += "  if (i == " + std::to_string(i) + ") return vec4(float(" + expressions[i] + "));\n";
+  body += "  return vec4(-1.0);\n}\n";
+  std::vector<glm::vec4> a;
+  for (std::size_t i = 0; i < expressions.size(); ++i) a.emplace_back(static_cast<float>(i), 0, 0, 0);
+  std::vector<int> out;
+  for (const auto& v : evaluate_glsl(includes, body, a, a)) out.push_back(static_cast<int>(v.x));
+  return out;
+}
+
+/// Offset (bytes) of a member of an active uniform block, by its GLSL name; -1 if absent.
+GLint uniform_offset(GLuint program, const char* name) {
+  const GLuint index = glGetProgramResourceIndex(program, GL_UNIFORM, name);
+  if (index == GL_INVALID_INDEX) return -1;
+  const GLenum prop = GL_OFFSET;
+  GLint offset = -1;
+  glGetProgramResourceiv(program, GL_UNIFORM, index, 1, &prop, 1, nullptr, &offset);
+  return offset;
+}
+
+/// A property (GL_BUFFER_DATA_SIZE, GL_BUFFER_BINDING) of the uniform block `name`, or -1.
+GLint block_property(GLuint program, const char* name, GLenum property) {
+  const GLuint index = glGetProgramResourceIndex(program, GL_UNIFORM_BLOCK, name);
+  if (index == GL_INVALID_INDEX) return -1;
+  GLint value = -1;
+  glGetProgramResourceiv(program, GL_UNIFORM_BLOCK, index, 1, &property, 1, nullptr, &value);
+  return value;
+}
+GLint block_size(GLuint program, const char* name) { return block_property(program, name, GL_BUFFER_DATA_SIZE); }
+GLint block_binding(GLuint program, const char* name) { return block_property(program, name, GL_BUFFER_BINDING); }
+
+GLint sampler_unit(GLuint program, const char* name) {
+  GLint unit = -1;
+  glGetUniformiv(program, glGetUniformLocation(program, name), &unit);
+  return unit;
+}
+
+}  // namespace
+
+TEST(GpuContract, GeneratedDefinesAreTheCppConstants) {
+  struct Expected {
+    const char* define;
+    int value;
+  };
+  std::vector<Expected> expected = {
+      {"MAX_LIGHTS", kMaxLights},
+      {"MAX_MATERIALS", kMaxMaterials},
+      {"FRAME_BLOCK_BINDING", kFrameBlockBinding},
+      {"LIGHT_BLOCK_BINDING", kLightBlockBinding},
+      {"MATERIAL_BLOCK_BINDING", kMaterialBlockBinding},
+      {"PREFILTERED_NDF_RECORDS_BINDING", kPrefilteredNdfRecordsBinding},
+      {"PREFILTERED_NDF_VALUES_BINDING", kPrefilteredNdfValuesBinding},
+      {"NORMAL_MAP_UNIT", kNormalMapUnit},
+      {"SLOPE_MOMENTS_UNIT", kSlopeMomentsUnit},
+      {"SLOPE_CROSS_MOMENT_UNIT", kSlopeCrossMomentUnit},
+      {"BASE_COLOR_UNIT", kBaseColorUnit},
+      {"METALLIC_ROUGHNESS_UNIT", kMetallicRoughnessUnit},
+      {"EMISSIVE_UNIT", kEmissiveUnit},
+      {"TEXTURE_SLOT_NORMAL_MAP", kTextureSlotNormalMap},
+      {"TEXTURE_SLOT_BASE_COLOR", kTextureSlotBaseColor},
+      {"TEXTURE_SLOT_METALLIC_ROUGHNESS", kTextureSlotMetallicRoughness},
+      {"TEXTURE_SLOT_EMISSIVE", kTextureSlotEmissive},
+      {"TEXTURE_SLOTS", kTextureSlots},
+      {"FIRST_TABLE_UNIT", kFirstTableUnit},
+      {"NDF_GGX", kNdfGgx},
+      {"NDF_BECKMANN", kNdfBeckmann},
+      {"LIGHT_FORM_NONE", static_cast<int>(LightForm::None)},
+      {"LIGHT_FORM_DISK", static_cast<int>(LightForm::Disk)},
+      {"LIGHT_FORM_POLYGON", static_cast<int>(LightForm::Polygon)},
+      {"LIGHT_KIND_COUNT", static_cast<int>(all_light_kinds().size())},
+  };
+  std::vector<std::string> table_units;  // kept alive: Expected holds the names' pointers
+  for (const auto& t : all_tables()) table_units.push_back(table_define(t.source.id));
+  for (std::size_t i = 0; i < table_units.size(); ++i)
+    expected.push_back({table_units[i].c_str(), kFirstTableUnit + static_cast<int>(i)});
+  std::vector<std::string> expressions;
+  for (const auto& e : expected) expressions.push_back(e.define);
+  for (const auto& k : all_light_kinds()) {
+    std::string define = "LIGHT_";
+    for (char c : k.id) define += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    expressions.push_back(define);
+  }
+  const auto values = glsl_values("#include \"generated/gpu_contract.glsl\"\n", expressions);
+  for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_EQ(values[i], expected[i].value) << expected[i].define;
+  for (std::size_t k = 0; k < all_light_kinds().size(); ++k)
+    EXPECT_EQ(values[expected.size() + k], all_light_kinds()[k].code()) << expressions[expected.size() + k];
+  EXPECT_EQ(contract_defines().size(), expressions.size()) << "a define this test does not check";
+}
+
+TEST(GpuContract, Std140LayoutsMatchTheCppRecords) {
+  // The driver's offsets of every member of the three uniform blocks, their bindings and sizes,
+  // in a program that declares them the way the forward pass does.
+  shaders().add_source("test/contract_layout.comp", R"(
+layout(local_size_x = 1) in;
+#include "core/frame.glsl"
+#include "lights/light_data.glsl"
+#include "core/material.glsl"
+#include "glints/chermain/dictionary.glsl"
+#include "lobe/slope_moments.glsl"
+#include "core/material_textures.glsl"
+layout(binding = NORMAL_MAP_UNIT) uniform sampler2D uNormalMapProbe;
+layout(std430, binding = 7) writeonly buffer Out { vec4 outV[]; };
+void main() {
+  outV[0] = uViewProj[0] + uCameraPos + uCameraForward + vec4(uTarget + uTile);
+  outV[1] = lights[1].colour_type + lights[0].position_radius + lights[0].direction_cos + lights[0].axisU + lights[0].axisV;
+  outV[2] = materials[1].f0_ndf + materials[0].diffuse_tiling + materials[0].alpha_rho + materials[0].glints +
+            materials[0].emission + materials[0].base_color + materials[0].metal_rough + materials[0].dielectric_f0;
+  outV[3] = textureLod(uNormalMapProbe, vec2(0.0), 0.0) + textureLod(uSlopeMoments, vec2(0.0), 0.0) +
+            textureLod(uSlopeCrossMoment, vec2(0.0), 0.0) + textureLod(uGlintDictionary, vec2(0.0), 0.0);
+  outV[4] = textureLod(uBaseColor, vec2(0.0), 0.0) + textureLod(uMetallicRoughness, vec2(0.0), 0.0) +
+            textureLod(uEmissive, vec2(0.0), 0.0);
+}
+)");
+  const GLuint program = shaders().compute("test/contract_layout.comp");
+  EXPECT_EQ(block_binding(program, "FrameBlock"), kFrameBlockBinding);
+  EXPECT_EQ(block_binding(program, "LightBlock"), kLightBlockBinding);
+  EXPECT_EQ(block_binding(program, "MaterialBlock"), kMaterialBlockBinding);
+  EXPECT_EQ(block_size(program, "FrameBlock"), static_cast<GLint>(sizeof(FrameUniforms)));
+  EXPECT_EQ(block_size(program, "LightBlock"), static_cast<GLint>(kMaxLights * sizeof(LightGpu)));
+  EXPECT_EQ(block_size(program, "MaterialBlock"), static_cast<GLint>(kMaxMaterials * sizeof(MaterialGpu)));
+
+  EXPECT_EQ(uniform_offset(program, "uViewProj"), static_cast<GLint>(offsetof(FrameUniforms, view_proj)));
+  EXPECT_EQ(uniform_offset(program, "uCameraPos"), static_cast<GLint>(offsetof(FrameUniforms, camera_pos)));
+  EXPECT_EQ(uniform_offset(program, "uCameraForward"), static_cast<GLint>(offsetof(FrameUniforms, camera_forward)));
+  EXPECT_EQ(uniform_offset(program, "uTarget"), static_cast<GLint>(offsetof(FrameUniforms, target)));
+  EXPECT_EQ(uniform_offset(program, "uTile"), static_cast<GLint>(offsetof(FrameUniforms, tile)));
+
+  EXPECT_EQ(uniform_offset(program, "lights[0].colour_type"), static_cast<GLint>(offsetof(LightGpu, colour_type)));
+  EXPECT_EQ(uniform_offset(program, "lights[0].position_radius"), static_cast<GLint>(offsetof(LightGpu, position_radius)));
+  EXPECT_EQ(uniform_offset(program, "lights[0].direction_cos"), static_cast<GLint>(offsetof(LightGpu, direction_cos)));
+  EXPECT_EQ(uniform_offset(program, "lights[0].axisU"), static_cast<GLint>(offsetof(LightGpu, axis_u)));
+  EXPECT_EQ(uniform_offset(program, "lights[0].axisV"), static_cast<GLint>(offsetof(LightGpu, axis_v)));
+  EXPECT_EQ(uniform_offset(program, "lights[1].colour_type"), static_cast<GLint>(sizeof(LightGpu)));
+
+  EXPECT_EQ(uniform_offset(program, "materials[0].f0_ndf"), static_cast<GLint>(offsetof(MaterialGpu, f0_ndf)));
+  EXPECT_EQ(uniform_offset(program, "materials[0].diffuse_tiling"), static_cast<GLint>(offsetof(MaterialGpu, diffuse_tiling)));
+  EXPECT_EQ(uniform_offset(program, "materials[0].alpha_rho"), static_cast<GLint>(offsetof(MaterialGpu, alpha_rho)));
+  EXPECT_EQ(uniform_offset(program, "materials[0].glints"), static_cast<GLint>(offsetof(MaterialGpu, glints)));
+  EXPECT_EQ(uniform_offset(program, "materials[0].emission"), static_cast<GLint>(offsetof(MaterialGpu, emission)));
+  EXPECT_EQ(uniform_offset(program, "materials[0].base_color"), static_cast<GLint>(offsetof(MaterialGpu, base_color)));
+  EXPECT_EQ(uniform_offset(program, "materials[0].metal_rough"), static_cast<GLint>(offsetof(MaterialGpu, metal_rough)));
+  EXPECT_EQ(uniform_offset(program, "materials[0].dielectric_f0"),
+            static_cast<GLint>(offsetof(MaterialGpu, dielectric_f0)));
+  EXPECT_EQ(uniform_offset(program, "materials[1].f0_ndf"), static_cast<GLint>(sizeof(MaterialGpu)));
+
+  EXPECT_EQ(sampler_unit(program, "uNormalMapProbe"), kNormalMapUnit);
+  EXPECT_EQ(sampler_unit(program, "uSlopeMoments"), kSlopeMomentsUnit);
+  EXPECT_EQ(sampler_unit(program, "uSlopeCrossMoment"), kSlopeCrossMomentUnit);
+  EXPECT_EQ(sampler_unit(program, "uGlintDictionary"), find_table("glint-dictionary").unit);
+  EXPECT_EQ(sampler_unit(program, "uBaseColor"), kBaseColorUnit);
+  EXPECT_EQ(sampler_unit(program, "uMetallicRoughness"), kMetallicRoughnessUnit);
+  EXPECT_EQ(sampler_unit(program, "uEmissive"), kEmissiveUnit);
+}

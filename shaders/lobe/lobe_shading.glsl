@@ -4,6 +4,7 @@
 #include "core/brdf.glsl"
 #include "lobe/delta_lights.glsl"
 #include "lights/lights.glsl"
+#include "lobe/light_image.glsl"
 #include "lobe/lobe.glsl"
 #include "ltc/ltc_shading.glsl"
 #include "core/surface.glsl"

@@ -1,4 +1,6 @@
-// The TOML scene format. Every key is documented in docs/scene-format.md; keep the two in step.
+// The TOML scene format: the file's tables (film, camera and path, shapes, lights); materials,
+// normal maps and glTF shapes are read by their own parsers (materials/, normal_maps/, gltf/).
+// Every key is documented in docs/scene-format.md; keep the two in step.
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -7,11 +9,10 @@
 #include <sstream>
 
 #include "core/error.hpp"
-#include "scene/gltf/gltf_import.hpp"
-#include "scene/gltf/gltf_showcase.hpp"
+#include "scene/gltf/gltf_shape.hpp"
 #include "scene/lights/light_kind.hpp"
 #include "scene/mesh_io.hpp"
-#include "scene/materials/normal_glints.hpp"
+#include "scene/materials/material_parser.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/toml_reader.hpp"
 
@@ -102,151 +103,6 @@ void parse_camera(TomlReader r, Camera& cam, CameraPath& path, const std::vector
   r.finish();
 }
 
-std::shared_ptr<const NormalMap> parse_normal_map(TomlReader r, const std::filesystem::path& base_dir) {
-  if (r.has("file")) {
-    const auto file = r.require_string("file");
-    r.finish();
-    try {
-      return std::make_shared<NormalMap>(load_normal_map(base_dir / file));
-    } catch (const InputError& e) {
-      r.fail("file", e.what());
-    }
-  }
-  // `noise` is another name for `bumps` (isotropic random-phase noise): the same map.
-  const auto generator = r.require_string("generator", {"bumps", "noise", "brushed", "scratches", "flakes"});
-  const int resolution = r.get_int("resolution", 512, 4, 8192);
-  const auto seed = static_cast<std::uint32_t>(r.get_int("seed", 1, 0, 1 << 30));
-  if (generator == "bumps" || generator == "noise") {
-    const auto alpha = static_cast<float>(r.get_number("alpha", 0.3, 0.0, 2.0));
-    const int waves = r.get_int("waves", 128, 1, 4096);
-    const int max_frequency = r.get_int("max_frequency", 24, 1, resolution / 2);
-    const auto anisotropy = static_cast<float>(r.get_number("anisotropy", 1.0, 1.0, 64.0));
-    const auto angle = static_cast<float>(r.get_number("angle", 0.0, -360.0, 360.0));
-    r.finish();
-    return std::make_shared<NormalMap>(
-        generate_bumps(resolution, alpha, waves, max_frequency, seed, anisotropy, angle));
-  }
-  if (generator == "brushed") {
-    const auto alpha = static_cast<float>(r.get_number("alpha", 0.2, 0.0, 2.0));
-    const auto along_alpha = static_cast<float>(r.get_number("along_alpha", 0.01, 0.0, 2.0));
-    const auto angle = static_cast<float>(r.get_number("angle", 0.0, -360.0, 360.0));
-    const int waves = r.get_int("waves", 512, 1, 4096);
-    const int max_frequency = r.get_int("max_frequency", std::max(1, resolution / 4), 1, resolution / 2);
-    r.finish();
-    return std::make_shared<NormalMap>(
-        generate_brushed(resolution, alpha, along_alpha, angle, waves, max_frequency, seed));
-  }
-  if (generator == "scratches") {
-    ScratchParams p;
-    p.resolution = resolution;
-    p.seed = seed;
-    p.count = r.get_int("count", p.count, 0, 10000);
-    p.length = static_cast<float>(r.get_number("length", p.length, 0.001, 1.0));
-    p.width = static_cast<float>(r.get_number("width", p.width, 0.3, 16.0));
-    p.slope = static_cast<float>(r.get_number("slope", p.slope, 0.0, 5.0));
-    p.angle = static_cast<float>(r.get_number("angle", p.angle, -360.0, 360.0));
-    p.angle_spread = static_cast<float>(r.get_number("angle_spread", p.angle_spread, 0.0, 180.0));
-    p.base_alpha = static_cast<float>(r.get_number("base_alpha", p.base_alpha, 0.0, 2.0));
-    r.finish();
-    return std::make_shared<NormalMap>(generate_scratches(p));
-  }
-  const int cells = r.get_int("cells", 32, 1, resolution);
-  const auto alpha = static_cast<float>(r.get_number("alpha", 0.2, 0.0, 2.0));
-  const auto jitter = static_cast<float>(r.get_number("jitter", 1.0, 0.0, 1.0));
-  const auto flat_fraction = static_cast<float>(r.get_number("flat_fraction", 0.0, 0.0, 1.0));
-  r.finish();
-  return std::make_shared<NormalMap>(generate_flakes(resolution, cells, alpha, seed, jitter, flat_fraction));
-}
-
-// The keys of a glinty material (docs/scene-format.md): a Beckmann microsurface given by its
-// slope deviations sigma (alpha = sqrt(2) sigma) and correlation rho, made of discrete microfacets.
-void parse_glints(TomlReader& r, Material& m) {
-  m.ndf = Ndf::Beckmann;
-  m.alpha = std::sqrt(2.0f) * r.get_vec2("sigma", glm::vec2(0.1f), 0.005, 0.7);
-  m.rho = static_cast<float>(r.get_number("rho", 0.0, -0.99, 0.99));
-  GlintParams g;
-  g.log_density = static_cast<float>(r.get_number("log_density", g.log_density, 0.0, 60.0));
-  g.relative_area = static_cast<float>(r.get_number("relative_area", g.relative_area, 0.0, 1.0));
-  g.max_anisotropy = static_cast<float>(r.get_number("max_anisotropy", g.max_anisotropy, 1.0, 64.0));
-  m.glints = g;
-}
-
-// The keys of a binomial-glints material (docs/scene-format.md; Deliot & Belcour 2023): discrete
-// microfacets whose expected NDF is GGX of roughness alpha.
-void parse_binomial_glints(TomlReader& r, Material& m) {
-  if (r.has("ndf")) r.fail("ndf", "is not a key of a binomial-glints material; its NDF is GGX (of roughness alpha)");
-  m.ndf = Ndf::GGX;
-  m.alpha = r.get_vec2("alpha", glm::vec2(0.2f), 0.01, 1.0);
-  BinomialGlintParams g;
-  g.log_density = static_cast<float>(r.get_number("log_density", g.log_density, 0.0, 50.0));
-  g.microfacet_roughness =
-      static_cast<float>(r.get_number("microfacet_roughness", g.microfacet_roughness, 1e-4, 1.0));
-  g.density_randomization =
-      static_cast<float>(r.get_number("density_randomization", g.density_randomization, 0.0, 10.0));
-  g.slope_grid_scale = static_cast<float>(r.get_number("slope_grid_scale", g.slope_grid_scale, 0.1, 1000.0));
-  m.binomial_glints = g;
-}
-
-// The keys of a normal-map-glints material (docs/scene-format.md; Yan et al. 2016): the normal map
-// is the microsurface, each point's projected normal Gaussian of deviation intrinsic_roughness
-// about the map's. Other methods shade Beckmann of alpha = sqrt(2) sigma_r over the normal map.
-// The masking alpha needs the map: parse_material sets it once the map is read.
-void parse_normal_glints(TomlReader& r, Material& m) {
-  for (const char* key : {"alpha", "ndf", "sigma"})
-    if (r.has(key))
-      r.fail(key, "is not a key of a normal-map-glints material; its roughness is intrinsic_roughness "
-                  "(Beckmann, alpha = sqrt(2) intrinsic_roughness) about the normal map's normals");
-  if (!r.has("normal_map"))
-    r.fail("normal_map", "is required by normal-map-glints material '" + m.name +
-                             "' (the map is its microsurface); allowed: a table { file = ... } or { generator = ... }");
-  NormalGlintParams g;
-  g.intrinsic_roughness =
-      static_cast<float>(r.get_number("intrinsic_roughness", g.intrinsic_roughness, 0.001, 0.3));
-  m.ndf = Ndf::Beckmann;
-  m.alpha = glm::vec2(std::sqrt(2.0f) * g.intrinsic_roughness);
-  m.normal_glints = g;
-}
-
-Material parse_material(TomlReader r, const std::filesystem::path& base_dir) {
-  Material m;
-  m.name = r.require_string("name");
-  const std::string type =
-      r.get_string("type", "microfacet", {"microfacet", "glinty", "binomial-glints", "normal-map-glints"});
-  if (type == "glinty") {
-    for (const char* key : {"alpha", "ndf"})
-      if (r.has(key)) r.fail(key, "is not a key of a glinty material; it has sigma (alpha = sqrt(2) sigma) and a Beckmann NDF");
-    parse_glints(r, m);
-  } else if (type == "binomial-glints") {
-    parse_binomial_glints(r, m);
-  } else if (type == "normal-map-glints") {
-    parse_normal_glints(r, m);
-  } else {
-    m.ndf = r.get_string("ndf", "ggx", {"ggx", "beckmann"}) == "ggx" ? Ndf::GGX : Ndf::Beckmann;
-    m.alpha = r.get_vec2("alpha", m.alpha, 0.0, 1.0);
-  }
-  const bool has_f0 = r.has("f0");
-  const bool has_metal = r.has("base_color") || r.has("metallic");
-  if (has_f0 && has_metal) r.fail("f0", "cannot be combined with base_color/metallic; give one or the other");
-  if (has_metal) {
-    const glm::vec3 base = r.get_colour("base_color", glm::vec3(0.8f), 0.0, 1.0);
-    const auto metallic = static_cast<float>(r.get_number("metallic", 0.0, 0.0, 1.0));
-    m.f0 = glm::mix(glm::vec3(0.04f), base, metallic);
-    m.diffuse = base * (1.0f - metallic);
-    if (r.has("diffuse")) r.fail("diffuse", "cannot be combined with base_color/metallic (they set it)");
-  } else {
-    m.f0 = r.get_colour("f0", m.f0, 0.0, 1.0);
-    m.diffuse = r.get_colour("diffuse", m.diffuse, 0.0, 1.0);
-  }
-  r.allow({"base_color", "metallic", "diffuse", "f0"});  // read in one branch or the other
-  if (const toml::table* nm = r.get_table("normal_map"))
-    m.normal_map = parse_normal_map(TomlReader(*nm, r.file(), "[[material]] '" + m.name + "' normal_map"), base_dir);
-  m.normal_map_tiling = static_cast<float>(r.get_number("normal_map_tiling", 1.0, 1e-3, 1e5));
-  if (m.normal_glints)
-    m.normal_glints->masking_alpha = normal_glint_masking_alpha(*m.normal_map, m.normal_glints->intrinsic_roughness);
-  r.finish();
-  return m;
-}
-
 glm::mat4 parse_transform(TomlReader& r) {
   const glm::vec3 t = r.get_vec3("translate", glm::vec3(0.0f));
   const glm::vec3 rot = r.get_vec3("rotate", glm::vec3(0.0f));
@@ -258,113 +114,12 @@ glm::mat4 parse_transform(TomlReader& r) {
   return glm::scale(m, s);
 }
 
-// The index of the [[material]] that `value` (of `key`) names.
-int material_named(const TomlReader& r, const std::string& key, const std::string& value,
-                   const std::map<std::string, int>& materials) {
-  auto it = materials.find(value);
-  if (it == materials.end()) {
-    std::string known;
-    for (const auto& [k, v] : materials) known += (known.empty() ? "" : ", ") + k;
-    r.fail(key, "value \"" + value + "\" names no [[material]]; defined: " + (known.empty() ? "none" : known));
-  }
-  return it->second;
-}
-
-/// A glTF file of the scene: a path relative to the scene file, or one of glintlab's own models
-/// ("builtin:showcase.glb", made by the glTF writer in memory: no file, no download).
-GltfAsset import_gltf_file(const std::string& file, const std::filesystem::path& base_dir) {
-  if (file.rfind("builtin:", 0) != 0) return import_gltf(base_dir / file);
-  if (file != "builtin:showcase.glb")
-    throw InputError("value \"" + file + "\" names no built-in model; allowed: builtin:showcase.glb");
-  return import_glb(gltf::encode_glb(gltf::make_showcase_document()), file);
-}
-
-bool is_gltf(const std::string& file) {
-  const auto ext = std::filesystem::path(file).extension().string();
-  return ext == ".gltf" || ext == ".glb";
-}
-
-/// A glTF file's place in the scene: its primitives as shapes with their own materials (or the
-/// scene's, by `material` for all or `materials` by mesh name / "mesh#primitive"), its lights and
-/// its cameras, all moved by the shape's transform.
-void add_gltf(TomlReader& r, const std::map<std::string, int>& materials, const std::filesystem::path& base_dir,
-              Scene& scene, std::vector<GltfCamera>& cameras) {
-  const glm::mat4 transform = parse_transform(r);
-  const auto file = r.require_string("file");
-  GltfAsset asset;
-  try {
-    asset = import_gltf_file(file, base_dir);
-  } catch (const InputError& e) {
-    r.fail("file", e.what());
-  }
-  std::optional<int> for_all;
-  if (r.has("material")) for_all = material_named(r, "material", r.require_string("material"), materials);
-  // Overrides by name: "mesh" (all its primitives) or "mesh#i" (one).
-  std::map<std::string, int> overrides;
-  if (const toml::table* t = r.get_table("materials")) {
-    for (auto&& [key, value] : *t) {
-      const auto name = value.value<std::string>();
-      if (!name) r.fail("materials", "entry \"" + std::string(key.str()) + "\" is not a string naming a [[material]]");
-      const std::string k(key.str());
-      const bool known = std::any_of(asset.primitives.begin(), asset.primitives.end(), [&](const GltfPrimitive& p) {
-        return p.mesh_name == k || p.mesh_name + "#" + std::to_string(p.primitive) == k;
-      });
-      if (!known) {
-        std::string names;
-        for (const auto& p : asset.primitives)
-          if (names.find(p.mesh_name) == std::string::npos) names += (names.empty() ? "" : ", ") + p.mesh_name;
-        r.fail("materials", "entry \"" + k + "\" names no mesh of " + file + "; its meshes: " + names +
-                                " (or MESH#N for one primitive)");
-      }
-      overrides[k] = material_named(r, "materials", *name, materials);
-    }
-  }
-  const bool with_lights = r.get_bool("lights", true);
-  const bool with_cameras = r.get_bool("cameras", true);
-  r.finish();
-
-  std::map<int, int> file_material;  // the file's material -> the scene's, added when first used
-  for (const GltfPrimitive& p : asset.primitives) {
-    Shape shape;
-    shape.type = "mesh";
-    shape.mesh = p.mesh;
-    shape.transform = transform * p.transform;
-    if (auto it = overrides.find(p.mesh_name + "#" + std::to_string(p.primitive)); it != overrides.end())
-      shape.material = it->second;
-    else if (auto it2 = overrides.find(p.mesh_name); it2 != overrides.end())
-      shape.material = it2->second;
-    else if (for_all)
-      shape.material = *for_all;
-    else {
-      auto [it3, added] = file_material.try_emplace(p.material, static_cast<int>(scene.materials.size()));
-      if (added) scene.materials.push_back(asset.materials[static_cast<std::size_t>(p.material)]);
-      shape.material = it3->second;
-    }
-    scene.shapes.push_back(std::move(shape));
-  }
-  const glm::mat3 linear(transform);
-  if (with_lights)
-    for (Light l : asset.lights) {
-      l.position = glm::vec3(transform * glm::vec4(l.position, 1.0f));
-      l.direction = glm::normalize(linear * l.direction);
-      scene.lights.push_back(l);
-    }
-  if (with_cameras)
-    for (GltfCamera c : asset.cameras) {
-      c.camera.position = glm::vec3(transform * glm::vec4(c.camera.position, 1.0f));
-      c.camera.target = glm::vec3(transform * glm::vec4(c.camera.target, 1.0f));
-      c.camera.up = glm::normalize(linear * c.camera.up);
-      cameras.push_back(c);
-    }
-  for (auto& w : asset.warnings) scene.warnings.push_back(std::move(w));
-}
-
 void parse_shape(TomlReader r, const std::map<std::string, int>& materials, const std::filesystem::path& base_dir,
                  Scene& scene, std::vector<GltfCamera>& cameras) {
   Shape shape;
   shape.type = r.require_string("type", {"sphere", "plane", "disk", "torus", "tube", "cylinder", "mesh"});
   if (shape.type == "mesh" && r.has("file") && is_gltf(r.require_string("file"))) {
-    add_gltf(r, materials, base_dir, scene, cameras);
+    add_gltf(r, parse_transform(r), materials, base_dir, scene, cameras);
     return;
   }
   shape.material = material_named(r, "material", r.require_string("material"), materials);

@@ -15,7 +15,7 @@ using namespace glintlab::test;
 
 namespace {
 
-const char* kIncludes = "#include \"lobe/lobe.glsl\"\n";
+const char* kIncludes = "#include \"lobe/light_image.glsl\"\n";
 
 /// Adaptive Simpson quadrature of f over [a, b] to absolute tolerance eps.
 double simpson(const std::function<double(double)>& f, double a, double b, double eps) {

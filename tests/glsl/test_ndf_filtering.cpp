@@ -18,6 +18,7 @@ namespace {
 const char* kIncludes = R"(
 #include "lobe/footprint_filtering.glsl"
 #include "lobe/roughness_filtering.glsl"
+#include "lobe/light_image.glsl"
 )";
 
 /// Adaptive Simpson quadrature of f over [a, b] to absolute tolerance eps.

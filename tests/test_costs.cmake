@@ -8,7 +8,7 @@ set(glintlab_test_costs
   "^Images/EveryMethodOnBuiltinScene\\.IsFinite/(gltf_showcase|glint_area_lights|glint_tubes|normal_glints_noise)( |$)" 60
   "^GltfMaterials\\.TexturedMaterialEqualsTheMaterialOfItsTexels" 20
   "^Images/EveryMethodOnBuiltinScene\\.IsFinite/glint_sphere( |$)" 45
-  "^Shaders\\.EveryMethodAndPassCompiles" 35
+  "^Shaders[./]EveryMethodAndPassCompiles" 35
   "^Chermain\\.GeometricGlintAntiAliasing" 40
   "^Images/EveryMethodOnBuiltinScene\\." 5
   "^SpotLight\\.EveryMethodShades" 25

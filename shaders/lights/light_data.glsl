@@ -1,4 +1,5 @@
-// One light as the shaders receive it: LightGpu of src/core/gpu_contract.hpp, in a std140 uniform
+// One light as the shaders receive it: LightData, generated from LightGpu's field list in
+// src/core/gpu_contract.hpp, in a std140 uniform
 // buffer. What each field holds is the kind's: src/scene/lights/<kind>.cpp packs it and
 // shaders/lights/<kind>.glsl reads it; colour_type.a is always the kind's code (LIGHT_<KIND>).
 // A uniform buffer, not a storage buffer: its loads are scalar, and drivers that mask storage
@@ -6,14 +7,8 @@
 // anything computed from a light.
 #include "core/constants.glsl"
 #include "generated/gpu_contract.glsl"
+#include "generated/gpu_structs.glsl"
 
-struct LightData {
-  vec4 colour_type;
-  vec4 position_radius;
-  vec4 direction_cos;
-  vec4 axisU;
-  vec4 axisV;
-};
 layout(std140, binding = LIGHT_BLOCK_BINDING) uniform LightBlock { LightData lights[MAX_LIGHTS]; };
 
 const float FAR_AWAY = 1e30;

@@ -12,7 +12,7 @@ vec3 spotLightCentreDirection(LightData L, vec3 p) { return pointLightCentreDire
 // between the axis and -l, clamp((cd - cos outer) / (cos inner - cos outer), 0, 1)^2, the
 // spec's cd * scale + offset with the subtraction first (exactly 0 outside the outer cone).
 float spotLightFalloff(LightData L, vec3 l) {
-  float t = clamp((dot(L.direction_cos.xyz, -l) - L.direction_cos.w) * L.axisU.x, 0.0, 1.0);
+  float t = clamp((dot(L.direction_cos.xyz, -l) - L.direction_cos.w) * L.axis_u.x, 0.0, 1.0);
   return t * t;
 }
 

@@ -6,7 +6,7 @@
 
 // 1 - cos theta from the CPU: 1 - direction_cos.w in float keeps only ~160 steps at 0.25 degrees.
 // Hand-built records (tests) must set it too.
-float sunOneMinusCos(LightData L) { return L.axisU.w; }
+float sunOneMinusCos(LightData L) { return L.axis_u.w; }
 
 vec3 sunLightCentreDirection(LightData L, vec3 p) { return -L.direction_cos.xyz; }
 

@@ -5,18 +5,18 @@
 // Descriptor: src/shading/methods/chermain2020.cpp; docs/methods.md#chermain2020.
 #include "glints/chermain/light_kernel.glsl"
 
-#if MATERIAL_GLINTS
+#if MATERIAL_KIND == MATERIAL_KIND_GLINTY
 GlintSurface gGlint;
 #endif
 
 void prepareSurface(inout Surface s) {
-#if MATERIAL_GLINTS
+#if MATERIAL_KIND == MATERIAL_KIND_GLINTY
   gGlint = prepareGlints(s, materials[uMaterial], param_lean > 0.5, false);  // 2020: no correlation
 #endif
 }
 
 Radiance shadeLight(Surface s, LightData L) {
-#if MATERIAL_GLINTS
+#if MATERIAL_KIND == MATERIAL_KIND_GLINTY
   vec3 l, irradiance;
   centreLightIncidence(L, s.position, l, irradiance);
   vec2 dx = vec2(0.0), dy = vec2(0.0);
@@ -26,6 +26,6 @@ Radiance shadeLight(Surface s, LightData L) {
   if (lightKernel) addLightRegionToKernel(s, L, l, dx, dy);
   return shadeGlints(s, gGlint, l, irradiance, dx, dy, lightKernel);
 #else
-  return shadeLobe(s, L, materialLobe(s));
+  return shadeLobe(s, L, materialSmoothLobe(s));
 #endif
 }

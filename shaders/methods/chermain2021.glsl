@@ -6,7 +6,7 @@
 // Descriptor: src/shading/methods/chermain2021.cpp; docs/methods.md#chermain2021.
 #include "glints/chermain/light_kernel.glsl"
 
-#if MATERIAL_GLINTS
+#if MATERIAL_KIND == MATERIAL_KIND_GLINTY
 GlintSurface gGlint;
 #endif
 
@@ -21,13 +21,13 @@ void halfVectorDerivatives(Surface s, vec3 l, bool ofSlopes, out vec2 dx, out ve
 }
 
 void prepareSurface(inout Surface s) {
-#if MATERIAL_GLINTS
+#if MATERIAL_KIND == MATERIAL_KIND_GLINTY
   gGlint = prepareGlints(s, materials[uMaterial], param_lean > 0.5, true);
 #endif
 }
 
 Radiance shadeLight(Surface s, LightData L) {
-#if MATERIAL_GLINTS
+#if MATERIAL_KIND == MATERIAL_KIND_GLINTY
   vec3 l, irradiance;
   centreLightIncidence(L, s.position, l, irradiance);
   vec2 dx, dy;
@@ -39,6 +39,6 @@ Radiance shadeLight(Surface s, LightData L) {
   if (param_light_extent > 0.5 && lightHasExtent(L)) addLightRegionToKernel(s, L, l, dx, dy);
   return shadeGlints(s, gGlint, l, irradiance, dx, dy, true);
 #else
-  return shadeLobe(s, L, materialLobe(s));
+  return shadeLobe(s, L, materialSmoothLobe(s));
 #endif
 }

@@ -10,7 +10,7 @@
 #include "lobe/lobe.glsl"
 #include "lobe/lobe_shading.glsl"
 
-#if MATERIAL_NORMAL_GLINTS
+#if MATERIAL_KIND == MATERIAL_KIND_NORMAL_MAP_GLINTS
 #include "glints/normal-map/position_normal.glsl"
 #include "glints/normal-map/prefiltered_ndf.glsl"
 
@@ -35,29 +35,29 @@ float normalGlintsBoxMean(vec2 lo, vec2 hi) {
 #endif
 
 void prepareSurface(inout Surface s) {
-#if MATERIAL_NORMAL_GLINTS
+#if MATERIAL_KIND == MATERIAL_KIND_NORMAL_MAP_GLINTS
   gDiffuseNormal = normalGlintsMacroFrame(s);
   ivec2 size = textureSize(uNormalMap, 0);
   mat2 sigmaP = pixelFootprintCovariance(s.dUVdx, s.dUVdy, size, param_footprint_sigma);
   // The pyramid holds isotropic footprints: the one of the same area, sigma^2 = sqrt(det Sigma_p).
   gFootprintSigma = sqrt(sqrt(max(determinant(sigmaP), 0.0)));
   gFootprintCentre = fract(s.uv) * vec2(size);
-  vec4 glints = materials[uMaterial].glints;  // x: sigma_r, y: masking alpha
-  gMaskingAlpha = glints.y;
+  MaterialData m = materials[uMaterial];
+  gMaskingAlpha = normalMapGlintsMaskingAlpha(m);
   // Below sigma_0 the elements within 3 sigma_0 (plus the element's own extent) are all a footprint
   // can reach: a bounded loop, (6 sigma_0 + 3)^2 elements at most, within llvmpipe's loop budget.
   float sigma0 = pndfFirstSigma(uMaterial);
   gBelowPyramid = param_small_footprints < 0.5 && gFootprintSigma < sigma0;
-  gElements = positionNormalFootprint(gFootprintCentre, sigmaP, size, 1, glints.x,
+  gElements = positionNormalFootprint(gFootprintCentre, sigmaP, size, 1, normalMapGlintsIntrinsicRoughness(m),
                                        positionNormalRadiusBudget(3.0 * sigma0 + 1.5, 1));
   if (!gBelowPyramid) gElements.count = ivec2(0);
 #endif
 }
 
 Radiance shadeLight(Surface s, LightData L) {
-#if MATERIAL_NORMAL_GLINTS
+#if MATERIAL_KIND == MATERIAL_KIND_NORMAL_MAP_GLINTS
   return shadeNormalGlints(s, L, gMaskingAlpha, gDiffuseNormal);
 #else
-  return shadeLobe(s, L, materialLobe(s), float(AREA_LIGHTS_LTC));  // conventional's default
+  return shadeLobe(s, L, materialSmoothLobe(s), float(AREA_LIGHTS_LTC));  // conventional's default
 #endif
 }

@@ -10,6 +10,6 @@ Radiance shadeLight(Surface s, LightData L) {
   // Derivatives first, in uniform control flow: the slope-space half vector towards the light's
   // centre, differenced across the pixel quad.
   vec2 h = slopeHalfVector(s, lightCentreDirection(L, s.position));
-  Lobe lobe = kaplanyanBeckmannLobe(materialLobe(s), dFdxFine(h), dFdyFine(h), param_fp_max);
+  Lobe lobe = kaplanyanBeckmannLobe(materialSmoothLobe(s), dFdxFine(h), dFdyFine(h), param_fp_max);
   return shadeLobe(s, L, lobe, param_area_lights);
 }

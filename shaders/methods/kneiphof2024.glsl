@@ -7,7 +7,7 @@
 #include "lobe/lobe.glsl"
 #include "lobe/lobe_shading.glsl"
 
-#if MATERIAL_BINOMIAL_GLINTS
+#if MATERIAL_KIND == MATERIAL_KIND_BINOMIAL_GLINTS
 const int LIGHT_CELLS = 1 << (2 * int(param_subdivision + 0.5));  // 1 (none), 4 or 16
 #include "glints/binomial/area_shading.glsl"
 #include "glints/binomial/subdivision.glsl"
@@ -16,14 +16,14 @@ GlintLtc gLtc;  // the LTC terms of the pixel's lobe, shared by every light
 #endif
 
 void prepareSurface(inout Surface s) {
-#if MATERIAL_BINOMIAL_GLINTS
+#if MATERIAL_KIND == MATERIAL_KIND_BINOMIAL_GLINTS
   gBinomial = prepareBinomialGlints(s, materials[uMaterial], param_screen_space_scale);
   gLtc = glintLtc(s);
 #endif
 }
 
 Radiance shadeLight(Surface s, LightData L) {
-#if MATERIAL_BINOMIAL_GLINTS
+#if MATERIAL_KIND == MATERIAL_KIND_BINOMIAL_GLINTS
   const int model = int(param_remaining_count + 0.5);
   if (!lightHasExtent(L)) return shadeBinomialDeltaGlints(s, gBinomial, L, param_point_light_solid_angle, model);
   Radiance result = Radiance(vec3(0.0), vec3(0.0));
@@ -41,6 +41,6 @@ Radiance shadeLight(Surface s, LightData L) {
   }
   return result;
 #else
-  return shadeLobe(s, L, materialLobe(s), float(AREA_LIGHTS_LTC));  // conventional's default
+  return shadeLobe(s, L, materialSmoothLobe(s), float(AREA_LIGHTS_LTC));  // conventional's default
 #endif
 }

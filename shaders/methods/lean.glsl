@@ -7,7 +7,7 @@
 Lobe gLeanLobe;  // this pixel's lobe, set by prepareSurface
 
 void prepareSurface(inout Surface s) {
-  gLeanLobe = materialLobe(s);
+  gLeanLobe = materialSmoothLobe(s);
 #if MATERIAL_NORMAL_MAP
   gLeanLobe.A += 2.0 * leanShadingFrame(s);
 #endif

@@ -18,7 +18,7 @@ void prepareSurface(inout Surface s) {
   else gCorners = derivativeCornerRays(s, param_corner_lod);
   if (param_origin > 0.5)
     for (int i = 0; i < 4; ++i) gCorners.origin[i] = s.position;
-  gLobe = materialLobe(s);
+  gLobe = materialSmoothLobe(s);
 #if MATERIAL_NORMAL_MAP
   // Normals that vary inside the footprint the corners read the map over are invisible to them,
   // but not to the footprint's slope moments: LEAN's frame and covariance, as `lean`.

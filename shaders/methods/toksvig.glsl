@@ -8,4 +8,4 @@ void prepareSurface(inout Surface s) {
   s.alpha = toksvigAlpha(s.alpha, length(s.mappedNormal));
 }
 
-Radiance shadeLight(Surface s, LightData L) { return shadeLobe(s, L, materialLobe(s), param_area_lights); }
+Radiance shadeLight(Surface s, LightData L) { return shadeLobe(s, L, materialSmoothLobe(s), param_area_lights); }

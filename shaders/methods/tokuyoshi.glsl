@@ -8,6 +8,6 @@ void prepareSurface(inout Surface s) {}
 Radiance shadeLight(Surface s, LightData L) {
   // Derivatives first, in uniform control flow: the projected half vector towards the light's centre.
   vec2 h = projectedHalfVector(s, lightCentreDirection(L, s.position));
-  Lobe lobe = tokuyoshiLobe(materialLobe(s), dFdxFine(h), dFdyFine(h), param_sigma2, param_kappa);
+  Lobe lobe = tokuyoshiLobe(materialSmoothLobe(s), dFdxFine(h), dFdyFine(h), param_sigma2, param_kappa);
   return shadeLobe(s, L, lobe, param_area_lights);
 }

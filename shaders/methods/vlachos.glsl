@@ -5,4 +5,4 @@
 
 void prepareSurface(inout Surface s) { s.alpha = vlachosAlpha(s.alpha, s.dNdx, s.dNdy, param_scale, param_exponent); }
 
-Radiance shadeLight(Surface s, LightData L) { return shadeLobe(s, L, materialLobe(s), param_area_lights); }
+Radiance shadeLight(Surface s, LightData L) { return shadeLobe(s, L, materialSmoothLobe(s), param_area_lights); }

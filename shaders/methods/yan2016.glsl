@@ -8,7 +8,7 @@
 #include "lobe/lobe_shading.glsl"
 
 
-#if MATERIAL_NORMAL_GLINTS
+#if MATERIAL_KIND == MATERIAL_KIND_NORMAL_MAP_GLINTS
 const int ELEMENTS_PER_TEXEL = int(param_elements_per_texel + 0.5) + 1;  // the choices "1", "2"
 #include "glints/normal-map/position_normal.glsl"
 
@@ -25,21 +25,22 @@ float normalGlintsBoxMean(vec2 lo, vec2 hi) {
 #endif
 
 void prepareSurface(inout Surface s) {
-#if MATERIAL_NORMAL_GLINTS
+#if MATERIAL_KIND == MATERIAL_KIND_NORMAL_MAP_GLINTS
   gDiffuseNormal = normalGlintsMacroFrame(s);
   ivec2 size = textureSize(uNormalMap, 0);
   mat2 sigmaP = pixelFootprintCovariance(s.dUVdx, s.dUVdy, size, param_footprint_sigma);
-  vec4 glints = materials[uMaterial].glints;  // x: sigma_r, y: masking alpha
-  gFootprint = positionNormalFootprint(fract(s.uv) * vec2(size), sigmaP, size, ELEMENTS_PER_TEXEL, glints.x,
+  MaterialData m = materials[uMaterial];
+  gFootprint = positionNormalFootprint(fract(s.uv) * vec2(size), sigmaP, size, ELEMENTS_PER_TEXEL,
+                                       normalMapGlintsIntrinsicRoughness(m),
                                        positionNormalRadiusBudget(param_max_radius, ELEMENTS_PER_TEXEL));
-  gMaskingAlpha = glints.y;
+  gMaskingAlpha = normalMapGlintsMaskingAlpha(m);
 #endif
 }
 
 Radiance shadeLight(Surface s, LightData L) {
-#if MATERIAL_NORMAL_GLINTS
+#if MATERIAL_KIND == MATERIAL_KIND_NORMAL_MAP_GLINTS
   return shadeNormalGlints(s, L, gMaskingAlpha, gDiffuseNormal);
 #else
-  return shadeLobe(s, L, materialLobe(s), float(AREA_LIGHTS_LTC));  // conventional's default
+  return shadeLobe(s, L, materialSmoothLobe(s), float(AREA_LIGHTS_LTC));  // conventional's default
 #endif
 }

@@ -14,7 +14,7 @@ layout(location = 0) out vec4 outTotal;
 layout(location = 1) out vec4 outSpecular;
 
 void main() {
-  vec3 view = uCameraPos.w > 0.5 ? uCameraPos.xyz - vPosition : -uCameraForward.xyz;
+  vec3 view = frame.camera_pos.w > 0.5 ? frame.camera_pos.xyz - vPosition : -frame.camera_forward.xyz;
   bool lit = uTwoSided || dot(vNormal, view) > 0.0;
   outTotal = vec4(lit ? uRadiance : vec3(0.0), 1.0);
   outSpecular = vec4(0.0, 0.0, 0.0, 1.0);

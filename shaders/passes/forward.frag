@@ -1,11 +1,13 @@
 // Forward shading: builds the surface record once per fragment (derivatives in uniform control
-// flow), then sums the method's (or the reference's) radiance over every light. The module is
-// chosen by the renderer through the $METHOD include; this pass never names a method.
-// Variant defines (src/render/renderer.cpp): LIGHT_RANGES (lights/light_loop.glsl),
+// flow), then sums the method's (or the reference's) radiance over every light. The modules are
+// chosen by the renderer through the $MATERIAL include (the material's kind behind the material
+// interface, generated/materials/<kind>.glsl) and the $METHOD include; this pass never names a
+// method or a kind. Variant defines (src/render/renderer.cpp, forward_variant): LIGHT_RANGES
+// (lights/light_loop.glsl), MATERIAL_KIND (the kind's code: compare with MATERIAL_KIND_<ID>),
 // MATERIAL_NORMAL_MAP (1 when the material has a normal map), MATERIAL_TEXTURES (1 when its
-// parameters vary per texel), MATERIAL_GLINTS, MATERIAL_BINOMIAL_GLINTS and MATERIAL_NORMAL_GLINTS
-// (the glinty material kinds, which only their methods and the reference tell apart) and REFERENCE_PASS (1 for ground truth, which evaluates the surface
-// itself at each sample: textures at their base level).
+// parameters vary per texel), REFERENCE_PASS (1 for ground truth, which evaluates the surface
+// itself at each sample: textures at their base level) and REFERENCE_BINOMIAL_REALISATION (1 for
+// the raster-realisation reference).
 #include "core/frame.glsl"
 #include "core/fragment_inputs.glsl"
 #include "lights/lights.glsl"
@@ -13,6 +15,7 @@
 #include "core/material_textures.glsl"
 #endif
 #include "core/surface.glsl"
+#include "$MATERIAL"
 #include "$METHOD"
 #include "lights/light_loop.glsl"
 

@@ -22,5 +22,5 @@ void main() {
   float mirrored = determinant(mat3(uModel)) < 0.0 ? -1.0 : 1.0;
   vTangent = vec4(mat3(uModel) * aTangent.xyz, aTangent.w * mirrored);
   vUV = aUV;
-  gl_Position = uViewProj * world;
+  gl_Position = frame.view_proj * world;
 }

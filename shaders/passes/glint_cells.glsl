@@ -8,7 +8,7 @@ const ivec2 kGlintCellsLightRanges[LIGHT_KIND_COUNT] = LIGHT_RANGES;
 vec3 gGlintCells = vec3(0.0);
 
 void prepareSurface(inout Surface s) {
-#if MATERIAL_GLINTS
+#if MATERIAL_KIND == MATERIAL_KIND_GLINTY
   GlintPatch fp = prepareGlints(s, materials[uMaterial], false, false).footprint;
   if (fp.level >= 0)
     gGlintCells = vec3(fp.level < GLINT_LEVELS ? glintCellCount(fp.fine) : 0,

@@ -133,8 +133,8 @@ LightData reflectionSpaceLight(Surface s, LightData L, LightPlane plane, vec2 un
   wide.colour_type = vec4(lightRadiance(L) * min(abs(determinant(D)) / max(sqrt(l1 * l2), 1e-30), 1.0), float(LIGHT_QUAD));
   wide.position_radius = vec4(s.position + plane.distance * plane.l, 0.0);
   wide.direction_cos = vec4(-plane.l, 0.0);
-  wide.axisU = vec4(k * sqrt(l1) * (v1.x * e1 + v1.y * e2), 0.0);
-  wide.axisV = vec4(k * sqrt(l2) * (v1.x * e2 - v1.y * e1), 0.0);
+  wide.axis_u = vec4(k * sqrt(l1) * (v1.x * e1 + v1.y * e2), 0.0);
+  wide.axis_v = vec4(k * sqrt(l2) * (v1.x * e2 - v1.y * e1), 0.0);
   return wide;
 }
 

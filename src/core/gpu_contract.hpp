@@ -46,55 +46,78 @@ inline constexpr int kFirstTableUnit = 6;
 inline constexpr int kNdfGgx = 0;
 inline constexpr int kNdfBeckmann = 1;
 
-/// One light: LightData in shaders/lights/light_data.glsl (std140: five vec4, no padding). What
-/// each field holds is the kind's (src/scene/lights/<kind>.cpp packs it, shaders/lights/<kind>.glsl
-/// reads it); colour_type.w is always the kind's code.
-struct LightGpu {
-  glm::vec4 colour_type;
-  glm::vec4 position_radius;
-  glm::vec4 direction_cos;
-  glm::vec4 axis_u;
-  glm::vec4 axis_v;
+/// The std140 records below are each declared once, as a list of fields (type, name, meaning):
+/// the C++ struct is made from the list here, and the GLSL struct of the same name and fields by
+/// src/render/shader_contract.cpp (generated/gpu_structs.glsl), so that neither side restates the
+/// other. Every field is a vec4, ivec4 or mat4: std140 then packs them as C++ does (no padding).
+struct Std140Field {
+  const char* glsl_type;
+  const char* name;
+  const char* meaning;
 };
+#define GLINTLAB_STD140_MEMBER(type, name, meaning) glm::type name;
+#define GLINTLAB_STD140_FIELD(type, name, meaning) Std140Field{#type, #name, meaning},
+
+/// One light (LightData in GLSL, in a uniform buffer: shaders/lights/light_data.glsl). What each
+/// field holds is the kind's (src/scene/lights/<kind>.cpp packs it, shaders/lights/<kind>.glsl
+/// reads it); colour_type.w is always the kind's code.
+#define GLINTLAB_LIGHT_FIELDS(X)                                                                     \
+  X(vec4, colour_type, "rgb: intensity, irradiance or radiance (by kind); a: the kind's code (LIGHT_<KIND>)") \
+  X(vec4, position_radius, "the kind's")                                                           \
+  X(vec4, direction_cos, "the kind's")                                                             \
+  X(vec4, axis_u, "the kind's")                                                                    \
+  X(vec4, axis_v, "the kind's")
+struct LightGpu {
+  GLINTLAB_LIGHT_FIELDS(GLINTLAB_STD140_MEMBER)
+};
+inline constexpr Std140Field kLightFields[] = {GLINTLAB_LIGHT_FIELDS(GLINTLAB_STD140_FIELD)};
 static_assert(sizeof(LightGpu) == 80);
-static_assert(offsetof(LightGpu, colour_type) == 0 && offsetof(LightGpu, position_radius) == 16 &&
-              offsetof(LightGpu, direction_cos) == 32 && offsetof(LightGpu, axis_u) == 48 &&
-              offsetof(LightGpu, axis_v) == 64);
 static_assert(kMaxLights * sizeof(LightGpu) <= 16384, "the light block must fit GL's minimum uniform block size");
 
-/// One material: MaterialData in shaders/core/material.glsl (std140).
+/// One material (MaterialData in GLSL: shaders/core/material.glsl). kind_params holds the
+/// material kind's own parameters in the order its descriptor declares them; GLSL reads them
+/// through accessors generated from that declaration (src/scene/materials/material_kind.hpp).
+#define GLINTLAB_MATERIAL_FIELDS(X)                                                                    \
+  X(vec4, f0_ndf, "rgb: Schlick F0; a: the NDF (NDF_GGX or NDF_BECKMANN)")                           \
+  X(vec4, diffuse_tiling, "rgb: Lambert albedo; a: normal-map repeats per uv unit")                  \
+  X(vec4, alpha_rho, "xy: alpha; z: slope correlation rho; w: anisotropy rotation (radians, tangent to bitangent)") \
+  X(vec4, kind_params, "the material kind's parameters, in its declaration's order")                \
+  X(vec4, emission, "rgb: emitted radiance")                                                        \
+  X(vec4, base_color, "textured materials (MATERIAL_TEXTURES): rgba factor of the base colour")      \
+  X(vec4, metal_rough, "textured materials: x: metallic; y: perceptual roughness; z: anisotropy strength") \
+  X(vec4, dielectric_f0, "textured materials: rgb: f0 of the non-metal part")
 struct MaterialGpu {
-  glm::vec4 f0_ndf;          ///< rgb: Schlick F0; a: kNdfGgx or kNdfBeckmann
-  glm::vec4 diffuse_tiling;  ///< rgb: Lambert albedo; a: normal-map repeats per uv unit
-  glm::vec4 alpha_rho;       ///< xy: alpha; z: slope correlation; w: anisotropy rotation (radians)
-  glm::vec4 glints;          ///< x: ln density; y: relative area; z: max anisotropy (MATERIAL_GLINTS);
-                             ///< binomial glints (MATERIAL_BINOMIAL_GLINTS): x: ln density; y: R;
-                             ///< z: density randomization; w: slope-grid scale;
-                             ///< normal-map glints (MATERIAL_NORMAL_GLINTS): x: sigma_r; y: masking alpha
-  glm::vec4 emission;        ///< rgb: emitted radiance
-  // Textured materials (a program variant, MATERIAL_TEXTURES): per-texel parameters' factors.
-  glm::vec4 base_color;      ///< rgba factor
-  glm::vec4 metal_rough;     ///< x: metallic; y: perceptual roughness; z: anisotropy strength
-  glm::vec4 dielectric_f0;   ///< rgb: f0 of the non-metal part
+  GLINTLAB_MATERIAL_FIELDS(GLINTLAB_STD140_MEMBER)
 };
+inline constexpr Std140Field kMaterialFields[] = {GLINTLAB_MATERIAL_FIELDS(GLINTLAB_STD140_FIELD)};
 static_assert(sizeof(MaterialGpu) == 128);
-static_assert(offsetof(MaterialGpu, f0_ndf) == 0 && offsetof(MaterialGpu, diffuse_tiling) == 16 &&
-              offsetof(MaterialGpu, alpha_rho) == 32 && offsetof(MaterialGpu, glints) == 48 &&
-              offsetof(MaterialGpu, emission) == 64 && offsetof(MaterialGpu, base_color) == 80 &&
-              offsetof(MaterialGpu, metal_rough) == 96 && offsetof(MaterialGpu, dielectric_f0) == 112);
 static_assert(kMaxMaterials * sizeof(MaterialGpu) <= 16384, "the material block must fit GL's minimum uniform block size");
 
-/// Per-frame data: FrameBlock in shaders/core/frame.glsl (std140).
+/// Per-frame data, the same for every draw (the block `frame` in GLSL: shaders/core/frame.glsl).
+#define GLINTLAB_FRAME_FIELDS(X)                                                             \
+  X(mat4, view_proj, "world to clip space")                                                \
+  X(vec4, camera_pos, "xyz: camera position (world); w: 1 perspective, 0 orthographic")    \
+  X(vec4, camera_forward, "xyz: the view direction (orthographic cameras)")                \
+  X(ivec4, target, "xy: render-target size (pixels); z: sub-pixels per axis k")            \
+  X(ivec4, tile, "xy: tile origin in sub-pixels of the whole film; z: light samples; w: seed")
 struct FrameUniforms {
-  glm::mat4 view_proj;
-  glm::vec4 camera_pos;      ///< w: 1 perspective, 0 orthographic
-  glm::vec4 camera_forward;
-  glm::ivec4 target;         ///< xy: render-target size; z: sub-pixels per axis
-  glm::ivec4 tile;           ///< xy: tile origin in sub-pixels; z: light samples; w: seed
+  GLINTLAB_FRAME_FIELDS(GLINTLAB_STD140_MEMBER)
 };
+inline constexpr Std140Field kFrameFields[] = {GLINTLAB_FRAME_FIELDS(GLINTLAB_STD140_FIELD)};
 static_assert(sizeof(FrameUniforms) == 128);
-static_assert(offsetof(FrameUniforms, view_proj) == 0 && offsetof(FrameUniforms, camera_pos) == 64 &&
-              offsetof(FrameUniforms, camera_forward) == 80 && offsetof(FrameUniforms, target) == 96 &&
-              offsetof(FrameUniforms, tile) == 112);
+
+/// Bytes of a std140 member of these types (all 16-byte aligned); the records' sizes are their sums.
+constexpr std::size_t std140_size(const char* type) {
+  return type[0] == 'm' ? 64 : 16;  // mat4 or a 4-vector
+}
+template <std::size_t N>
+constexpr std::size_t std140_record_size(const Std140Field (&fields)[N]) {
+  std::size_t size = 0;
+  for (const Std140Field& f : fields) size += std140_size(f.glsl_type);
+  return size;
+}
+static_assert(std140_record_size(kLightFields) == sizeof(LightGpu));
+static_assert(std140_record_size(kMaterialFields) == sizeof(MaterialGpu));
+static_assert(std140_record_size(kFrameFields) == sizeof(FrameUniforms));
 
 }  // namespace glintlab

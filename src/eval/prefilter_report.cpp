@@ -70,10 +70,10 @@ void run_prefilter_report(const Scene& scene, const PrefilterReportOptions& opti
   options.settings.validate();
   nlohmann::json out = nlohmann::json::array();
   for (const Material& m : scene.materials) {
-    if (!m.normal_glints || !m.normal_map) continue;
+    if (!m.is("normal-map-glints") || !m.normal_map) continue;
     const auto t0 = Clock::now();
     const PrefilteredNdf p = load_or_precompute_prefiltered_ndf(
-        *m.normal_map, m.normal_glints->intrinsic_roughness, options.settings,
+        *m.normal_map, m.kind_param("intrinsic_roughness"), options.settings,
         options.use_cache ? default_table_cache_directory() : std::filesystem::path());
     const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     std::printf("material '%s': %s, %dx%d, sigma_r %g\n  %s\n", m.name.c_str(), m.normal_map->description.c_str(),

@@ -9,10 +9,7 @@
 
 namespace glintlab {
 
-std::vector<std::string> material_tables(const Material& material) {
-  if (material.glints) return {"glint-dictionary"};
-  return {};
-}
+std::vector<std::string> material_tables(const Material& material) { return material.kind->tables; }
 
 namespace {
 
@@ -69,19 +66,6 @@ gl::Texture make_mipmapped_texture(GLenum format, GLenum channels, int width, in
   glTextureParameteri(tex.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
   glTextureParameteri(tex.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
   return tex;
-}
-
-/// MaterialGpu::glints: a glinty material's parameters (Chermain's or, in the MATERIAL_BINOMIAL_GLINTS
-/// variant, Deliot & Belcour's, in MATERIAL_NORMAL_GLINTS sigma_r and the masking alpha), the
-/// defaults of Chermain's otherwise.
-glm::vec4 glint_record(const Material& m) {
-  if (m.normal_glints) return {m.normal_glints->intrinsic_roughness, m.normal_glints->masking_alpha, 0.0f, 0.0f};
-  if (m.binomial_glints) {
-    const BinomialGlintParams& b = *m.binomial_glints;
-    return {b.log_density, b.microfacet_roughness, b.density_randomization, b.slope_grid_scale};
-  }
-  const GlintParams g = m.glints.value_or(GlintParams{});
-  return {g.log_density, g.relative_area, g.max_anisotropy, 0.0f};
 }
 
 /// A material's affine uv map as the column-major mat3x2 GLSL reads: columns x, y and the offset.
@@ -181,13 +165,12 @@ GpuScene::GpuScene(const Scene& scene, TableCache tables)
     const float ndf = static_cast<float>(m.ndf == Ndf::Beckmann ? kNdfBeckmann : kNdfGgx);
     materials.push_back({glm::vec4(m.f0, ndf), glm::vec4(m.diffuse, m.normal_map_tiling),
                          glm::vec4(m.alpha, m.rho, m.anisotropy_rotation),
-                         glint_record(m), glm::vec4(m.emission, 0.0f),
+                         glm::vec4(m.kind_params[0], m.kind_params[1], m.kind_params[2], m.kind_params[3]),
+                         glm::vec4(m.emission, 0.0f),
                          x.base_color, glm::vec4(x.metallic, x.roughness, x.anisotropy, 0.0f),
                          glm::vec4(x.dielectric_f0, 0.0f)});
     normal_maps_.push_back(m.normal_map ? upload_normal_map(*m.normal_map) : NormalMapTextures{});
-    glinty_.push_back(m.glints.has_value());
-    binomial_glinty_.push_back(m.binomial_glints.has_value());
-    normal_glinty_.push_back(m.normal_glints.has_value());
+    kinds_.push_back(m.kind);
     textures_.push_back(material_textures(m));
   }
   for (const auto& m : scene.materials)

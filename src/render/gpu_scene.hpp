@@ -22,8 +22,8 @@ namespace glintlab {
 /// light buffer.
 using LightRanges = std::vector<glm::ivec2>;
 
-/// Tables a material's program variant reads in every method and in the reference: a glinty
-/// material's BRDF (shaders/glints/chermain/shading.glsl) reads the glint dictionary.
+/// Tables a material's program variant reads in every method and in the reference: its kind's
+/// (MaterialKind::tables; a glinty material's BRDF reads the glint dictionary).
 std::vector<std::string> material_tables(const Material& material);
 
 struct GpuMesh {
@@ -56,11 +56,8 @@ class GpuScene {
   [[nodiscard]] GLuint slope_cross_moment(int material) const {
     return normal_maps_[index(material)].slope_cross_moment.id();
   }
-  [[nodiscard]] bool glinty(int material) const { return glinty_[index(material)]; }
-  /// Whether the material is a binomial-glints one (Material::binomial_glints).
-  [[nodiscard]] bool binomial_glinty(int material) const { return binomial_glinty_[index(material)]; }
-  /// Whether the material is a normal-map-glints one (Material::normal_glints).
-  [[nodiscard]] bool normal_glinty(int material) const { return normal_glinty_[index(material)]; }
+  /// The material's kind (src/scene/materials/material_kind.hpp).
+  [[nodiscard]] const MaterialKind& kind(int material) const { return *kinds_[index(material)]; }
   /// Whether the material's parameters vary per texel (Material::textures).
   [[nodiscard]] bool textured(int material) const { return textures_[index(material)].textured; }
   /// Binds a material's textures to their units and sets `program`'s per-draw texture transforms
@@ -102,9 +99,7 @@ class GpuScene {
   std::vector<GpuMesh> meshes_;
   std::vector<GpuEmitter> emitters_;
   std::vector<NormalMapTextures> normal_maps_;
-  std::vector<bool> glinty_;
-  std::vector<bool> binomial_glinty_;
-  std::vector<bool> normal_glinty_;
+  std::vector<const MaterialKind*> kinds_;
   std::vector<MaterialTextures> textures_;
   std::map<const MaterialTexture*, gl::Texture> texture_objects_;  // shared between materials
   gl::Texture white_;  // 1x1 white: the texel of an absent texture

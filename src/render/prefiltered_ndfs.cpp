@@ -10,8 +10,9 @@ namespace glintlab {
 PrefilteredNdfs::PrefilteredNdfs(const std::vector<Material>& materials, std::filesystem::path cache_directory)
     : cache_directory_(std::move(cache_directory)) {
   for (const Material& m : materials)
-    sources_.push_back(m.normal_glints && m.normal_map ? Source{m.normal_map, m.normal_glints->intrinsic_roughness}
-                                                       : Source{});
+    sources_.push_back(m.is("normal-map-glints") && m.normal_map
+                           ? Source{m.normal_map, m.kind_param("intrinsic_roughness")}
+                           : Source{});
 }
 
 PrefilteredNdfs::Resident& PrefilteredNdfs::resident(const PrefilterSettings& settings) {

@@ -28,19 +28,19 @@ ShaderDefines forward_variant(const std::string& module, const LightRanges& ligh
   std::string ranges = "ivec2[](";
   for (std::size_t k = 0; k < light_ranges.size(); ++k)
     ranges += (k ? ", ivec2(" : "ivec2(") + std::to_string(light_ranges[k].x) + ", " + std::to_string(light_ranges[k].y) + ")";
+  const MaterialKind& kind = all_material_kinds().at(static_cast<std::size_t>(material.kind));
   return {{"$METHOD", module},
+          {"$MATERIAL", material_kind_module(kind)},
           {"LIGHT_RANGES", ranges + ")"},
+          {"MATERIAL_KIND", std::to_string(kind.code())},  // compare with MATERIAL_KIND_<ID> (the contract)
           {"MATERIAL_NORMAL_MAP", material.normal_map ? "1" : "0"},
-          {"MATERIAL_GLINTS", material.glints ? "1" : "0"},
           {"MATERIAL_TEXTURES", material.textures ? "1" : "0"},
-          {"MATERIAL_BINOMIAL_GLINTS", material.binomial_glints ? "1" : "0"},
-          {"MATERIAL_NORMAL_GLINTS", material.normal_glints ? "1" : "0"},
-          {"REFERENCE_PASS", is_reference_module(module) ? "1" : "0"}};
+          {"REFERENCE_PASS", is_reference_module(module) ? "1" : "0"},
+          {"REFERENCE_BINOMIAL_REALISATION", module == kRealisationReferenceModule ? "1" : "0"}};
 }
 
 MaterialVariant material_variant(const GpuScene& scene, int material) {
-  return {scene.normal_map(material) != 0, scene.glinty(material), scene.textured(material),
-          scene.binomial_glinty(material), scene.normal_glinty(material)};
+  return {scene.kind(material).code(), scene.normal_map(material) != 0, scene.textured(material)};
 }
 
 std::string method_program_module(ShaderLibrary& shaders, const MethodDescriptor& method, const ParamValues& params) {

@@ -14,14 +14,12 @@
 
 namespace glintlab {
 
-/// What of a material changes the forward program: MATERIAL_NORMAL_MAP, MATERIAL_GLINTS,
-/// MATERIAL_TEXTURES, MATERIAL_BINOMIAL_GLINTS and MATERIAL_NORMAL_GLINTS.
+/// What of a material changes the forward program: its kind (MATERIAL_KIND, and the kind's module
+/// in the $MATERIAL slot), MATERIAL_NORMAL_MAP and MATERIAL_TEXTURES.
 struct MaterialVariant {
+  int kind = 0;  ///< the kind's code (MaterialKind::code)
   bool normal_map = false;
-  bool glints = false;
   bool textures = false;
-  bool binomial_glints = false;
-  bool normal_glints = false;
   auto operator<=>(const MaterialVariant&) const = default;
 };
 MaterialVariant material_variant(const GpuScene& scene, int material);

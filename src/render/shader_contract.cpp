@@ -4,8 +4,9 @@
 #include <cctype>
 
 #include "core/gpu_contract.hpp"
-#include "tables/registry.hpp"
 #include "scene/lights/light_kind.hpp"
+#include "scene/materials/material_kind.hpp"
+#include "tables/registry.hpp"
 
 namespace glintlab {
 
@@ -116,6 +117,98 @@ std::string shade_all_lights_glsl() {
   return out + "  return sum;\n}\n";
 }
 
+/// One function of the material interface (docs/extending.md, "A material kind"): every kind's
+/// shaders/materials/<id>.glsl defines <prefix>Material<Name> with this signature, and the kind's
+/// generated module forwards the interface's name to it.
+struct MaterialFunction {
+  std::string returns;
+  std::string name;        // "SpecularCos": materialSpecularCos, <prefix>MaterialSpecularCos
+  std::string parameters;  // "Surface s, vec3 wo, vec3 wi"
+  std::string arguments;   // "s, wo, wi"
+};
+
+const std::vector<MaterialFunction>& material_interface() {
+  static const std::vector<MaterialFunction> functions = {
+      // The shading point's state (what the kind keeps per point, e.g. the glints' footprint);
+      // may turn the shading frame (a normal-map-glints material shades in the macro frame).
+      {"void", "Prepare", "inout Surface s, MaterialData m", "s, m"},
+      // The specular BRDF times the cosine, f_s(wo, wi) wi.z, in the shading frame.
+      {"vec3", "SpecularCos", "Surface s, vec3 wo, vec3 wi", "s, wo, wi"},
+      // The diffuse BRDF times the cosine.
+      {"vec3", "DiffuseCos", "Surface s, vec3 wi", "s, wi"},
+      // A microfacet normal for the reflected direction reflect(-wo, h), from u in [0, 1)^2 ...
+      {"vec3", "SampleNormal", "Surface s, vec3 wo, vec2 u", "s, wo, u"},
+      // ... and the solid-angle density of the reflected directions it gives.
+      {"float", "SamplePdf", "Surface s, vec3 wo, vec3 wi", "s, wo, wi"},
+      // The smooth lobe that methods which do not know the kind shade it with (its smooth limit).
+      {"Lobe", "SmoothLobe", "Surface s", "s"},
+      // Lights with extent: the specular integrand over the light (f cos, or what a kind's model
+      // integrates) and a factor on the integral (1, or e.g. the binomial glints' count factor).
+      {"vec3", "LightIntegrand", "Surface s, vec3 wo, vec3 wi", "s, wo, wi"},
+      {"float", "LightFactor", "Surface s, LightData L, vec3 wo, uint sub, vec2 rotLight, vec2 rotBrdf",
+       "s, L, wo, sub, rotLight, rotBrdf"},
+  };
+  return functions;
+}
+
+std::string capitalised(const std::string& key) {
+  std::string out;
+  bool upper = true;
+  for (char c : key) {
+    if (c == '_') {
+      upper = true;
+      continue;
+    }
+    out += upper ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : c;
+    upper = false;
+  }
+  return out;
+}
+
+/// Accessors of every kind's parameters in MaterialData::kind_params (core/material.glsl).
+std::string material_params_glsl() {
+  std::string out = kHeader;
+  out += "// Each material kind's parameters in MaterialData::kind_params, in its declaration's order\n"
+         "// (src/scene/materials/<kind>.cpp).\n";
+  const char* components[] = {"x", "y", "z", "w"};
+  for (const MaterialKind& k : all_material_kinds())
+    for (std::size_t i = 0; i < k.params.size(); ++i)
+      out += "float " + k.glsl_prefix() + capitalised(k.params[i].key) + "(MaterialData m) { return m.kind_params." +
+             components[i] + "; }  // " + k.id + ": " + k.params[i].key + "\n";
+  return out;
+}
+
+/// A kind's module in the forward pass's $MATERIAL slot: its file, then the material interface
+/// forwarded to its functions.
+std::string material_kind_glsl(const MaterialKind& k) {
+  std::string out = kHeader;
+  out += "// Material kind '" + k.id + "' (src/scene/materials/) behind the material interface.\n";
+  out += "#include \"" + k.glsl_file() + "\"\n\n";
+  for (const MaterialFunction& f : material_interface()) {
+    const std::string call = k.glsl_prefix() + "Material" + f.name + "(" + f.arguments + ")";
+    out += f.returns + " material" + f.name + "(" + f.parameters + ") { " + (f.returns == "void" ? "" : "return ") +
+           call + "; }\n";
+  }
+  return out;
+}
+
+/// The std140 records of src/core/gpu_contract.hpp as GLSL structs, from the same field lists.
+template <std::size_t N>
+std::string glsl_struct(const std::string& name, const Std140Field (&fields)[N]) {
+  std::string out = "struct " + name + " {\n";
+  for (const Std140Field& f : fields) out += "  " + std::string(f.glsl_type) + " " + f.name + ";  // " + f.meaning + "\n";
+  return out + "};\n";
+}
+
+std::string gpu_structs_glsl() {
+  std::string out = kHeader;
+  out += "// The std140 records of src/core/gpu_contract.hpp, from its field lists.\n";
+  out += glsl_struct("LightData", kLightFields) + "\n";
+  out += glsl_struct("MaterialData", kMaterialFields) + "\n";
+  out += glsl_struct("FrameData", kFrameFields);
+  return out;
+}
+
 std::string contract_glsl() {
   std::string out = kHeader;
   out += "// The C++/GLSL contract (src/core/gpu_contract.hpp) and the light kinds' codes (src/scene/lights/light_kinds.cpp).\n";
@@ -154,15 +247,23 @@ ShaderDefines contract_defines() {
   };
   for (const LightKind& k : all_light_kinds()) d.emplace_back(code_name(k), std::to_string(k.code()));
   d.emplace_back("LIGHT_KIND_COUNT", std::to_string(all_light_kinds().size()));
+  for (const MaterialKind& k : all_material_kinds()) d.emplace_back(k.define(), std::to_string(k.code()));
   for (auto& unit : table_defines()) d.push_back(std::move(unit));  // TABLE_UNIT_<ID>
   return d;
 }
 
 std::vector<std::pair<std::string, std::string>> generated_shader_sources() {
-  return {{"generated/gpu_contract.glsl", contract_glsl()},
-          {"generated/light_kinds.glsl", light_kinds_glsl()},
-          {"generated/shade_all_lights.glsl", shade_all_lights_glsl()}};
+  std::vector<std::pair<std::string, std::string>> sources = {
+      {"generated/gpu_contract.glsl", contract_glsl()},
+      {"generated/gpu_structs.glsl", gpu_structs_glsl()},
+      {"generated/light_kinds.glsl", light_kinds_glsl()},
+      {"generated/shade_all_lights.glsl", shade_all_lights_glsl()},
+      {"generated/material_params.glsl", material_params_glsl()}};
+  for (const MaterialKind& k : all_material_kinds()) sources.emplace_back(material_kind_module(k), material_kind_glsl(k));
+  return sources;
 }
+
+std::string material_kind_module(const MaterialKind& kind) { return "generated/materials/" + kind.id + ".glsl"; }
 
 void add_contract_sources(ShaderLibrary& shaders) {
   for (auto& [path, text] : generated_shader_sources()) shaders.add_source(path, std::move(text));

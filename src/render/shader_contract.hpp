@@ -1,7 +1,9 @@
 #pragma once
 // GLSL generated from the C++ side, so that the shaders never restate a constant, a layout or the
-// list of light kinds: generated/gpu_contract.glsl (src/core/gpu_contract.hpp's constants and the
-// light kinds' codes as defines), generated/light_kinds.glsl (each kind's file and the dispatch
+// list of light or material kinds: generated/gpu_contract.glsl (src/core/gpu_contract.hpp's
+// constants and the kinds' codes as defines), generated/gpu_structs.glsl (its std140 records),
+// generated/material_params.glsl (each material kind's parameters), generated/materials/<kind>.glsl
+// (a kind behind the material interface), generated/light_kinds.glsl (each kind's file and the dispatch
 // of the light interface, shaders/lights/lights.glsl) and generated/shade_all_lights.glsl (the
 // light loop's call per kind, shaders/lights/light_loop.glsl).
 #include <string>
@@ -21,5 +23,10 @@ void add_contract_sources(ShaderLibrary& shaders);
 
 /// The defines of generated/gpu_contract.glsl, (name, value) in order.
 ShaderDefines contract_defines();
+
+struct MaterialKind;
+/// The generated module of a material kind for the forward pass's $MATERIAL slot: the kind's
+/// shaders/materials/<id>.glsl behind the material interface (materialSpecularCos, ...).
+std::string material_kind_module(const MaterialKind& kind);
 
 }  // namespace glintlab

@@ -30,15 +30,7 @@ std::uint64_t Scene::content_hash() const {
     h.value(m.ndf);
     h.value(m.alpha);
     h.value(m.rho);
-    h.value(m.glints.has_value());
-    if (m.glints) h.value(*m.glints);
-    h.value(m.binomial_glints.has_value());
-    if (m.binomial_glints) h.value(*m.binomial_glints);
-    // Only when present, so that the keys of scenes without it are those they always had.
-    if (m.normal_glints) {
-      h.text("normal-map-glints");
-      h.value(*m.normal_glints);
-    }
+    hash_material_kind(h, m);
     h.value(m.f0);
     h.value(m.diffuse);
     h.value(m.normal_map_tiling);

@@ -100,16 +100,46 @@ TEST(GpuContract, GeneratedDefinesAreTheCppConstants) {
     for (char c : k.id) define += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     expressions.push_back(define);
   }
+  for (const auto& k : all_material_kinds()) expressions.push_back(k.define());
   const auto values = glsl_values("#include \"generated/gpu_contract.glsl\"\n", expressions);
   for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_EQ(values[i], expected[i].value) << expected[i].define;
   for (std::size_t k = 0; k < all_light_kinds().size(); ++k)
     EXPECT_EQ(values[expected.size() + k], all_light_kinds()[k].code()) << expressions[expected.size() + k];
+  const std::size_t first_material = expected.size() + all_light_kinds().size();
+  for (std::size_t k = 0; k < all_material_kinds().size(); ++k)
+    EXPECT_EQ(values[first_material + k], all_material_kinds()[k].code()) << expressions[first_material + k];
   EXPECT_EQ(contract_defines().size(), expressions.size()) << "a define this test does not check";
+}
+
+/// The GLSL expression that reads every field of a record (so that the driver keeps them all), and
+/// the expected std140 offset of each, from the record's field list in src/core/gpu_contract.hpp.
+template <std::size_t N>
+std::string read_every_field(const std::string& prefix, const Std140Field (&fields)[N]) {
+  std::string sum;
+  for (const Std140Field& f : fields) {
+    const std::string name = prefix + f.name;
+    const std::string type = f.glsl_type;
+    sum += (sum.empty() ? "" : " + ") + (type == "mat4" ? name + "[0]" : type == "ivec4" ? "vec4(" + name + ")" : name);
+  }
+  return sum;
+}
+
+template <std::size_t N>
+void expect_offsets(GLuint program, const std::string& prefix, const Std140Field (&fields)[N], std::size_t record_size,
+                    const std::string& next_record) {
+  std::size_t offset = 0;
+  for (const Std140Field& f : fields) {
+    EXPECT_EQ(uniform_offset(program, (prefix + f.name).c_str()), static_cast<GLint>(offset)) << prefix << f.name;
+    offset += std140_size(f.glsl_type);
+  }
+  EXPECT_EQ(offset, record_size) << prefix;
+  if (!next_record.empty()) EXPECT_EQ(uniform_offset(program, next_record.c_str()), static_cast<GLint>(record_size));
 }
 
 TEST(GpuContract, Std140LayoutsMatchTheCppRecords) {
   // The driver's offsets of every member of the three uniform blocks, their bindings and sizes,
-  // in a program that declares them the way the forward pass does.
+  // in a program that declares them the way the forward pass does; the members come from the
+  // same field lists as the C++ records and the generated GLSL structs.
   shaders().add_source("test/contract_layout.comp", R"(
 layout(local_size_x = 1) in;
 #include "core/frame.glsl"
@@ -121,10 +151,9 @@ layout(local_size_x = 1) in;
 layout(binding = NORMAL_MAP_UNIT) uniform sampler2D uNormalMapProbe;
 layout(std430, binding = 7) writeonly buffer Out { vec4 outV[]; };
 void main() {
-  outV[0] = uViewProj[0] + uCameraPos + uCameraForward + vec4(uTarget + uTile);
-  outV[1] = lights[1].colour_type + lights[0].position_radius + lights[0].direction_cos + lights[0].axisU + lights[0].axisV;
-  outV[2] = materials[1].f0_ndf + materials[0].diffuse_tiling + materials[0].alpha_rho + materials[0].glints +
-            materials[0].emission + materials[0].base_color + materials[0].metal_rough + materials[0].dielectric_f0;
+  outV[0] = )" + read_every_field("frame.", kFrameFields) + R"(;
+  outV[1] = lights[1].colour_type + )" + read_every_field("lights[0].", kLightFields) + R"(;
+  outV[2] = materials[1].f0_ndf + )" + read_every_field("materials[0].", kMaterialFields) + R"(;
   outV[3] = textureLod(uNormalMapProbe, vec2(0.0), 0.0) + textureLod(uSlopeMoments, vec2(0.0), 0.0) +
             textureLod(uSlopeCrossMoment, vec2(0.0), 0.0) + textureLod(uGlintDictionary, vec2(0.0), 0.0);
   outV[4] = textureLod(uBaseColor, vec2(0.0), 0.0) + textureLod(uMetallicRoughness, vec2(0.0), 0.0) +
@@ -138,30 +167,13 @@ void main() {
   EXPECT_EQ(block_size(program, "FrameBlock"), static_cast<GLint>(sizeof(FrameUniforms)));
   EXPECT_EQ(block_size(program, "LightBlock"), static_cast<GLint>(kMaxLights * sizeof(LightGpu)));
   EXPECT_EQ(block_size(program, "MaterialBlock"), static_cast<GLint>(kMaxMaterials * sizeof(MaterialGpu)));
-
-  EXPECT_EQ(uniform_offset(program, "uViewProj"), static_cast<GLint>(offsetof(FrameUniforms, view_proj)));
-  EXPECT_EQ(uniform_offset(program, "uCameraPos"), static_cast<GLint>(offsetof(FrameUniforms, camera_pos)));
-  EXPECT_EQ(uniform_offset(program, "uCameraForward"), static_cast<GLint>(offsetof(FrameUniforms, camera_forward)));
-  EXPECT_EQ(uniform_offset(program, "uTarget"), static_cast<GLint>(offsetof(FrameUniforms, target)));
-  EXPECT_EQ(uniform_offset(program, "uTile"), static_cast<GLint>(offsetof(FrameUniforms, tile)));
-
-  EXPECT_EQ(uniform_offset(program, "lights[0].colour_type"), static_cast<GLint>(offsetof(LightGpu, colour_type)));
-  EXPECT_EQ(uniform_offset(program, "lights[0].position_radius"), static_cast<GLint>(offsetof(LightGpu, position_radius)));
-  EXPECT_EQ(uniform_offset(program, "lights[0].direction_cos"), static_cast<GLint>(offsetof(LightGpu, direction_cos)));
-  EXPECT_EQ(uniform_offset(program, "lights[0].axisU"), static_cast<GLint>(offsetof(LightGpu, axis_u)));
-  EXPECT_EQ(uniform_offset(program, "lights[0].axisV"), static_cast<GLint>(offsetof(LightGpu, axis_v)));
-  EXPECT_EQ(uniform_offset(program, "lights[1].colour_type"), static_cast<GLint>(sizeof(LightGpu)));
-
-  EXPECT_EQ(uniform_offset(program, "materials[0].f0_ndf"), static_cast<GLint>(offsetof(MaterialGpu, f0_ndf)));
-  EXPECT_EQ(uniform_offset(program, "materials[0].diffuse_tiling"), static_cast<GLint>(offsetof(MaterialGpu, diffuse_tiling)));
-  EXPECT_EQ(uniform_offset(program, "materials[0].alpha_rho"), static_cast<GLint>(offsetof(MaterialGpu, alpha_rho)));
-  EXPECT_EQ(uniform_offset(program, "materials[0].glints"), static_cast<GLint>(offsetof(MaterialGpu, glints)));
-  EXPECT_EQ(uniform_offset(program, "materials[0].emission"), static_cast<GLint>(offsetof(MaterialGpu, emission)));
-  EXPECT_EQ(uniform_offset(program, "materials[0].base_color"), static_cast<GLint>(offsetof(MaterialGpu, base_color)));
-  EXPECT_EQ(uniform_offset(program, "materials[0].metal_rough"), static_cast<GLint>(offsetof(MaterialGpu, metal_rough)));
-  EXPECT_EQ(uniform_offset(program, "materials[0].dielectric_f0"),
-            static_cast<GLint>(offsetof(MaterialGpu, dielectric_f0)));
-  EXPECT_EQ(uniform_offset(program, "materials[1].f0_ndf"), static_cast<GLint>(sizeof(MaterialGpu)));
+  expect_offsets(program, "frame.", kFrameFields, sizeof(FrameUniforms), "");
+  expect_offsets(program, "lights[0].", kLightFields, sizeof(LightGpu), "lights[1].colour_type");
+  expect_offsets(program, "materials[0].", kMaterialFields, sizeof(MaterialGpu), "materials[1].f0_ndf");
+  // The C++ records' own offsets, member by member, against the same lists.
+  EXPECT_EQ(offsetof(FrameUniforms, tile), 112u);
+  EXPECT_EQ(offsetof(LightGpu, axis_v), 64u);
+  EXPECT_EQ(offsetof(MaterialGpu, dielectric_f0), 112u);
 
   EXPECT_EQ(sampler_unit(program, "uNormalMapProbe"), kNormalMapUnit);
   EXPECT_EQ(sampler_unit(program, "uSlopeMoments"), kSlopeMomentsUnit);
@@ -170,4 +182,20 @@ void main() {
   EXPECT_EQ(sampler_unit(program, "uBaseColor"), kBaseColorUnit);
   EXPECT_EQ(sampler_unit(program, "uMetallicRoughness"), kMetallicRoughnessUnit);
   EXPECT_EQ(sampler_unit(program, "uEmissive"), kEmissiveUnit);
+}
+
+TEST(GpuContract, NoShaderRestatesWhatIsGenerated) {
+  // The records, the kinds' codes and the material kinds' parameters live only in generated/*.glsl:
+  // a hand copy in a shader file would drift from the C++ side unseen.
+  std::vector<std::string> generated_only = {"struct LightData", "struct MaterialData", "struct FrameData",
+                                             "#define LIGHT_KIND_COUNT", ".kind_params."};
+  for (const auto& [name, value] : contract_defines()) generated_only.push_back("#define " + name + " ");
+  int files = 0;
+  for (const std::string& path : shaders().paths()) {
+    if (path.starts_with("generated/")) continue;
+    const std::string text = shaders().source(path);
+    for (const std::string& s : generated_only) EXPECT_EQ(text.find(s), std::string::npos) << path << " has " << s;
+    ++files;
+  }
+  EXPECT_GT(files, 50);
 }

@@ -282,8 +282,8 @@ vec4 evaluate(vec4 a, vec4 b) {
   L.position_radius = vec4(s.position + dist * toLight, 0.01 + 0.5 * random01(h));
   vec3 facing = randomUnit(h);
   L.direction_cos = vec4(kind == 0 ? facing : -toLight, kind == 2 ? 0.9 + 0.0999 * random01(h) : 0.0);
-  L.axisU = vec4(0.0, 0.0, 0.0, kind == 2 ? 1.0 - L.direction_cos.w : 0.0);  // a sun's 1 - cos (lights.glsl)
-  L.axisV = vec4(0.0);
+  L.axis_u = vec4(0.0, 0.0, 0.0, kind == 2 ? 1.0 - L.direction_cos.w : 0.0);  // a sun's 1 - cos (lights.glsl)
+  L.axis_v = vec4(0.0);
 
   CornerRays corners;
   vec3 r = reflect(-s.view, s.normal);

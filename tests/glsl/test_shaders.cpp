@@ -58,9 +58,8 @@ std::string kind_names(const LightRanges& ranges) {
 
 void expect_compiles(const std::string& module, MaterialVariant v, const LightRanges& lights) {
   EXPECT_NO_THROW(shaders().graphics("passes/forward.vert", "passes/forward.frag", forward_variant(module, lights, v)))
-      << module << (v.normal_map ? " with a normal map" : "") << (v.glints ? ", glinty" : "")
-      << (v.textures ? ", textured" : "") << (v.binomial_glints ? ", binomial glints" : "")
-      << (v.normal_glints ? ", normal-map glints" : "") << "; lights "
+      << module << ", " << all_material_kinds()[static_cast<std::size_t>(v.kind)].id << " material"
+      << (v.normal_map ? " with a normal map" : "") << (v.textures ? ", textured" : "") << "; lights "
       << kind_names(lights);
 }
 
@@ -72,7 +71,7 @@ int expect_every_module_compiles_in(MaterialVariant v) {
   int compiled = 0;
   for (const auto& module : every_shading_module())
     for (bool normal_map : {false, true}) {
-      if (v.normal_glints && !normal_map) continue;  // a normal-map-glints material always has its map
+      if (all_material_kinds()[static_cast<std::size_t>(v.kind)].requires_normal_map && !normal_map) continue;
       v.normal_map = normal_map;
       std::set<int> on_builtin_scenes;
       if (module.rendered_on_builtin_scenes)
@@ -86,33 +85,30 @@ int expect_every_module_compiles_in(MaterialVariant v) {
 
 }  // namespace
 
-// Every module in every material variant with every light kind, one variant family per test (all
+// Every module in every material variant with every light kind, one material kind per test (all
 // in one test would outlast ctest's timeout on llvmpipe under load), less what the built-in scene
 // tests compile (builtin_scene_programs.hpp). Each test compiles at least the unshaded pass.
-TEST(Shaders, EveryMethodAndPassCompiles) {
-  EXPECT_GT(expect_every_module_compiles_in({false, false, false, false}), 0);
+class EveryMethodAndPassCompiles : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(EveryMethodAndPassCompiles, ForMaterialKind) {
+  const MaterialKind& kind = find_material_kind(GetParam());
+  EXPECT_GT(expect_every_module_compiles_in({kind.code(), false, false}), 0);
+  if (&kind != &default_material_kind()) return;
   EXPECT_NO_THROW(shaders().graphics("passes/forward.vert", "passes/emitter.frag"));
   EXPECT_NO_THROW(shaders().compute("passes/downsample.comp"));
 }
 
-TEST(Shaders, EveryMethodAndPassCompilesForGlints) {
-  EXPECT_GT(expect_every_module_compiles_in({false, true, false, false}), 0);
-}
+INSTANTIATE_TEST_SUITE_P(Shaders, EveryMethodAndPassCompiles, ::testing::ValuesIn(material_kind_ids()),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                           std::string name = info.param;
+                           for (char& c : name)
+                             if (c == '-') c = '_';
+                           return name;
+                         });
 
-// (A glinty material's parameters are constants: no textured glinty variant.)
+// Textured materials (glTF's, of the default kind: the other kinds' parameters are constants).
 TEST(Shaders, EveryMethodAndPassCompilesForTextures) {
-  EXPECT_GT(expect_every_module_compiles_in({false, false, true, false}), 0);
-}
-
-// The binomial-glints variant: its parameters are constants and it has no Chermain glints, so it
-// varies only with the normal map.
-TEST(Shaders, EveryMethodAndPassCompilesForBinomialGlints) {
-  EXPECT_GT(expect_every_module_compiles_in({false, false, false, true}), 0);
-}
-
-// The normal-map-glints variant (always normal-mapped; yan2016 and deng2022 read the map itself).
-TEST(Shaders, EveryMethodAndPassCompilesForNormalMapGlints) {
-  EXPECT_GT(expect_every_module_compiles_in({true, false, false, false, true}), 0);
+  EXPECT_GT(expect_every_module_compiles_in({default_material_kind().code(), false, true}), 0);
 }
 
 // Every other choice of each method's compile-time parameters (ParamDecl::compile_time), the

@@ -56,7 +56,7 @@ TEST(Kneiphof, DenseGlintsConvergeToTheSmoothRenderInTheReference) {
   // The reference's model (p integrated over the light) against the smooth material's reference.
   SceneFixture dense(area_lit_patch(40.0, 32));
   const Image glinty = dense.reference(4).specular;
-  dense.scene.materials[0].binomial_glints.reset();
+  dense.scene.materials[0].set_kind(default_material_kind());  // its smooth limit
   SceneFixture smooth(dense.scene);
   expect_matches_smooth(glinty, smooth.reference(4).specular, "reference");
 }
@@ -132,7 +132,7 @@ TEST(Kneiphof, TheRealisationReferenceConvergesToTheSmoothRenderAndMatchesTheCou
   // Dense: one realisation of ~1e14 facets per cell is the smooth NDF.
   SceneFixture dense(area_lit_patch(40.0, 32));
   const Image real_dense = realisation_reference(dense, 4).specular;
-  dense.scene.materials[0].binomial_glints.reset();
+  dense.scene.materials[0].set_kind(default_material_kind());  // its smooth limit
   SceneFixture smooth(dense.scene);
   expect_matches_smooth(real_dense, smooth.reference(4).specular, "realisation reference");
   // Sparse: the two references are two models of the same surface; same mean, other glints.

@@ -111,8 +111,8 @@ vec4 evaluate(vec4 a, vec4 b) {
   LightData L;
   L.colour_type = vec4(1.0, 1.0, 1.0, float(LIGHT_SUN));
   L.direction_cos = vec4(-l, cos(theta));
-  L.axisU = vec4(0.0, 0.0, 0.0, 2.0 * sin(0.5 * theta) * sin(0.5 * theta));
-  L.axisV = vec4(0.0);
+  L.axis_u = vec4(0.0, 0.0, 0.0, 2.0 * sin(0.5 * theta) * sin(0.5 * theta));
+  L.axis_v = vec4(0.0);
   L.position_radius = vec4(0.0);
   int kind = int(a.z);
   Lobe lobe = axisAlignedLobe(kind % 2, vec2(a.x, 0.7 * a.x));

@@ -79,7 +79,7 @@ Scene with_constant_map(Scene scene, glm::dvec3 n) {
   map->description = "constant";
   Material& m = scene.materials[0];
   m.normal_map = map;
-  m.normal_glints->masking_alpha = normal_glint_masking_alpha(*map, m.normal_glints->intrinsic_roughness);
+  m.set_kind_param("masking_alpha", normal_glint_masking_alpha(*map, m.kind_param("intrinsic_roughness")));
   return scene;
 }
 
@@ -109,7 +109,7 @@ TEST(NormalGlintsReference, ConstantTiltedMapIsTheClosedFormUnderADeltaLight) {
   const glm::dvec3 travel = -plane_to_world(wi);
   ts.directional_light({travel.x, travel.y, travel.z}, 1.0);
   SceneFixture f(with_constant_map(ts.scene(), kTilt));
-  const double masking = f.scene.materials[0].normal_glints->masking_alpha;
+  const double masking = f.scene.materials[0].kind_param("masking_alpha");
   EXPECT_NEAR(masking, std::sqrt(std::pow(glm::length(glm::dvec2(kTilt)) / kTilt.z, 2) + 2 * kSigma * kSigma), 1e-6);
   const double truth = contract_specular_cos(wo, wi, glm::dvec2(kTilt), kSigma, masking);
   const Image image = f.reference(4).specular;
@@ -152,12 +152,12 @@ TEST(NormalGlintsReference, BumpyMapFromAfarIsTheMapsAverageOfTheBrdf) {
       const double a = x - i0, b = y - j0;
       const glm::dvec3 n = glm::normalize((1 - a) * (1 - b) * texel(i0, j0) + a * (1 - b) * texel(i0 + 1, j0) +
                                           (1 - a) * b * texel(i0, j0 + 1) + a * b * texel(i0 + 1, j0 + 1));
-      sum += contract_specular_cos(wo, wi, glm::dvec2(n), kSigmaR, m.normal_glints->masking_alpha);
+      sum += contract_specular_cos(wo, wi, glm::dvec2(n), kSigmaR, m.kind_param("masking_alpha"));
     }
   const double truth = sum / (kRes * kSub * kRes * kSub);
   const ReferenceFrame reference = f.reference_estimate(1024);
   const double mean = mean_green(reference.mean.specular), noise = reference.relative_energy_error(true);
-  const double alpha = m.normal_glints->masking_alpha;
+  const double alpha = m.kind_param("masking_alpha");
   const double smooth = beckmann_specular_cos(wo, wi, alpha);
   std::printf("bumpy map from afar: reference mean %.5f (relative error %.4f), map average %.5f, smooth Beckmann(%.4f) %.5f\n",
               mean, noise, truth, alpha, smooth);
@@ -181,7 +181,7 @@ TEST(NormalGlintsReference, ConstantMapUnderASunIsTheQuadratureOverTheSun) {
   ts.light("sun", {{"direction", {travel.x, travel.y, travel.z}}, {"irradiance", kIrradiance},
                    {"angular_radius", kRadiusDegrees}});
   SceneFixture f(with_constant_map(ts.scene(), kTilt));
-  const double masking = f.scene.materials[0].normal_glints->masking_alpha;
+  const double masking = f.scene.materials[0].kind_param("masking_alpha");
   // Quadrature over the cone (midpoints in cos theta and phi about the axis).
   const double g = kRadiusDegrees * M_PI / 180, radiance = kIrradiance / (M_PI * std::sin(g) * std::sin(g));
   const glm::dvec3 t1 = glm::normalize(glm::cross(axis, glm::dvec3(0, 1, 0))), t2 = glm::cross(axis, t1);

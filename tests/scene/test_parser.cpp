@@ -167,11 +167,12 @@ TEST(SceneParser, BinomialGlintsMaterialKeysAreCheckedAndNamed) {
   const Scene s = binomial({{"alpha", 0.3}, {"log_density", 12}, {"microfacet_roughness", 0.03},
                             {"density_randomization", 0.5}, {"slope_grid_scale", 8}})
                       .scene();
-  ASSERT_TRUE(s.materials[0].binomial_glints.has_value());
-  EXPECT_FALSE(s.materials[0].glints.has_value());
+  ASSERT_TRUE(s.materials[0].is("binomial-glints"));
   EXPECT_EQ(s.materials[0].ndf, Ndf::GGX);
-  EXPECT_FLOAT_EQ(s.materials[0].binomial_glints->microfacet_roughness, 0.03f);
-  EXPECT_FLOAT_EQ(s.materials[0].binomial_glints->slope_grid_scale, 8.0f);
+  EXPECT_FLOAT_EQ(s.materials[0].kind_param("log_density"), 12.0f);
+  EXPECT_FLOAT_EQ(s.materials[0].kind_param("microfacet_roughness"), 0.03f);
+  EXPECT_FLOAT_EQ(s.materials[0].kind_param("density_randomization"), 0.5f);
+  EXPECT_FLOAT_EQ(s.materials[0].kind_param("slope_grid_scale"), 8.0f);
   expect_error(binomial({{"alpha", 0.0}}).toml(), {"alpha", "0.01 .. 1"});
   expect_error(binomial({{"log_density", 60}}).toml(), {"log_density", "60", "0 .. 50"});
   expect_error(binomial({{"microfacet_roughness", 2}}).toml(), {"microfacet_roughness", "2", "0.0001 .. 1"});
@@ -190,19 +191,19 @@ TEST(SceneParser, NormalMapGlintsMaterialKeysAreCheckedAndNamed) {
   const TomlKeys bumps{{"generator", "bumps"}, {"resolution", 32}, {"alpha", 0.2}, {"max_frequency", 8}};
   const Scene s = material({{"intrinsic_roughness", 0.02}, {"normal_map", bumps}}).scene();
   const Material& m = s.materials[0];
-  ASSERT_TRUE(m.normal_glints.has_value());
+  ASSERT_TRUE(m.is("normal-map-glints"));
   ASSERT_NE(m.normal_map, nullptr);
   EXPECT_EQ(m.ndf, Ndf::Beckmann);
   EXPECT_FLOAT_EQ(m.alpha.x, std::sqrt(2.0f) * 0.02f);
   EXPECT_FLOAT_EQ(m.alpha.y, m.alpha.x);
-  EXPECT_FLOAT_EQ(m.normal_glints->intrinsic_roughness, 0.02f);
+  EXPECT_FLOAT_EQ(m.kind_param("intrinsic_roughness"), 0.02f);
   // The masking alpha is the whole microsurface's: the bumps' slopes have variance alpha^2 over the
   // texels (distinct integer frequencies are orthogonal on the grid), plus 2 sigma_r^2.
-  EXPECT_NEAR(m.normal_glints->masking_alpha, std::sqrt(0.2 * 0.2 + 2 * 0.02 * 0.02), 0.01);
+  EXPECT_NEAR(m.kind_param("masking_alpha"), std::sqrt(0.2 * 0.2 + 2 * 0.02 * 0.02), 0.01);
   // A flat map leaves the intrinsic Gaussian alone: alpha = sqrt(2) sigma_r, the default 0.01.
   const Scene flat = material({{"normal_map", TomlKeys{{"generator", "bumps"}, {"resolution", 4}, {"alpha", 0}}}}).scene();
-  EXPECT_FLOAT_EQ(flat.materials[0].normal_glints->intrinsic_roughness, 0.01f);
-  EXPECT_NEAR(flat.materials[0].normal_glints->masking_alpha, std::sqrt(2.0) * 0.01, 1e-6);
+  EXPECT_FLOAT_EQ(flat.materials[0].kind_param("intrinsic_roughness"), 0.01f);
+  EXPECT_NEAR(flat.materials[0].kind_param("masking_alpha"), std::sqrt(2.0) * 0.01, 1e-6);
 
   expect_error(material({{"intrinsic_roughness", 0.02}}).toml(), {"normal_map", "'brushed'", "required"});
   expect_error(material({{"intrinsic_roughness", 0.5}, {"normal_map", bumps}}).toml(),

@@ -5,6 +5,7 @@
 // images) and added here.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <functional>
 #include <string>
@@ -38,10 +39,7 @@ static_assert(field_count<Film>() == 4);
 static_assert(field_count<Camera>() == 8);
 static_assert(field_count<CameraKey>() == 2);
 static_assert(field_count<CameraPath>() == 6);
-static_assert(field_count<GlintParams>() == 3);
-static_assert(field_count<BinomialGlintParams>() == 4);
-static_assert(field_count<NormalGlintParams>() == 2);
-static_assert(field_count<Material>() == 15);
+static_assert(field_count<Material>() == 14);
 static_assert(field_count<TexturedMetalRough>() == 8);
 static_assert(field_count<TextureSlot>() == 2);
 static_assert(field_count<MaterialTexture>() == 5);
@@ -75,9 +73,9 @@ Scene base_scene() {
                 .light("sun", {{"direction", {0, -1, 0}}, {"irradiance", 1}, {"angular_radius", 1}})
                 .light("spot", {{"position", {0, 2, 1}}, {"direction", {0, -1, 0}}, {"inner_angle", 10}})
                 .scene();
-  EXPECT_TRUE(s.materials[1].glints.has_value());
+  EXPECT_TRUE(s.materials[1].is("glinty"));
   EXPECT_NE(s.materials[1].normal_map, nullptr);
-  EXPECT_TRUE(s.materials[2].binomial_glints.has_value());
+  EXPECT_TRUE(s.materials[2].is("binomial-glints"));
   // A textured material (as glTF import makes them), every slot with a texture.
   Material textured = s.materials[0];
   textured.name = "textured";
@@ -87,12 +85,14 @@ Scene base_scene() {
   textured.textures->metallic_roughness_texture.texture = texture;
   textured.textures->emissive_texture.texture = texture;
   s.materials.push_back(textured);
-  // A normal-map-glints material (the parser's fields, set by hand: the hash reads the struct).
-  Material normal_glints = s.materials[1];
-  normal_glints.name = "normal-glints";
-  normal_glints.glints.reset();
-  normal_glints.normal_glints = NormalGlintParams{0.02f, 0.3f};
-  s.materials.push_back(normal_glints);
+  // A material of every other kind (the parser's fields, set by hand: the hash reads the struct).
+  for (const MaterialKind& kind : all_material_kinds()) {
+    if (std::any_of(s.materials.begin(), s.materials.end(), [&](const Material& m) { return m.kind == &kind; })) continue;
+    Material other = s.materials[1];
+    other.name = kind.id;
+    other.set_kind(kind);
+    s.materials.push_back(other);
+  }
   return s;
 }
 
@@ -154,18 +154,10 @@ const std::vector<FieldChange> kHashed = {
     {"texture.height", [](Scene& s) { texture_of(s)->height = 1; }},
     {"texture.rgba", [](Scene& s) { texture_of(s)->rgba[3] = 7; }},
     {"texture.srgb", [](Scene& s) { texture_of(s)->srgb = false; }},
-    {"material.glints (one -> none)", [](Scene& s) { s.materials[1].glints.reset(); }},
-    {"glints.log_density", [](Scene& s) { s.materials[1].glints->log_density += 1; }},
-    {"glints.relative_area", [](Scene& s) { s.materials[1].glints->relative_area *= 0.5f; }},
-    {"glints.max_anisotropy", [](Scene& s) { s.materials[1].glints->max_anisotropy += 1; }},
-    {"material.binomial_glints (one -> none)", [](Scene& s) { s.materials[2].binomial_glints.reset(); }},
-    {"binomial.log_density", [](Scene& s) { s.materials[2].binomial_glints->log_density += 1; }},
-    {"binomial.microfacet_roughness", [](Scene& s) { s.materials[2].binomial_glints->microfacet_roughness *= 0.5f; }},
-    {"binomial.density_randomization", [](Scene& s) { s.materials[2].binomial_glints->density_randomization += 1; }},
-    {"binomial.slope_grid_scale", [](Scene& s) { s.materials[2].binomial_glints->slope_grid_scale *= 2; }},
-    {"material.normal_glints (one -> none)", [](Scene& s) { s.materials[4].normal_glints.reset(); }},
-    {"normal_glints.intrinsic_roughness", [](Scene& s) { s.materials[4].normal_glints->intrinsic_roughness *= 2; }},
-    {"normal_glints.masking_alpha", [](Scene& s) { s.materials[4].normal_glints->masking_alpha *= 2; }},
+    {"material.kind (binomial-glints -> microfacet)",
+     [](Scene& s) { s.materials[2].set_kind(default_material_kind()); }},
+    // Each parameter of each kind: SceneHash.EveryMaterialKindParameterChangesTheKey.
+    {"material.kind_params", [](Scene& s) { s.materials[1].kind_params[0] += 1; }},
     {"normal_map.width", [](Scene& s) { normal_map_of(s.materials[1])->width += 1; }},
     {"normal_map.height", [](Scene& s) { normal_map_of(s.materials[1])->height += 1; }},
     {"normal_map.normals", [](Scene& s) { normal_map_of(s.materials[1])->normals[5].x += 0.01f; }},
@@ -252,12 +244,8 @@ TEST(SceneHash, EveryFieldIsListedOnce) {
   EXPECT_EQ(fields("film."), static_cast<int>(field_count<Film>()));
   EXPECT_EQ(fields("camera."), static_cast<int>(field_count<Camera>()));
   EXPECT_EQ(fields("path."), static_cast<int>(field_count<CameraPath>()));
-  EXPECT_EQ(fields("glints."), static_cast<int>(field_count<GlintParams>()));
-  EXPECT_EQ(fields("binomial."), static_cast<int>(field_count<BinomialGlintParams>()));
-  EXPECT_EQ(fields("normal_glints."), static_cast<int>(field_count<NormalGlintParams>()));
-  // material.normal_map, .glints, .binomial_glints, .normal_glints and .textures are listed by
-  // what changes ("none -> one").
-  EXPECT_EQ(fields("material.") + 5, static_cast<int>(field_count<Material>()));
+  // material.kind, .normal_map and .textures are listed by what changes ("none -> one").
+  EXPECT_EQ(fields("material.") + 3, static_cast<int>(field_count<Material>()));
   EXPECT_EQ(fields("textured."), static_cast<int>(field_count<TexturedMetalRough>()));
   EXPECT_EQ(fields("slot.") + 1, static_cast<int>(field_count<TextureSlot>()));
   EXPECT_EQ(fields("texture."), static_cast<int>(field_count<MaterialTexture>()));
@@ -268,4 +256,21 @@ TEST(SceneHash, EveryFieldIsListedOnce) {
   EXPECT_EQ(fields("light."), static_cast<int>(field_count<Light>()));
   // Scene: name, source, description, and film, camera, path, materials, shapes, lights above.
   EXPECT_EQ(fields("scene.") + 6, static_cast<int>(field_count<Scene>()));
+}
+
+TEST(SceneHash, EveryMaterialKindParameterChangesTheKey) {
+  // Each declared parameter of every registered kind is hashed; the record's unused slots are not.
+  const Scene base = base_scene();
+  const std::uint64_t key = base.content_hash();
+  for (std::size_t m = 0; m < base.materials.size(); ++m) {
+    const MaterialKind& kind = *base.materials[m].kind;
+    for (std::size_t i = 0; i < static_cast<std::size_t>(kMaxMaterialKindParams); ++i) {
+      Scene s = base;
+      s.materials[m].kind_params[i] += 0.5f;
+      if (i < kind.params.size())
+        EXPECT_NE(s.content_hash(), key) << kind.id << "." << kind.params[i].key;
+      else
+        EXPECT_EQ(s.content_hash(), key) << kind.id << ": unused slot " << i;
+    }
+  }
 }

@@ -13,7 +13,8 @@
 BinomialSurface prepareBinomialGlints(Surface s, MaterialData m, float screenSpaceScale) {
   float tiling = m.diffuse_tiling.a;
   BinomialFootprint f = binomialFootprint(s.dUVdx / tiling, s.dUVdy / tiling, screenSpaceScale);
-  return binomialSurface(s.uv / tiling, f, m.glints.x, m.glints.z, m.glints.y, m.glints.w);
+  return binomialSurface(s.uv / tiling, f, binomialGlintsLogDensity(m), binomialGlintsDensityRandomization(m),
+                         binomialGlintsMicrofacetRoughness(m), binomialGlintsSlopeGridScale(m));
 }
 
 // f cos for local directions.

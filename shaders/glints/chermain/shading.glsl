@@ -28,8 +28,8 @@ GlintSurface prepareGlints(inout Surface s, MaterialData m, bool lean, bool corr
 #endif
   if (!correlated) lobe.A[0][1] = lobe.A[1][0] = 0.0;
   float tiling = m.diffuse_tiling.a;
-  return GlintSurface(glintPatch(s.uv / tiling, s.dUVdx / tiling, s.dUVdy / tiling, m.glints.z), glintLobe(lobe.A),
-                      m.glints.x, m.glints.y);
+  return GlintSurface(glintPatch(s.uv / tiling, s.dUVdx / tiling, s.dUVdy / tiling, glintyMaxAnisotropy(m)),
+                      glintLobe(lobe.A), glintyLogDensity(m), glintyRelativeArea(m));
 }
 
 // V-cavity masking (2020, eq. 8, after Cook & Torrance 1982) of direction w for microfacet h.

@@ -18,7 +18,7 @@ struct NormalGlintPoint {
 
 // `mapped`: the normal map's texel at u (bilinear, level 0; not renormalised); `m`: the material.
 NormalGlintPoint normalGlintPoint(vec3 mapped, MaterialData m) {
-  return NormalGlintPoint(normalize(mapped), m.glints.x, m.glints.y);
+  return NormalGlintPoint(normalize(mapped), normalMapGlintsIntrinsicRoughness(m), normalMapGlintsMaskingAlpha(m));
 }
 
 // P(s | u): the isotropic 2D Gaussian of the projected normal.

@@ -1,0 +1,42 @@
+// Material kind `glinty`: the procedural, discrete Beckmann microsurface of Chermain et al. 2020
+// and 2021, whose limit at large footprints is the Beckmann NDF of slope deviations sigma and
+// correlation rho; shaders/materials/glinty.glsl.
+#include <cmath>
+
+#include "scene/materials/material.hpp"
+#include "scene/toml_reader.hpp"
+
+namespace glintlab {
+
+MaterialKind glinty_material_kind() {
+  return {
+      .id = "glinty",
+      .title = "Glinty (Chermain et al.'s procedural discrete microfacets)",
+      .citation = "X. Chermain, B. Sauvage, J.-M. Dischler, C. Dachsbacher, Procedural Physically based BRDF for "
+                  "Real-Time Rendering of Glints, Pacific Graphics 2020; X. Chermain, S. Lucas, B. Sauvage, "
+                  "J.-M. Dischler, C. Dachsbacher, Real-Time Geometric Glint Anti-Aliasing with Normal Map Filtering, "
+                  "I3D 2021",
+      .summary = "A Beckmann microsurface given by its slope deviations `sigma` (alpha = sqrt(2) sigma) and "
+                 "correlation `rho`, made of discrete microfacets: a patch-SDF of multiscale slope marginals (the "
+                 "glint dictionary) over a grid of cells, e^log_density facets per unit of uv area. Methods that do "
+                 "not know the kind shade its smooth limit, the Beckmann lobe of sigma and rho.",
+      .params = {{"log_density", 20.0f, 0.0, 60.0, "ln of the number of microfacets per unit of uv area"},
+                 {"relative_area", 1.0f, 0.0, 1.0, "fraction of the surface's cells that hold microfacets"},
+                 {"max_anisotropy", 4.0f, 1.0, 64.0,
+                  "clamp of the pixel footprint ellipse's eccentricity (Chermain et al. 2021's default)"}},
+      .parse_lobe =
+          [](TomlReader& r, Material& m) {
+            for (const char* key : {"alpha", "ndf"})
+              if (r.has(key))
+                r.fail(key, "is not a key of a glinty material; it has sigma (alpha = sqrt(2) sigma) and a Beckmann NDF");
+            m.ndf = Ndf::Beckmann;
+            m.alpha = std::sqrt(2.0f) * r.get_vec2("sigma", glm::vec2(0.1f), 0.005, 0.7);
+            m.rho = static_cast<float>(r.get_number("rho", 0.0, -0.99, 0.99));
+          },
+      .tables = {"glint-dictionary"},
+  };
+}
+
+GLINTLAB_REGISTER_MATERIAL_KIND(glinty_material_kind, 100);
+
+}  // namespace glintlab

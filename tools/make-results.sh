@@ -14,6 +14,30 @@ tools/install-deps.sh results
 cmake --preset release > /dev/null
 cmake --build build/release -j "$(nproc)" --target glintlab test_render > /dev/null
 B=build/release/glintlab
+glintlab_bin=$B
+constant_cost_args="64 2"
+# GLINTLAB_RESULTS_QUICK=1: sizes, samples and frames reduced (a check of this script and of its
+# replacement, tools/results.py, which applies the same rules; never numbers to commit).
+if [[ "${GLINTLAB_RESULTS_QUICK:-}" == 1 ]]; then
+  quick_glintlab() {
+    local args=() command=$1 frames_given=0 n
+    while [[ $# -gt 0 ]]; do
+      case $1 in
+        --spp) args+=(--spp $(($2 / 64 > 4 ? $2 / 64 : 4))); shift 2 ;;
+        --reference=*) n=${1#--reference=}; args+=(--reference=$((n / 64 > 4 ? n / 64 : 4))); shift ;;
+        --width | --height) args+=("$1" $(($2 / 4 > 16 ? $2 / 4 : 16))); shift 2 ;;
+        --frames) args+=(--frames $(($2 < 3 ? $2 : 3))); frames_given=1; shift 2 ;;
+        --bench-frames) args+=(--bench-frames $(($2 < 2 ? $2 : 2))); shift 2 ;;
+        --accuracy) args+=(--accuracy $(($2 < 1 ? $2 : 1))); shift 2 ;;
+        *) args+=("$1"); shift ;;
+      esac
+    done
+    if [[ $command == animate && $frames_given == 0 ]]; then args+=(--frames 3); fi
+    "$glintlab_bin" "${args[@]}"
+  }
+  B=quick_glintlab
+  constant_cost_args="16 1"
+fi
 out=out/results
 mkdir -p "$out" docs/images
 aa_scenes="spheres tubes bumpy-plane"

@@ -124,7 +124,8 @@ prefiltered_glints_section() {
   echo "\`tools/bench-constant-cost.sh build/release/glintlab 64 2\` on this machine (llvmpipe: times are"
   echo "CPU-rasteriser times; an NVIDIA H200's, at 512x512, are in docs/gpu-timings.md):"
   echo
-  tools/bench-constant-cost.sh "$B" 64 2
+  # shellcheck disable=SC2086
+  tools/bench-constant-cost.sh "$glintlab_bin" $constant_cost_args
   echo
   echo "Regenerate: \`tools/make-results.sh prefiltered-glints\`."
 }

@@ -4,7 +4,7 @@
 #                                       clang and its libFuzzer runtime: the fuzz targets, docs/fuzzing.md;
 #                                       GLFW and Dear ImGui: the viewer; xvfb: its test on a virtual display;
 #                                       chromium: the HTML report's test in a real browser)
-#        tools/install-deps.sh results  also what tools/make-results.sh uses (jq)
+#        tools/install-deps.sh results  also what the runs of tools/results.py use (jq: tools/bench-constant-cost.sh)
 # (as root, or with sudo available)
 set -euo pipefail
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates the README's pictures of the interactive tools:
 #   docs/images/viewer.png   `glintlab view` on a virtual display (Xvfb), driven by tools/viewer-readme.script
-#   docs/images/report.png   docs/report/index.html#run/spheres (tools/make-results.sh writes it) in headless chromium
+#   docs/images/report.png   docs/report/index.html#run/spheres (tools/results.py writes it) in headless chromium
 # Usage: tools/screenshots.sh   (installs what it uses, builds glintlab)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -23,5 +23,5 @@ if [[ -f docs/report/index.html ]]; then
     "file://$PWD/docs/report/index.html#run/spheres" 2>/dev/null
   echo "written docs/images/report.png"
 else
-  echo "docs/report/index.html missing: run tools/make-results.sh first for docs/images/report.png" >&2
+  echo "docs/report/index.html missing: run tools/results.py first for docs/images/report.png" >&2
 fi

@@ -29,13 +29,19 @@ void add_common(CLI::App* cmd, CommonOptions& o, bool many_methods) {
   cmd->add_option("--scene", o.scene, "scene file (.toml) or builtin:NAME (see 'glintlab scenes')")
       ->default_str(kDefaultScene);
   if (many_methods) {
-    cmd->add_option("--methods,--method", o.methods, "comma-separated method ids, or 'all' (see 'glintlab methods')")
+    cmd->add_option("--methods,--method", o.methods,
+                    "comma-separated method ids, variants id{name=value,...} (a name of its own in every output), "
+                    "or 'all' (see 'glintlab methods')")
         ->default_str("all");
     o.methods = "all";
   } else {
-    cmd->add_option("--method,--methods", o.methods, "method id (see 'glintlab methods')")->default_str("conventional");
+    cmd->add_option("--method,--methods", o.methods,
+                    "method id, or a variant id{name=value,...} (see 'glintlab methods')")
+        ->default_str("conventional");
   }
-  cmd->add_option("--param", o.params, "set a method parameter: name=value or method.name=value (repeatable)");
+  cmd->add_option("--param", o.params,
+                  "set a method parameter: name=value or method.name=value (repeatable; the last one wins, and a "
+                  "variant's own settings win over it)");
   cmd->add_option("--spp", o.spp_text,
                   "reference samples per pixel (1 .. 65536; 4 k^2 gives four passes of k x k), or auto: "
                   "add passes until the reference's noise is below --noise-fraction of the differences ranked")
@@ -143,7 +149,7 @@ int render_command(const CommonOptions& o, const std::string& reference_arg, boo
   const auto methods = resolve_methods(o.methods, o.params);
   if (methods.size() != 1) throw InputError("render: --method takes one method; use 'compare' for several");
   // Every output path is checked before the first frame is rendered.
-  const std::string name = reference_given ? "reference" : methods[0].method->id;
+  const std::string name = reference_given ? "reference" : methods[0].file_stem();
   const FrameOutput target = o.out.empty() ? FrameOutput{default_out("render", o), name} : frame_output(o.out, name);
   const std::filesystem::path& dir = target.dir;
   const std::string& stem = target.stem;

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -77,7 +78,7 @@ AnimateResult run_animate(Session& session, const std::vector<MethodChoice>& met
     write_png(staging / "reference" / name, tonemap_for_display(reference.total, film.exposure, film.bloom));
     for (std::size_t i = 0; i < methods.size(); ++i) {
       accumulators[i].add_frame(rendered[i].total, reference.total);
-      write_png(staging / methods[i].method->id / name,
+      write_png(staging / methods[i].file_stem() / name,
                 tonemap_for_display(rendered[i].total, film.exposure, film.bloom));
     }
   }
@@ -96,9 +97,10 @@ AnimateResult run_animate(Session& session, const std::vector<MethodChoice>& met
   json["flicker_definition"] = "mean over pixels, RGB channels and frames t>=1 of |(m_t - r_t) - (m_{t-1} - r_{t-1})|";
   std::vector<TemporalMetrics> results;
   for (std::size_t i = 0; i < methods.size(); ++i) {
-    const auto& r = results.emplace_back(accumulators[i].result(methods[i].method->id));
+    const auto& r = results.emplace_back(accumulators[i].result(methods[i].display_name()));
     json["methods"].push_back(
         {{"method", r.method},
+         {"file", methods[i].file_stem()},  // <file>.mp4, or the folder frames-<file>
          {"mean_rmse", r.mean_rmse},
          {"flicker", r.flicker},
          {"rmse_per_frame", r.rmse_per_frame},
@@ -107,7 +109,7 @@ AnimateResult run_animate(Session& session, const std::vector<MethodChoice>& met
   // Publish: MP4s when ffmpeg is there, otherwise the PNG frames themselves.
   const bool ffmpeg = have_ffmpeg();
   std::vector<std::string> streams{"reference"};
-  for (const auto& m : methods) streams.push_back(m.method->id);
+  for (const auto& m : methods) streams.push_back(m.file_stem());
   for (const auto& s : streams) {
     if (ffmpeg && encode_mp4(staging / s, out / (s + ".mp4"))) continue;
     const auto target = out / ("frames-" + s);
@@ -118,11 +120,14 @@ AnimateResult run_animate(Session& session, const std::vector<MethodChoice>& met
   json["video"] = ffmpeg ? "mp4" : "png frames (ffmpeg not installed)";
   write_text_file(out / "metrics.json", json.dump(2) + "\n");
 
-  std::printf("scene %s, %d frames, %dx%d, reference %d..%d spp\n%-22s %12s %12s\n", session.scene().source.c_str(),
-              frames, session.width(), session.height(), reference_floor.spp_min, reference_floor.spp_max, "method",
-              "mean_rmse", "flicker");
-  for (const auto& r : results) std::printf("%-22s %12.6f %12.6f\n", r.method.c_str(), r.mean_rmse, r.flicker);
-  std::printf("%-22s %12.6f %12.6f\n", "(reference floor)", reference_floor.noise_rmse, reference_floor.flicker);
+  // The name column: 22 wide, wider for a longer name (a variant's).
+  int width = 22;
+  for (const auto& r : results) width = std::max(width, static_cast<int>(r.method.size()));
+  std::printf("scene %s, %d frames, %dx%d, reference %d..%d spp\n%-*s %12s %12s\n", session.scene().source.c_str(),
+              frames, session.width(), session.height(), reference_floor.spp_min, reference_floor.spp_max, width,
+              "method", "mean_rmse", "flicker");
+  for (const auto& r : results) std::printf("%-*s %12.6f %12.6f\n", width, r.method.c_str(), r.mean_rmse, r.flicker);
+  std::printf("%-*s %12.6f %12.6f\n", width, "(reference floor)", reference_floor.noise_rmse, reference_floor.flicker);
   std::printf("written to %s/\n", out.string().c_str());
   return {results, reference_floor};
 }

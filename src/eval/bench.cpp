@@ -46,7 +46,8 @@ std::vector<BenchResult> run_bench(Session& session, const std::vector<MethodCho
     }
   std::vector<BenchResult> results;
   for (std::size_t k = 0; k < count; ++k)
-    results.push_back({k < methods.size() ? methods[k].method->id : kUnshaded, median(gpu[k]), median(wall[k]), frames});
+    results.push_back(
+        {k < methods.size() ? methods[k].display_name() : kUnshaded, median(gpu[k]), median(wall[k]), frames});
   nlohmann::json json = run_metadata(session);
   json["frames"] = frames;
   json["warmup"] = warmup;

@@ -15,6 +15,11 @@ namespace glintlab {
 
 namespace {
 
+/// A CSV field: quoted when it holds a comma (a variant's name, "podee{area=lens,glossy=off}").
+std::string csv_field(const std::string& text) {
+  return text.find(',') == std::string::npos ? text : "\"" + text + "\"";
+}
+
 struct Region {
   int x, y, size;
   double error;
@@ -67,17 +72,20 @@ void paste_crop(Image& strip, int column, const Image& display, const Region& r,
 
 std::string format_table(const std::vector<MethodMetrics>& rows, const ReferenceFrame& reference) {
   std::ostringstream s;
-  char line[256];
-  std::snprintf(line, sizeof line, "%-22s %10s %10s %8s %9s %9s %9s\n", "method", "rmse", "rmse_spec", "psnr",
+  // The name column: 22 wide, wider for a longer name (a variant's).
+  int width = 22;
+  for (const auto& r : rows) width = std::max(width, static_cast<int>(r.method.size()));
+  char line[512];
+  std::snprintf(line, sizeof line, "%-*s %10s %10s %8s %9s %9s %9s\n", width, "method", "rmse", "rmse_spec", "psnr",
                 "energy", "e_spec", "max_err");
   s << line;
   for (const auto& r : rows) {
     const auto& m = r.metrics;
-    std::snprintf(line, sizeof line, "%-22s %10.5f %10.5f %8.2f %9.4f %9.4f %9.3f\n", r.method.c_str(), m.rmse,
+    std::snprintf(line, sizeof line, "%-*s %10.5f %10.5f %8.2f %9.4f %9.4f %9.3f\n", width, r.method.c_str(), m.rmse,
                   m.rmse_specular, m.psnr, m.energy_ratio, m.energy_ratio_specular, m.max_error);
     s << line;
   }
-  std::snprintf(line, sizeof line, "%-22s %10.5f %10s %8s  +-%.4f  +-%.4f\n", "(reference noise)",
+  std::snprintf(line, sizeof line, "%-*s %10.5f %10s %8s  +-%.4f  +-%.4f\n", width, "(reference noise)",
                 reference.noise_rmse(), "", "", reference.relative_energy_error(),
                 reference.relative_energy_error(true));
   s << line;
@@ -103,7 +111,8 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
   Image error_sum(session.width(), session.height());
   float error_scale = 0.0f;
   for (std::size_t i = 0; i < methods.size(); ++i) {
-    rows.push_back({methods[i].method->id, measure(frames[i].total, frames[i].specular, reference.total, reference.specular)});
+    rows.push_back(
+        {methods[i].display_name(), measure(frames[i].total, frames[i].specular, reference.total, reference.specular)});
     const Image error = abs_error_map(frames[i].total, reference.total);
     for (std::size_t p = 0; p < error.pixel_count(); ++p) error_sum.pixels()[p] += error.pixels()[p];
     // One colour scale for all maps (the largest 99.5th percentile) so they compare at a glance.
@@ -129,8 +138,8 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
   write_reference(staged, "reference", reference_estimate, film);
   add_crops(0, tonemap_for_display(reference.total, film.exposure, film.bloom));
   for (std::size_t i = 0; i < methods.size(); ++i) {
-    write_frame(staged, methods[i].method->id, frames[i], film);
-    write_png(staged / (methods[i].method->id + "-error.png"),
+    write_frame(staged, methods[i].file_stem(), frames[i], film);
+    write_png(staged / (methods[i].file_stem() + "-error.png"),
               false_colour(abs_error_map(frames[i].total, reference.total), error_scale));
     add_crops(static_cast<int>(i) + 1, tonemap_for_display(frames[i].total, film.exposure, film.bloom));
   }
@@ -171,14 +180,16 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
   json["error_map_scale"] = error_scale;
   json["crops"] = crops;
   json["columns"] = "crops: reference, then methods in order";
-  for (const auto& row : rows) {
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const MethodMetrics& row = rows[i];
     const auto& m = row.metrics;
-    char line[256];
-    std::snprintf(line, sizeof line, "%s,%.8g,%.8g,%.6g,%.8g,%.8g,%.8g,%.6g,%.6g,%.6g\n", row.method.c_str(), m.rmse,
-                  m.rmse_specular, m.psnr, m.energy_ratio, m.energy_ratio_specular, m.max_error, noise,
+    char line[512];
+    std::snprintf(line, sizeof line, "%s,%.8g,%.8g,%.6g,%.8g,%.8g,%.8g,%.6g,%.6g,%.6g\n", csv_field(row.method).c_str(),
+                  m.rmse, m.rmse_specular, m.psnr, m.energy_ratio, m.energy_ratio_specular, m.max_error, noise,
                   m.energy_ratio * energy_error, m.energy_ratio_specular * energy_error_specular);
     csv << line;
     json["methods"].push_back({{"method", row.method},
+                               {"file", methods[i].file_stem()},  // <file>.png, <file>-error.png
                                {"rmse", m.rmse},
                                {"rmse_specular", m.rmse_specular},
                                {"psnr", m.psnr},

@@ -83,8 +83,8 @@ json compare_data(const CompareRun& c, const std::string& assets) {
                              {"energy_ratio_specular_error", r.energy_ratio_specular_error},
                              {"max_error", r.max_error}});
     images["methods"].push_back({{"method", r.method},
-                                 {"image", assets + "/" + r.method + ".png"},
-                                 {"error", assets + "/" + r.method + "-error.png"}});
+                                 {"image", assets + "/" + r.file + ".png"},
+                                 {"error", assets + "/" + r.file + "-error.png"}});
     columns.push_back(r.method);
   }
   json regions = json::array();
@@ -124,7 +124,7 @@ json animate_data(const AnimateRun& a, const std::string& assets) {
     flicker_of_each_frame &= r.flicker_per_frame.size() + 1 == static_cast<std::size_t>(a.frames);
   }
   json videos = json::array();
-  for (const auto& v : a.videos) videos.push_back({{"name", v}, {"src", assets + "/" + v + ".mp4"}});
+  for (const auto& v : a.videos) videos.push_back({{"name", v.name}, {"src", assets + "/" + v.file + ".mp4"}});
   json plots = {line_plot_svg("RMSE of each frame against the reference", "RMSE", series,
                               {{"reference noise RMSE", a.reference_noise_rmse}})};
   // Outputs of animate before it wrote each frame's flicker have the mean alone.

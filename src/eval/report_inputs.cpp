@@ -61,14 +61,15 @@ class Field {
     if (!value_.is_string()) fail(key_, "is " + shown(), "a string");
     return value_.get<std::string>();
   }
-  /// A method id or a file name: used as a path inside the run's directory, so nothing that leaves it.
+  /// A method's file name or a file name: used as a path inside the run's directory, so nothing that
+  /// leaves it ('=' for variants: "podee.area=lens").
   [[nodiscard]] std::string file_name() const {
     const std::string name = text();
     const bool plain = !name.empty() && name[0] != '.' && std::all_of(name.begin(), name.end(), [](unsigned char c) {
-      return std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '+';
+      return std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '+' || c == '=';
     });
     if (!plain)
-      fail(key_, "is " + shown(), "a plain name of letters, digits, '-', '_', '.', '+' (not starting with '.')");
+      fail(key_, "is " + shown(), "a plain name of letters, digits, '-', '_', '.', '+', '=' (not starting with '.')");
     return name;
   }
   [[nodiscard]] const fs::path& file() const { return file_; }
@@ -124,6 +125,11 @@ std::vector<std::pair<std::string, std::string>> facts_of(const json& j) {
   return facts;
 }
 
+/// The file name of a method's images or video: its "file" (since variants), else its name.
+std::string method_file(const Field& method) {
+  return method.has("file") ? method["file"].file_name() : method["method"].file_name();
+}
+
 void require_file(const fs::path& file, const Field& from) {
   std::error_code ec;
   if (!fs::is_regular_file(file, ec))
@@ -137,7 +143,8 @@ CompareRun read_compare(const Field& root, const fs::path& dir) {
   run.error_map_scale = root["error_map_scale"].number();
   for (const Field& m : root["methods"].some_elements()) {
     CompareRow& r = run.rows.emplace_back();
-    r.method = m["method"].file_name();
+    r.method = m["method"].text();
+    r.file = method_file(m);
     r.rmse = m["rmse"].number();
     r.rmse_specular = m["rmse_specular"].number();
     r.psnr = m["psnr"].number();
@@ -176,20 +183,21 @@ AnimateRun read_animate(const Field& root, const fs::path& dir) {
   run.frames = root["frames"].integer(1);
   run.reference_noise_rmse = root["reference_noise_rmse"].number();
   run.flicker_floor = root["flicker_floor"].number();
-  std::vector<std::string> streams{"reference"};
+  std::vector<AnimateRun::Video> streams{{"reference", "reference"}};
   for (const Field& m : root["methods"].some_elements()) {
     AnimateRow& r = run.rows.emplace_back();
-    r.method = m["method"].file_name();
+    r.method = m["method"].text();
+    r.file = method_file(m);
     r.mean_rmse = m["mean_rmse"].number();
     r.flicker = m["flicker"].number();
     for (const Field& v : m["rmse_per_frame"].elements()) r.rmse_per_frame.push_back(v.number());
     if (m.has("flicker_per_frame"))
       for (const Field& v : m["flicker_per_frame"].elements()) r.flicker_per_frame.push_back(v.number());
-    streams.push_back(r.method);
+    streams.push_back({r.method, r.file});
   }
   std::error_code ec;
   for (const auto& s : streams)
-    if (fs::is_regular_file(dir / (s + ".mp4"), ec)) run.videos.push_back(s);
+    if (fs::is_regular_file(dir / (s.file + ".mp4"), ec)) run.videos.push_back(s);
   return run;
 }
 
@@ -326,12 +334,12 @@ std::vector<std::string> report_assets(const ReportRun& run) {
   if (const auto* c = std::get_if<CompareRun>(&run.data)) {
     files.push_back("reference.png");
     for (const auto& r : c->rows) {
-      files.push_back(r.method + ".png");
-      files.push_back(r.method + "-error.png");
+      files.push_back(r.file + ".png");
+      files.push_back(r.file + "-error.png");
     }
     for (const auto& w : c->regions) files.push_back(w.file);
   } else if (const auto* a = std::get_if<AnimateRun>(&run.data)) {
-    for (const auto& v : a->videos) files.push_back(v + ".mp4");
+    for (const auto& v : a->videos) files.push_back(v.file + ".mp4");
   }
   return files;
 }

@@ -12,7 +12,8 @@
 namespace glintlab {
 
 struct CompareRow {
-  std::string method;
+  std::string method;  ///< display name: an id or a variant's name, "podee{area=lens}"
+  std::string file;    ///< its images: <file>.png, <file>-error.png
   double rmse = 0, rmse_specular = 0, psnr = 0, max_error = 0;
   double energy_ratio = 0, energy_ratio_error = 0;
   double energy_ratio_specular = 0, energy_ratio_specular_error = 0;
@@ -34,7 +35,8 @@ struct CompareRun {
 };
 
 struct AnimateRow {
-  std::string method;
+  std::string method;  ///< display name
+  std::string file;    ///< its video: <file>.mp4
   double mean_rmse = 0, flicker = 0;
   std::vector<double> rmse_per_frame;
   std::vector<double> flicker_per_frame;  ///< frames 1 .. frames - 1; empty in outputs older than it
@@ -47,7 +49,11 @@ struct AnimateRun {
   double flicker_floor = 0;
   /// The MP4 of each stream ("reference", then the methods) that exists; others have none (animate
   /// writes PNG frames instead when ffmpeg is missing or fails).
-  std::vector<std::string> videos;
+  struct Video {
+    std::string name;  ///< "reference" or the method's display name
+    std::string file;  ///< <file>.mp4
+  };
+  std::vector<Video> videos;
 };
 
 struct BenchRow {

@@ -13,40 +13,6 @@
 
 namespace glintlab {
 
-std::vector<MethodChoice> resolve_methods(const std::string& methods, const std::vector<std::string>& params) {
-  std::vector<MethodChoice> choices;
-  for (const MethodDescriptor* m : parse_method_list(methods)) choices.push_back({m, {}});
-  std::vector<std::map<std::string, std::string>> overrides(choices.size());
-  for (const auto& p : params) {
-    const auto eq = p.find('=');
-    if (eq == std::string::npos || eq == 0)
-      throw InputError("--param '" + p + "': expected name=value or method.name=value");
-    std::string name = p.substr(0, eq);
-    const std::string value = p.substr(eq + 1);
-    std::string only;
-    if (const auto dot = name.find('.'); dot != std::string::npos) {
-      only = name.substr(0, dot);
-      name = name.substr(dot + 1);
-      find_method(only);  // unknown method ids are an error
-    }
-    bool used = false;
-    for (std::size_t i = 0; i < choices.size(); ++i) {
-      const auto& m = *choices[i].method;
-      if ((!only.empty() && m.id != only) || (only.empty() && !m.find_param(name) && choices.size() > 1)) continue;
-      overrides[i][name] = value;  // resolve_params reports unknown names and bad values
-      used = true;
-    }
-    if (!used) {
-      std::string known;
-      for (const auto& c : choices)
-        for (const auto& q : c.method->params) known += (known.empty() ? "" : ", ") + c.method->id + "." + q.name;
-      throw InputError("--param '" + p + "': no selected method has this parameter; allowed: " + (known.empty() ? "none" : known));
-    }
-  }
-  for (std::size_t i = 0; i < choices.size(); ++i) choices[i].params = resolve_params(*choices[i].method, overrides[i]);
-  return choices;
-}
-
 double reference_noise_target(const Frame& reference, const std::vector<const Frame*>& ranked, double fraction) {
   std::vector<double> errors;
   for (const Frame* f : ranked) errors.push_back(rmse(f->total, reference.total));
@@ -127,7 +93,7 @@ Session::Session(const CommonOptions& options, std::optional<Workload> workload,
   reference_.spp = options_.spp_auto ? kProgressivePassSpp * 4 : options_.spp;
   reference_.light_samples = options_.light_samples;
   if (!workload)
-    workload = Workload{.methods = static_cast<int>(parse_method_list(options_.methods).size()), .reference = true,
+    workload = Workload{.methods = static_cast<int>(parse_method_variants(options_.methods).size()), .reference = true,
                         .outputs = true};
   workload->progressive = workload->reference && options_.spp_auto;
   if (const auto available = available_memory())
@@ -137,14 +103,15 @@ Session::Session(const CommonOptions& options, std::optional<Workload> workload,
   gpu_scene_ = std::make_unique<GpuScene>(
       scene_, TableCache(default_table_cache_directory(), terminal_table_observer(!options.quiet)));
   // The chosen methods' tables now, rather than inside their first (perhaps timed) frame.
-  for (const MethodDescriptor* m : parse_method_list(options_.methods)) gpu_scene_->require_tables(all_tables_of(*m));
+  for (const MethodVariant& m : parse_method_variants(options_.methods))
+    gpu_scene_->require_tables(all_tables_of(*m.method));
   renderer_ = std::make_unique<Renderer>(shaders_, *gpu_scene_);
   reference_backend_ = make_reference_backend(options.reference_backend, {shaders_, *gpu_scene_, *renderer_});
 }
 
 Frame Session::render(const MethodChoice& choice, int frame) {
   Frame f = renderer_->render(*choice.method, choice.params, camera(frame), width_, height_);
-  require_finite(f, "method '" + choice.method->id + "'");
+  require_finite(f, "method '" + choice.display_name() + "'");
   return f;
 }
 

@@ -11,6 +11,7 @@
 
 #include "gl/context.hpp"
 #include "eval/memory_budget.hpp"
+#include "eval/method_list.hpp"
 #include "gl/shader_library.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/reference_backend.hpp"
@@ -41,15 +42,6 @@ struct CommonOptions {
   std::string reference_filter = "box";  ///< --reference-filter: box or gaussian:S (PixelFilter::parse)
   bool quiet = false;
 };
-
-/// A method chosen on the command line with its resolved parameter values.
-struct MethodChoice {
-  const MethodDescriptor* method;
-  ParamValues params;
-};
-
-/// Resolves --methods and --param; throws InputError for unknown methods or parameters.
-std::vector<MethodChoice> resolve_methods(const std::string& methods, const std::vector<std::string>& params);
 
 class Session {
  public:

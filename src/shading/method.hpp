@@ -62,7 +62,9 @@ std::vector<std::string> required_tables(const MethodDescriptor& method, const P
 std::vector<std::string> all_tables_of(const MethodDescriptor& method);
 
 /// Defaults overridden by `overrides` ("name=value" strings already split). Throws InputError for
-/// an unknown parameter (listing the method's parameters) or a value out of range.
-ParamValues resolve_params(const MethodDescriptor& method, const std::map<std::string, std::string>& overrides);
+/// an unknown parameter (listing the method's parameters) or a value out of range; the message
+/// starts with `origin` and the name=value (a --methods variant passes its own).
+ParamValues resolve_params(const MethodDescriptor& method, const std::map<std::string, std::string>& overrides,
+                           const std::string& origin = "--param");
 
 }  // namespace glintlab

@@ -169,7 +169,8 @@ std::vector<const MethodDescriptor*> parse_method_list(const std::string& list) 
   return out;
 }
 
-ParamValues resolve_params(const MethodDescriptor& method, const std::map<std::string, std::string>& overrides) {
+ParamValues resolve_params(const MethodDescriptor& method, const std::map<std::string, std::string>& overrides,
+                           const std::string& origin) {
   ParamValues values;
   for (const auto& p : method.params) values[p.name] = p.default_value;
   for (const auto& [name, text] : overrides) {
@@ -177,7 +178,7 @@ ParamValues resolve_params(const MethodDescriptor& method, const std::map<std::s
     if (!p) {
       std::string known;
       for (const auto& q : method.params) known += (known.empty() ? "" : ", ") + q.name;
-      throw InputError("--param " + name + "=" + text + ": method '" + method.id + "' has no parameter '" + name +
+      throw InputError(origin + " " + name + "=" + text + ": method '" + method.id + "' has no parameter '" + name +
                        "'; allowed: " + (known.empty() ? "none" : known));
     }
     if (const auto it = std::find(p->choices.begin(), p->choices.end(), text); it != p->choices.end()) {
@@ -193,9 +194,10 @@ ParamValues resolve_params(const MethodDescriptor& method, const std::map<std::s
     }
     const std::string what = p->choices.empty() ? "not a number" : "not a choice";
     if (used != text.size() || text.empty() || !std::isfinite(v))
-      throw InputError("--param " + name + "=" + text + ": " + what + "; allowed: " + p->allowed());
+      throw InputError(origin + " " + name + "=" + text + ": " + what + "; allowed: " + p->allowed());
     if (v < p->min || v > p->max || (!p->choices.empty() && v != std::floor(v)))
-      throw InputError("--param " + name + "=" + text + ": out of range for '" + method.id + "'; allowed: " + p->allowed());
+      throw InputError(origin + " " + name + "=" + text + ": out of range for '" + method.id +
+                       "'; allowed: " + p->allowed());
     values[name] = v;
   }
   return values;

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "core/image_io.hpp"
@@ -99,6 +100,8 @@ TEST_F(Cli, BadInputClassesExitWith2AndWriteNothing) {
   expect_bad_input("animate --frames -3", {"--frames", "-3"});
   expect_bad_input("animate --frames 100001", {"--frames", "100001", "1 to 100000"});
   expect_bad_input("render --reference-backend nope", {"nope", "raster"});
+  expect_bad_input("compare --spp 4 --methods 'conventional,podee{area=square}'",
+                   {"'podee{area=square}'", "area=square", "exact|circle|lens"});
   for (const char* filter : {"gaussian:0", "gaussian:abc", "tent"})
     for (const char* command : {"render --reference=4", "compare --spp 4", "animate --spp 4 --frames 2"})
       expect_bad_input(std::string(command) + " --reference-filter " + filter,
@@ -155,6 +158,28 @@ TEST_F(Cli, SameCommandWritesIdenticalFiles) {
     EXPECT_EQ(read_bytes(a / f), read_bytes(b / f)) << f;
   }
   EXPECT_NE(read_bytes(a / "metrics.json").find("\"reference_filter\": \"gaussian:0.5\""), std::string::npos);
+}
+
+TEST_F(Cli, AVariantAndItsMethodShareOneRunAndDifferInItsParameter) {
+  // vlachos with its roughness floor's gain at the default and at 4, in one compare: one reference,
+  // two rows, each with files of its own (a uniform parameter: one program for both).
+  const fs::path out = scratch / "variants";
+  const CliResult r = run_glintlab("compare -q --spp 4 --methods 'vlachos,vlachos{scale=4}' --scene '" +
+                                   write("variants.toml", kScene).string() + "' -o '" + out.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto metrics = nlohmann::json::parse(read_bytes(out / "metrics.json"));
+  ASSERT_EQ(metrics["methods"].size(), 2u);
+  EXPECT_EQ(metrics["methods"][0]["file"], "vlachos");
+  EXPECT_EQ(metrics["methods"][1]["method"], "vlachos{scale=4}");
+  EXPECT_EQ(metrics["methods"][1]["file"], "vlachos.scale=4");
+  EXPECT_NE(read_bytes(out / "vlachos.scale=4.exr"), read_bytes(out / "vlachos.exr"))
+      << "the parameter changed nothing";
+  EXPECT_NE(metrics["methods"][0]["energy_ratio"], metrics["methods"][1]["energy_ratio"]);
+  EXPECT_NE(read_bytes(out / "metrics.csv").find("\nvlachos{scale=4},"), std::string::npos);
+  // The report shows the variant by its name, with its files.
+  const fs::path report = scratch / "report";
+  ASSERT_EQ(run_glintlab("report -o '" + report.string() + "' '" + out.string() + "'").code, 0);
+  EXPECT_TRUE(fs::is_regular_file(report / "assets" / "variants" / "vlachos.scale=4-error.png"));
 }
 
 TEST_F(Cli, ReferenceCacheIsReused) {

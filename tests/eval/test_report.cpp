@@ -192,7 +192,14 @@ TEST(Report, BadInputExitsTwoNamingTheFileAndKeyAndLeavesTheOldReport) {
   expect_refused(quoted(runs), {metrics.string(), "not valid JSON"});
   with_metrics([](nlohmann::json& j) { j["methods"][1].erase("rmse"); });
   expect_refused(quoted(runs), {metrics.string(), "'methods[1].rmse'", "missing"});
-  with_metrics([](nlohmann::json& j) { j["methods"][0]["method"] = "../../etc"; });
+  // A method's file name (a variant's "vlachos.scale=4") is a path inside the run's folder; outputs
+  // from before variants have none, and the method's name is its file name.
+  with_metrics([](nlohmann::json& j) { j["methods"][0]["file"] = "../../etc"; });
+  expect_refused(quoted(runs), {metrics.string(), "'methods[0].file'", "../../etc"});
+  with_metrics([](nlohmann::json& j) {
+    j["methods"][0].erase("file");
+    j["methods"][0]["method"] = "../../etc";
+  });
   expect_refused(quoted(runs), {metrics.string(), "'methods[0].method'", "../../etc"});
   with_metrics([](nlohmann::json& j) { j["crops"][0]["cell"] = 100; });
   expect_refused(quoted(runs), {(runs / "compare" / "worst-region-1.png").string(), "100 px"});

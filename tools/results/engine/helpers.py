@@ -1,0 +1,138 @@
+"""The names a template can call (docs/results-program.md lists them): measured values of runs by
+id, their standard output, formatting, the ranking notes and the pictures copied into docs/images."""
+
+import math
+import os
+
+from . import markdown
+from .errors import InputError
+from .numbers import plain_number, short
+from .template import render
+
+
+class Helpers:
+    def __init__(self, outputs, root, images_dir, images_link):
+        self.o = outputs          # engine.metrics.Outputs
+        self.root = root          # tools/results/
+        self.images_dir = images_dir  # where pictures go (docs/images)
+        self.images_link = images_link  # how docs/results.md links them ("images")
+        self.copies = []          # (source, target), made once every section has rendered
+
+    def names(self):
+        o = self.o
+        return {
+            # A run's top-level values, and its methods' (compare and animate: metrics.json; bench: bench.json).
+            "field": o.field, "metric": o.metric, "methods": o.methods,
+            "noise": lambda run: o.field(run, "reference_noise_rmse"),
+            "energy_error": lambda run: o.field(run, "reference_energy_error"),
+            "floor": lambda run: o.field(run, "flicker_floor"),
+            "rmse": lambda run, m: o.metric(run, m, "rmse"),
+            "energy": lambda run, m: o.metric(run, m, "energy_ratio"),
+            "mean_rmse": lambda run, m: o.metric(run, m, "mean_rmse"),
+            "flicker": lambda run, m: o.metric(run, m, "flicker"),
+            "ms": lambda run, m: o.metric(run, m, "wall_ms_median"),
+            "gpu_ms": lambda run, m: o.metric(run, m, "gpu_ms_median"),
+            "entries": lambda run: o.field(run, "methods"),
+            "prefilter": self.prefilter, "levels": self.levels, "mean_of": mean_of,
+            # What a run printed, and how long it took.
+            "stdout": lambda run: o.record(run)["stdout"], "seconds": lambda run: o.record(run)["seconds"],
+            "printed_table": self.printed_table, "lines": lines,
+            # Sentences and pictures.
+            "ranking_note": self.ranking_note, "gap_note": self.gap_note,
+            "thumbnails": self.thumbnails, "image": self.image,
+            **PURE,
+            # The machine.
+            "device": self.device, "cores": lambda: len(os.sched_getaffinity(0)),
+        }
+
+    def prefilter(self, run):
+        """The report of the first material of a prefilter run."""
+        return self.o.metrics(run)[0]
+
+    def levels(self, run):
+        """A prefilter run's levels, each with its 'level' index and its 'accuracy' entry (None if
+        the run measured none)."""
+        p = self.prefilter(run)
+        accuracy = p.get("accuracy") or []
+        return [dict(v, level=i, accuracy=accuracy[i] if i < len(accuracy) else None)
+                for i, v in enumerate(p["levels"])]
+
+    def printed_table(self, run):
+        """What compare or animate printed, without its last line ("written to DIR/") and the line
+        break before it."""
+        return "\n".join(self.o.record(run)["stdout"].splitlines()[:-1])
+
+    def device(self):
+        """The GL renderer `glintlab info` names (the run 'info' of results.toml)."""
+        for line in self.o.record("info")["stdout"].splitlines():
+            if line.startswith("renderer:"):
+                return line[len("renderer:"):].strip()
+        raise InputError("run 'info' printed no 'renderer:' line")
+
+    def _partial(self, name, **values):
+        path = self.root / "templates" / "partials" / name
+        text = render(path.read_text(), dict(self.names(), **values), f"tools/results/templates/partials/{name}")
+        return text.rstrip("\n")
+
+    def ranking_note(self, run):
+        """Which differences a compare run can rank: the best method, and whether its lead over the
+        next is larger than twice the reference's noise RMSE."""
+        ranked = sorted(self.o.field(run, "methods"), key=lambda e: e["rmse"])  # stable: ties keep their order
+        if len(ranked) < 2:
+            return ""
+        noise = self.o.field(run, "reference_noise_rmse")
+        return self._partial("ranking-note.md", best=ranked[0], second=ranked[1], noise=noise,
+                             ranks=ranked[1]["rmse"] - ranked[0]["rmse"] > 2 * noise)
+
+    def gap_note(self, label_a, run_a, method_a, label_b, run_b, method_b):
+        """Whether two RMSEs against the same reference rank (the noise is run_a's)."""
+        a, b = self.o.metric(run_a, method_a, "rmse"), self.o.metric(run_b, method_b, "rmse")
+        noise = self.o.field(run_a, "reference_noise_rmse")
+        gap = abs(a - b)
+        return self._partial("gap-note.md", label_a=label_a, a=a, label_b=label_b, b=b, gap=gap, noise=noise,
+                             ranks=gap > 2 * noise)
+
+    def image(self, run, method, name):
+        """Copies a method's picture of a compare run (method 'reference': the reference's) to
+        docs/images/NAME.png; the link to it."""
+        file = "reference" if method == "reference" else self.o.file_of(run, method)
+        source = self.o.out_dir / run / f"{file}.png"
+        self.copies.append((source, self.images_dir / f"{name}.png"))
+        return f"{self.images_link}/{name}.png"
+
+    def thumbnails(self, prefix, run, methods):
+        """A row of pictures: the reference, then `methods`, of a compare run, copied to
+        docs/images/PREFIX-reference.png and PREFIX-FILE.png (FILE: the method's file name)."""
+        header, row = ["reference"], [f"![]({self.image(run, 'reference', prefix + '-reference')})"]
+        for m in methods:
+            header.append(m)
+            row.append(f"![]({self.image(run, m, prefix + '-' + self.o.file_of(run, m))})")
+        return markdown.table(header, [row])
+
+
+def settings(name):
+    """A variant's settings, "area=lens" of "podee{area=lens}" ('' for a method's id)."""
+    return name[name.index("{") + 1:-1] if name.endswith("}") else ""
+
+
+def lines(text, containing):
+    """The lines of `text` that contain `containing` (as grep prints them); at least one."""
+    found = [line for line in text.splitlines() if containing in line]
+    if not found:
+        raise InputError(f"no line contains '{containing}'")
+    return "\n".join(found)
+
+
+def mean_of(entries, key):
+    """The mean of `key` over a list of tables (a prefilter run's accuracy entries)."""
+    values = [e[key] for e in entries]
+    return sum(values) / len(values)
+
+
+# What needs no run: experiment files and scene templates see these too.
+PURE = {
+    "short": short, "plain": plain_number, "sin": math.sin, "cos": math.cos, "sqrt": math.sqrt,
+    "radians": math.radians, "pi": math.pi, "abs": abs, "min": min, "max": max, "len": len, "str": str,
+    "float": float, "int": int, "settings": settings,
+    "joined": lambda names: ",".join(names),  # a list of methods as --methods takes it
+}

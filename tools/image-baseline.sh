@@ -9,7 +9,8 @@
 #
 # GLINTLAB defaults to build/release/glintlab. Record with the commit before the change (copy its
 # binary aside), check with the one after. IMAGE_BASELINE_ONLY='a|b|c' renders only the runs of
-# those names (an extended regex of whole names; the check then compares those). About an hour on 2 cores with an empty shader cache.
+# those names (an extended regex of whole names; the check then compares those). About an hour
+# on 2 cores with an empty shader cache.
 set -euo pipefail
 
 mode=${1:?usage: tools/image-baseline.sh record|check DIR [GLINTLAB]}

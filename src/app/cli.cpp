@@ -9,6 +9,7 @@
 #include "eval/commands.hpp"
 #include "eval/outputs.hpp"
 #include "eval/prefilter_report.hpp"
+#include "prefilter/prefilter_params.hpp"
 #include "eval/progress.hpp"
 #include "eval/report.hpp"
 #include "eval/session.hpp"

@@ -71,6 +71,7 @@ MemoryEstimate estimate_run_memory(const Workload& workload, int width, int heig
     e.scene += shape.mesh->positions.size() * kVertexUpload + shape.mesh->indices.size() * kIndexUpload;
   for (const auto& m : scene.materials)  // GpuScene uploads a map once per material that has it
     if (m.normal_map) e.scene += m.normal_map->normals.size() * kNormalMapTexelUpload;
+  e.scene += workload.resources;
   e.fixed = kFixed;
   return e;
 }
@@ -108,7 +109,7 @@ void require_memory(const MemoryEstimate& need, const Workload& workload, int wi
   s << "film " << width << "x" << height << " with " << workload.methods << (workload.methods == 1 ? " method" : " methods")
     << (workload.reference ? " and a reference" : "") << " needs ~" << format_bytes(need.total())
     << " of memory (" << format_bytes(need.film) << " for the film at " << need.per_pixel << " bytes a pixel, "
-    << format_bytes(need.scene) << " to upload the scene's meshes and normal maps, " << format_bytes(need.fixed)
+    << format_bytes(need.scene) << " to upload the scene's meshes, normal maps and resources, " << format_bytes(need.fixed)
     << " for the driver and tables); available: " << format_bytes(available)
     << "; lower --width/--height, the method count, or the scene's mesh and normal-map resolutions"
     << " (GLINTLAB_MEMORY_MIB sets what may be used)";

@@ -17,12 +17,13 @@ struct Workload {
   bool progressive = false;  ///< --spp auto: the accumulator and a result side by side
   bool outputs = false;      ///< images, error maps and crops written (compare, animate)
   int kept_images = 0;       ///< Images kept from frame to frame (animate: each method's last error)
+  std::uint64_t resources = 0;  ///< the resources its scene's kinds and methods read (estimate_resource_bytes)
 };
 
 struct MemoryEstimate {
   std::uint64_t per_pixel = 0;    ///< bytes per film pixel at the peak
   std::uint64_t film = 0;         ///< per_pixel * pixels
-  std::uint64_t scene = 0;        ///< meshes and normal maps, on the host and uploaded
+  std::uint64_t scene = 0;        ///< meshes, normal maps and resources, on the host and uploaded
   std::uint64_t fixed = 0;        ///< the driver, programs, tables and reference tiles
   [[nodiscard]] std::uint64_t total() const { return film + scene + fixed; }
 };

@@ -1,5 +1,6 @@
 #include "eval/session.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <limits>
@@ -61,6 +62,21 @@ Scene load_scene_showing_progress(const std::string& spec, bool show_progress) {
   return load_scene(spec);
 }
 
+/// The estimated bytes of what the scene's kinds and the methods read (src/render/resources/),
+/// before anything is made.
+std::uint64_t resource_bytes(const Scene& scene, const std::vector<MethodChoice>& methods) {
+  const TableCache no_cache{std::filesystem::path()};
+  std::vector<std::string> ids = scene_resources(scene);
+  std::uint64_t bytes = estimate_resource_bytes(ids, {scene, GpuScene::no_params(), no_cache});
+  for (const MethodChoice& m : methods) {
+    std::vector<std::string> own;
+    for (const std::string& id : method_resources(*m.method, m.params))
+      if (std::find(ids.begin(), ids.end(), id) == ids.end()) own.push_back(id);
+    bytes += estimate_resource_bytes(own, {scene, m.params, no_cache});
+  }
+  return bytes;
+}
+
 }  // namespace
 
 Session::Session(const CommonOptions& options, std::optional<Workload> workload, const ContextFactory& make_context)
@@ -96,6 +112,7 @@ Session::Session(const CommonOptions& options, std::optional<Workload> workload,
     workload = Workload{.methods = static_cast<int>(parse_method_variants(options_.methods).size()), .reference = true,
                         .outputs = true};
   workload->progressive = workload->reference && options_.spp_auto;
+  workload->resources = resource_bytes(scene_, resolve_methods(options_.methods, options_.params));
   if (const auto available = available_memory())
     require_memory(estimate_run_memory(*workload, width_, height_, scene_), *workload, width_, height_, *available);
   context_ = make_context();
@@ -103,8 +120,11 @@ Session::Session(const CommonOptions& options, std::optional<Workload> workload,
   gpu_scene_ = std::make_unique<GpuScene>(
       scene_, TableCache(default_table_cache_directory(), terminal_table_observer(!options.quiet)));
   // The chosen methods' tables now, rather than inside their first (perhaps timed) frame.
-  for (const MethodVariant& m : parse_method_variants(options_.methods))
-    gpu_scene_->require_tables(all_tables_of(*m.method));
+  for (const MethodVariant& m : parse_method_variants(options_.methods)) {
+    std::vector<std::string> tables;
+    for (const std::string& t : all_tables_of(*m.method)) tables.push_back(table_resource_id(t));
+    gpu_scene_->resources().require(tables, gpu_scene_->resource_context());
+  }
   renderer_ = std::make_unique<Renderer>(shaders_, *gpu_scene_);
   reference_backend_ = make_reference_backend(options.reference_backend, {shaders_, *gpu_scene_, *renderer_});
 }

@@ -42,20 +42,6 @@ std::string PrefilterSettings::describe() const {
   return s.str();
 }
 
-PrefilterSettings prefilter_settings_from(const std::map<std::string, float>& params) {
-  PrefilterSettings s;
-  auto read = [&](const char* name, int& field) {
-    if (auto it = params.find(name); it != params.end()) field = static_cast<int>(std::lround(it->second));
-  };
-  read("rank", s.cp.rank);
-  read("ndf_resolution", s.ndf_resolution);
-  read("block_size", s.block_size);
-  read("base_footprints", s.base_footprints);
-  read("group_footprints", s.group_footprints);
-  read("elements_per_texel", s.elements_per_texel);
-  return s;
-}
-
 void PrefilterSettings::validate() const {
   auto need = [](bool ok, const std::string& name, double value, const std::string& allowed) {
     if (!ok) {
@@ -74,6 +60,30 @@ void PrefilterSettings::validate() const {
   need(max_levels >= 1 && max_levels <= 16, "max_levels", max_levels, "1 .. 16");
   need(empty_block_mass >= 0 && empty_block_mass < 1, "empty_block_mass", empty_block_mass, "0 .. 1");
   cp.validate();
+}
+
+std::uint64_t prefiltered_ndf_bytes_bound(const PrefilterSettings& settings, int width, int height) {
+  const std::uint64_t blocks = static_cast<std::uint64_t>(settings.ndf_resolution / settings.block_size) *
+                               static_cast<std::uint64_t>(settings.ndf_resolution / settings.block_size);
+  const std::uint64_t rank = static_cast<std::uint64_t>(settings.cp.rank);
+  const std::uint64_t b = static_cast<std::uint64_t>(settings.block_size);
+  std::uint64_t nx = static_cast<std::uint64_t>(std::min(width, settings.base_footprints));
+  std::uint64_t ny = static_cast<std::uint64_t>(std::min(height, settings.base_footprints));
+  std::uint64_t bytes = 4 * 12;  // the header's words (src/prefilter/prefiltered_ndf_layout.hpp)
+  for (int level = 0; level < settings.max_levels; ++level) {
+    bytes += 4 * 8;  // the level's words
+    const std::uint64_t footprints = nx * ny;
+    const std::uint64_t g = static_cast<std::uint64_t>(settings.group_footprints);
+    const std::uint64_t groups = ((nx + g - 1) / g) * ((ny + g - 1) / g);
+    // A row of R floats per kept block; per group and block a, b (B x R) and their prefix sums
+    // ((B + 1) x R each); a record per footprint and an offset per group.
+    bytes += 4 * (footprints * blocks * rank + groups * blocks * (4 * b + 2) * rank) + sizeof(FootprintRecord) * footprints +
+             4 * groups;
+    if (nx == 1 && ny == 1) break;
+    nx = (nx + 1) / 2;
+    ny = (ny + 1) / 2;
+  }
+  return bytes;
 }
 
 std::size_t PrefilteredNdf::storage_bytes() const {

@@ -39,10 +39,9 @@ struct PrefilterSettings {
   void validate() const;
 };
 
-/// The prefilter settings a method's parameters choose (those it declares among rank,
-/// ndf_resolution, block_size, base_footprints, group_footprints, elements_per_texel; defaults for
-/// the rest).
-PrefilterSettings prefilter_settings_from(const std::map<std::string, float>& params);
+/// An upper bound of a pyramid's storage_bytes() for a width x height map under `settings`, known
+/// before precomputing it: every level the settings allow, no block dropped.
+std::uint64_t prefiltered_ndf_bytes_bound(const PrefilterSettings& settings, int width, int height);
 
 /// One level of the pyramid: nx x ny footprints of standard deviation sigma texels, centred at
 /// ((i + 0.5) spacing.x, (j + 0.5) spacing.y), grouped in groups_x x groups_y tensors.

@@ -9,8 +9,6 @@
 
 namespace glintlab {
 
-std::vector<std::string> material_tables(const Material& material) { return material.kind->tables; }
-
 namespace {
 
 struct Vertex {
@@ -151,7 +149,7 @@ GpuScene::NormalMapTextures GpuScene::upload_normal_map(const NormalMap& map) {
 }
 
 GpuScene::GpuScene(const Scene& scene, TableCache tables)
-    : tables_(std::move(tables)), prefiltered_ndfs_(scene.materials, tables_.cache().directory()) {
+    : scene_(scene), resources_(std::move(tables)), scene_resource_ids_(scene_resources(scene)) {
   for (const auto& shape : scene.shapes) meshes_.push_back(upload(*shape.mesh, shape.transform, shape.material));
 
   white_ = gl::make_texture(GL_TEXTURE_2D);
@@ -173,12 +171,7 @@ GpuScene::GpuScene(const Scene& scene, TableCache tables)
     kinds_.push_back(m.kind);
     textures_.push_back(material_textures(m));
   }
-  for (const auto& m : scene.materials)
-    for (const auto& id : material_tables(m))
-      if (std::find(material_table_ids_.begin(), material_table_ids_.end(), id) == material_table_ids_.end())
-        material_table_ids_.push_back(id);
-  std::sort(material_table_ids_.begin(), material_table_ids_.end());
-  tables_.require(material_table_ids_);
+  resources_.require(scene_resource_ids_, resource_context());
   materials.resize(kMaxMaterials);  // the uniform block's declared size
   materials_ = gl::make_buffer(static_cast<GLsizeiptr>(materials.size() * sizeof(MaterialGpu)), materials.data());
 

@@ -1,8 +1,8 @@
 #pragma once
 // The scene on the GPU: one vertex array per shape, material and light buffers, normal-map
 // textures (mipmapped, unnormalised averages kept for methods that need the normals' spread),
-// textured materials' parameter textures, the meshes of visible area lights, and the precomputed
-// tables its materials and methods read.
+// textured materials' parameter textures, the meshes of visible area lights, and the resources
+// (render/resources/) its material and light kinds and its methods read.
 #include <array>
 #include <map>
 #include <glm/mat4x4.hpp>
@@ -12,8 +12,7 @@
 
 #include "core/gpu_contract.hpp"
 #include "gl/objects.hpp"
-#include "render/prefiltered_ndfs.hpp"
-#include "tables/gpu_tables.hpp"
+#include "render/resources/resource_set.hpp"
 #include "scene/scene.hpp"
 
 namespace glintlab {
@@ -21,10 +20,6 @@ namespace glintlab {
 /// Index range [x, y) of each light kind (by code, src/scene/lights/light_kind.hpp) in the kind-sorted
 /// light buffer.
 using LightRanges = std::vector<glm::ivec2>;
-
-/// Tables a material's program variant reads in every method and in the reference: its kind's
-/// (MaterialKind::tables; a glinty material's BRDF reads the glint dictionary).
-std::vector<std::string> material_tables(const Material& material);
 
 struct GpuMesh {
   gl::VertexArray vao;
@@ -43,7 +38,8 @@ struct GpuEmitter {
 
 class GpuScene {
  public:
-  /// `tables`: where precomputed tables are cached (handed down from the top: Session, a test).
+  /// `tables`: where precomputed tables (and other resources with a disk cache) are cached
+  /// (handed down from the top: Session, a test). The scene must outlive this.
   GpuScene(const Scene& scene, TableCache tables);
 
   [[nodiscard]] const std::vector<GpuMesh>& meshes() const { return meshes_; }
@@ -63,18 +59,20 @@ class GpuScene {
   /// Binds a material's textures to their units and sets `program`'s per-draw texture transforms
   /// (uTextureTransforms, shaders/core/material.glsl); uMaterial selects its uniform-block entry.
   void bind_material(GLuint program, int material) const;
-  /// The precomputed tables on the GPU. Those the materials' program variants read whatever the
-  /// method (material_tables) are made resident on construction; a method's own
-  /// (MethodDescriptor::tables) are added by require_tables, which the renderer calls before
-  /// drawing with it. Residency is a cache of the scene's data, hence const.
-  [[nodiscard]] const GpuTables& tables() const { return tables_; }
-  /// The ids of the tables the materials read (material_tables of each), sorted: what the
-  /// reference reads, so its cache key includes these tables' keys.
-  [[nodiscard]] const std::vector<std::string>& material_table_ids() const { return material_table_ids_; }
-  void require_tables(std::span<const std::string> ids) const { tables_.require(ids); }
-  /// The normal-map-glints materials' prefiltered NDF pyramids (deng2022), made on first use.
-  /// Residency is a cache of the scene's data, hence const.
-  [[nodiscard]] PrefilteredNdfs& prefiltered_ndfs() const { return prefiltered_ndfs_; }
+  /// The resources the scene's material and light kinds read in every draw (scene_resources),
+  /// made resident on construction: what the reference reads, so its cache key includes their keys.
+  [[nodiscard]] const std::vector<std::string>& scene_resource_ids() const { return scene_resource_ids_; }
+  /// Every resource resident for the scene, made on first request; what the scene's kinds read is
+  /// resident from construction. Residency is a cache of the scene's data, hence const.
+  [[nodiscard]] ResourceSet& resources() const { return resources_; }
+  /// The context a resource of this scene is made in, with a method's parameters (none: a kind's).
+  [[nodiscard]] ResourceContext resource_context(const ParamValues& params = no_params()) const {
+    return {scene_, params, resources_.cache()};
+  }
+  static const ParamValues& no_params() {
+    static const ParamValues none;
+    return none;
+  }
   /// The light buffer is sorted by kind; [x, y) is the index range of each kind.
   [[nodiscard]] const LightRanges& light_ranges() const { return light_ranges_; }
   /// Binds the material and light uniform buffers (kMaterialBlockBinding, kLightBlockBinding).
@@ -103,9 +101,9 @@ class GpuScene {
   std::vector<MaterialTextures> textures_;
   std::map<const MaterialTexture*, gl::Texture> texture_objects_;  // shared between materials
   gl::Texture white_;  // 1x1 white: the texel of an absent texture
-  mutable GpuTables tables_;
-  mutable PrefilteredNdfs prefiltered_ndfs_;
-  std::vector<std::string> material_table_ids_;
+  const Scene& scene_;
+  mutable ResourceSet resources_;
+  std::vector<std::string> scene_resource_ids_;
   gl::Buffer materials_;
   gl::Buffer lights_;
   LightRanges light_ranges_;

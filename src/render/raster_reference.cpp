@@ -32,8 +32,12 @@ std::uint64_t RasterReference::estimator_hash() const {
   h.text(shaders_.expand("passes/emitter.frag", {}));
   h.text(shaders_.expand("passes/downsample.comp", {}));
   h.text(shaders_.expand("passes/filter_gaussian.comp", {}));
-  // The tables the reference reads: a new generator version or settings is a new reference.
-  for (const auto& id : scene_.material_table_ids()) h.value(table_key(find_table(id).source));
+  // The resources the reference reads (the scene's kinds'): a new table generator version or
+  // settings, or another environment map, is a new reference.
+  for (const auto& id : scene_.scene_resource_ids()) {
+    h.text(id);
+    h.text(find_resource_type(id).key(scene_.resource_context()));
+  }
   estimator_hash_ = h.digest();
   return estimator_hash_;
 }

@@ -63,6 +63,10 @@ void Renderer::draw_scene(const std::string& module, const ParamValues& params, 
   glNamedBufferSubData(frame_ubo_.id(), 0, sizeof(FrameUniforms), &frame);
   glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frame_ubo_.id());
   scene_.bind_buffers();
+  // What the scene's kinds read, then what the method prepare() was last called for reads (bound
+  // for any module: a pass that reads none of it is not affected).
+  scene_.resources().bind(scene_.scene_resource_ids(), scene_.resource_context());
+  scene_.resources().bind(method_resources_, scene_.resource_context(method_params_));
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
@@ -85,7 +89,6 @@ void Renderer::draw_scene(const std::string& module, const ParamValues& params, 
     glProgramUniformMatrix4fv(program, glGetUniformLocation(program, "uModel"), 1, GL_FALSE, &mesh.transform[0][0]);
     glProgramUniformMatrix3fv(program, glGetUniformLocation(program, "uNormalMatrix"), 1, GL_FALSE, &normal_matrix[0][0]);
     scene_.bind_material(program, mesh.material);
-    scene_.tables().bind();
     glBindVertexArray(mesh.vao.id());
     glDrawElements(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr);
   }
@@ -117,8 +120,9 @@ Renderer::FrameUniforms Renderer::frame_uniforms(const Camera& camera, const glm
 }
 
 void Renderer::prepare(const MethodDescriptor& method, const ParamValues& params) {
-  scene_.require_tables(required_tables(method, params));
-  if (method.reads_prefiltered_ndfs) scene_.prefiltered_ndfs().bind(prefilter_settings_from(params));
+  method_resources_ = method_resources(method, params);
+  method_params_ = params;
+  scene_.resources().require(method_resources_, scene_.resource_context(method_params_));
 }
 
 void Renderer::draw(const MethodDescriptor& method, const ParamValues& params, const Camera& camera, int width, int height) {

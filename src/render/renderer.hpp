@@ -74,7 +74,8 @@ class Renderer {
   /// Draws every shape with `module` (a method's or the reference's) in the forward pass, each
   /// with the program variant for its material, then the visible emitters.
   void draw_scene(const std::string& module, const ParamValues& params, const FrameUniforms& frame);
-  /// Makes what `method` reads resident and bound: its tables, the materials' NDF pyramids.
+  /// Makes what `method` reads with `params` resident (its tables and resources), to be bound by
+  /// the draws that follow.
   void prepare(const MethodDescriptor& method, const ParamValues& params);
   /// The forward program for `module`, specialised on the scene's lights and the material;
   /// looked up once per (module, variant), not per draw.
@@ -86,6 +87,8 @@ class Renderer {
   gl::Buffer frame_ubo_;
   std::unique_ptr<RenderTarget> target_;
   std::map<std::pair<std::string, MaterialVariant>, GLuint> forward_programs_;
+  std::vector<std::string> method_resources_;  ///< what the method of the last prepare() reads
+  ParamValues method_params_;                  ///< and its parameters (the resources' context)
 };
 
 }  // namespace glintlab

@@ -44,10 +44,10 @@ struct MethodDescriptor {
   /// Ids of the precomputed tables the module reads (src/tables/registry.cpp): made
   /// resident and bound before the renderer draws with it.
   std::vector<std::string> tables;
-  /// Whether the module reads the materials' prefiltered NDF pyramids (shaders/glints/normal-map/
-  /// prefiltered_ndf.glsl): the renderer makes those of the parameters' prefilter settings
-  /// resident and binds them before drawing (src/render/prefiltered_ndfs.hpp).
-  bool reads_prefiltered_ndfs = false;
+  /// Ids of the other resources the module reads (src/render/resources/resource.hpp; e.g.
+  /// "prefiltered-ndf"): made for the scene and the parameters' values, resident and bound before
+  /// the renderer draws with it.
+  std::vector<std::string> resources = {};
 
   [[nodiscard]] std::string module_path() const { return "methods/" + id + ".glsl"; }
   [[nodiscard]] const ParamDecl* find_param(const std::string& name) const;

@@ -4,9 +4,11 @@
 // box query; other materials as conventional; no NaN for random lights. Tiny images and maps.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <random>
 
+#include "core/error.hpp"
 #include "core/metrics.hpp"
 #include "gl_fixture.hpp"
 #include "normal_glints_floor.hpp"
@@ -68,6 +70,33 @@ TEST(Deng2022, NoNanUnderRandomLights) {
     SceneFixture f(s);
     ASSERT_EQ(f.method("deng2022").total.count_non_finite(), 0u) << "trial " << trial;
   }
+}
+
+}  // namespace
+
+namespace {
+
+// deng2022's pyramids are a resource (src/render/resources/): made once per scene and precompute
+// settings, kept while the scene lives, within the size estimated before they are made.
+TEST(Resources, APrefilteredNdfIsMadeOncePerSettingsWithinItsEstimate) {
+  SceneFixture f(normal_glints_floor(2.0, false, 16, 12));
+  const MethodDescriptor& deng = find_method("deng2022");
+  ResourceSet& resources = f.gpu->resources();
+  const std::vector<std::string> ids = method_resources(deng, resolve_params(deng, {}));
+  ASSERT_NE(std::find(ids.begin(), ids.end(), "prefiltered-ndf"), ids.end());
+  const ParamValues defaults = resolve_params(deng, {}), rank8 = resolve_params(deng, {{"rank", "8"}});
+  EXPECT_EQ(resources.find("prefiltered-ndf", f.gpu->resource_context(defaults)), nullptr) << "made on first use";
+  (void)f.method("deng2022");
+  const GpuResource* made = resources.find("prefiltered-ndf", f.gpu->resource_context(defaults));
+  ASSERT_NE(made, nullptr);
+  (void)f.method("deng2022");
+  EXPECT_EQ(resources.find("prefiltered-ndf", f.gpu->resource_context(defaults)), made) << "kept, not remade";
+  EXPECT_EQ(resources.find("prefiltered-ndf", f.gpu->resource_context(rank8)), nullptr) << "other settings: another";
+  const std::uint64_t estimate =
+      estimate_resource_bytes({"prefiltered-ndf"}, f.gpu->resource_context(defaults));
+  EXPECT_GT(made->gpu_bytes(), 0u);
+  EXPECT_LE(made->gpu_bytes(), estimate) << "the estimate bounds it";
+  EXPECT_THROW(find_resource_type("no-such-resource"), InputError);
 }
 
 }  // namespace

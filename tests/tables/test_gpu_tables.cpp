@@ -114,20 +114,20 @@ test::TestScene plain_scene() { return test::TestScene().film(16, 12).material("
 
 TEST(Tables, AGlintySceneHasTheDictionaryForEveryMethodAndTheReference) {
   SceneFixture glinty(glinty_scene());
-  EXPECT_NE(glinty.gpu->tables().texture("glint-dictionary"), 0u) << "glinty materials read it in any method";
-  EXPECT_EQ(glinty.gpu->material_table_ids(), std::vector<std::string>{"glint-dictionary"})
+  EXPECT_NE(glinty.gpu->resources().tables().texture("glint-dictionary"), 0u) << "glinty materials read it in any method";
+  EXPECT_EQ(glinty.gpu->scene_resource_ids(), std::vector<std::string>{"table:glint-dictionary"})
       << "what the reference reads, in its cache key";
   SceneFixture plain(plain_scene());
-  EXPECT_EQ(plain.gpu->tables().texture("glint-dictionary"), 0u) << "nothing reads it: not built";
-  EXPECT_TRUE(plain.gpu->material_table_ids().empty());
+  EXPECT_EQ(plain.gpu->resources().tables().texture("glint-dictionary"), 0u) << "nothing reads it: not built";
+  EXPECT_TRUE(plain.gpu->scene_resource_ids().empty());
 }
 
 TEST(Tables, AMethodsDeclaredTablesAreResidentWhenItDraws) {
   SceneFixture plain(plain_scene());
   (void)plain.method("conventional");
-  EXPECT_EQ(plain.gpu->tables().texture("glint-dictionary"), 0u);
+  EXPECT_EQ(plain.gpu->resources().tables().texture("glint-dictionary"), 0u);
   (void)plain.method("chermain2020");
-  EXPECT_NE(plain.gpu->tables().texture("glint-dictionary"), 0u);
+  EXPECT_NE(plain.gpu->resources().tables().texture("glint-dictionary"), 0u);
 }
 
 }  // namespace

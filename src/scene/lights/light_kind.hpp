@@ -46,6 +46,9 @@ struct LightKind {
   LightGpu (*pack)(const Light& light) = nullptr;
   /// The emitter mesh of a visible light with extent; nullopt when it is not drawn.
   std::optional<LightEmitter> (*emitter)(const Light& light) = nullptr;
+  /// The resources the kind's GLSL reads (src/render/resources/resource.hpp): its textures, CDFs,
+  /// tables ("table:<id>"), made for the scene's lights of the kind.
+  std::vector<std::string> resources = {};
 
   [[nodiscard]] std::string glsl_file() const { return "lights/" + id + ".glsl"; }
   /// Prefix of the kind's GLSL functions, e.g. "sunLight" for sunLightSample.

@@ -33,7 +33,7 @@ MaterialKind glinty_material_kind() {
             m.alpha = std::sqrt(2.0f) * r.get_vec2("sigma", glm::vec2(0.1f), 0.005, 0.7);
             m.rho = static_cast<float>(r.get_number("rho", 0.0, -0.99, 0.99));
           },
-      .tables = {"glint-dictionary"},
+      .resources = {"table:glint-dictionary"},
   };
 }
 

@@ -46,9 +46,9 @@ struct MaterialKind {
   void (*finish)(TomlReader& reader, Material& material) = nullptr;
   /// The kind's microsurface is the material's normal map: a material without one is refused.
   bool requires_normal_map = false;
-  /// Precomputed tables the kind's GLSL reads in every method and in the reference (glinty: the
-  /// glint dictionary); src/tables/registry.cpp's ids.
-  std::vector<std::string> tables = {};
+  /// The resources the kind's GLSL reads in every method and in the reference
+  /// (src/render/resources/resource.hpp; glinty: the glint dictionary, "table:glint-dictionary").
+  std::vector<std::string> resources = {};
 
   /// The kind's code on the GPU: MATERIAL_KIND_<ID> in GLSL, its position in registration order.
   [[nodiscard]] int code() const;

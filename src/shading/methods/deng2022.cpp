@@ -1,21 +1,12 @@
 // Descriptor of `deng2022`: the footprint's NDF from a CP-compressed pyramid of NDF images (Deng et al. 2022).
+#include "prefilter/prefilter_params.hpp"
 #include "shading/methods/shared_params.hpp"
 #include "shading/registry.hpp"
 
 namespace glintlab {
 
-namespace {
-/// A setting of the precompute (src/prefilter/prefiltered_ndf.hpp, PrefilterSettings): read by the
-/// renderer to choose the pyramid it binds, never by the module.
-ParamDecl precompute_param(std::string name, float value, float min, float max, std::string description) {
-  ParamDecl p{std::move(name), value, min, max, std::move(description)};
-  p.host_only = true;
-  return p;
-}
-}  // namespace
-
 MethodDescriptor deng2022_method() {
-  return {
+  MethodDescriptor method{
       .id = "deng2022",
       .title = "Deng et al. 2022 (tensor-compressed NDF prefiltering, real time)",
       .citation = "H. Deng, Y. Liu, B. Wang, J. Yang, L. Ma, N. Holzschuch, L.-Q. Yan, Constant-Cost Spatio-Angular "
@@ -33,24 +24,13 @@ MethodDescriptor deng2022_method() {
                  {"small_footprints", 0, 0, 1,
                   "footprints finer than the pyramid's first level: yan2016 (summed over the map's elements, as "
                   "the paper does; bounded by that level's size) or clamp (the first level's NDF: blurred)",
-                  {"yan2016", "clamp"}},
-                 precompute_param("rank", 16.0f, 1.0f, 64.0f,
-                                  "CP rank of every group's tensor (the paper: 16, 32 for flakes)"),
-                 precompute_param("ndf_resolution", 64.0f, 16.0f, 256.0f,
-                                  "N: the NDF images are N x N over the map's normals"),
-                 precompute_param("block_size", 16.0f, 4.0f, 64.0f,
-                                  "B: angular blocks of B x B pixels, a divisor of ndf_resolution with at most 8 blocks a side"),
-                 precompute_param("base_footprints", 128.0f, 16.0f, 1024.0f,
-                                  "footprints per side of the finest level (at most the map's size): its sigma and stride are "
-                                  "map size / this texels, so storage does not grow with the map"),
-                 precompute_param("group_footprints", 4.0f, 1.0f, 16.0f,
-                                  "footprints per side of a group: the blocks of group_footprints^2 neighbouring footprints "
-                                  "share one tensor"),
-                 precompute_param("elements_per_texel", 2.0f, 1.0f, 2.0f,
-                                  "Yan 2016's elements per texel and axis behind the NDF images")},
+                  {"yan2016", "clamp"}}},
       .tables = {"ltc-ggx"},  // other materials' lights with extent, as conventional
-      .reads_prefiltered_ndfs = true,
+      .resources = {"prefiltered-ndf"},  // the normal-map-glints materials' pyramids of its precompute settings
   };
+  // The precompute's settings, declared with PrefilterSettings (src/prefilter/prefilter_params.hpp).
+  for (ParamDecl& p : prefilter_params()) method.params.push_back(std::move(p));
+  return method;
 }
 
 GLINTLAB_REGISTER_METHOD(deng2022_method, 850);

@@ -1,0 +1,90 @@
+// Resource `prefiltered-ndf` (deng2022; docs/methods.md#deng2022): the CP-compressed NDF pyramid
+// of every normal-map-glints material of the scene under the method's precompute settings
+// (src/prefilter/), read from the disk cache or precomputed, packed into the two storage buffers
+// shaders/glints/normal-map/prefiltered_ndf.glsl reads (kPrefilteredNdf*Binding).
+#include <cstdio>
+
+#include "core/gpu_contract.hpp"
+#include "core/hash.hpp"
+#include "gl/context.hpp"
+#include "gl/objects.hpp"
+#include "prefilter/prefilter_cache.hpp"
+#include "prefilter/prefilter_params.hpp"
+#include "prefilter/prefiltered_ndf_layout.hpp"
+#include "render/resources/resource.hpp"
+
+namespace glintlab {
+
+namespace {
+
+bool has_pyramid(const Material& m) { return m.is("normal-map-glints") && m.normal_map; }
+
+class PrefilteredNdfBuffersResource : public GpuResource {
+ public:
+  explicit PrefilteredNdfBuffersResource(const PrefilteredNdfBuffers& packed) {
+    records_ = gl::make_buffer(static_cast<GLsizeiptr>(packed.records.size() * sizeof(std::uint32_t)),
+                               packed.records.data());
+    values_ = gl::make_buffer(static_cast<GLsizeiptr>(packed.values.size() * sizeof(float)), packed.values.data());
+    bytes_ = packed.records.size() * sizeof(std::uint32_t) + packed.values.size() * sizeof(float);
+    check_gl("uploading prefiltered NDFs");
+  }
+  void bind() const override {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPrefilteredNdfRecordsBinding, records_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPrefilteredNdfValuesBinding, values_.id());
+  }
+  [[nodiscard]] std::uint64_t gpu_bytes() const override { return bytes_; }
+
+ private:
+  gl::Buffer records_, values_;
+  std::uint64_t bytes_ = 0;
+};
+
+}  // namespace
+
+ResourceType prefiltered_ndf_resource() {
+  return {
+      .id = "prefiltered-ndf",
+      .title = "the normal-map-glints materials' CP-compressed NDF pyramids (Deng et al. 2022)",
+      .binding = "storage buffers PREFILTERED_NDF_RECORDS_BINDING, PREFILTERED_NDF_VALUES_BINDING",
+      .key =
+          [](const ResourceContext& c) {
+            // The settings and, per material with a pyramid, what its pyramid is made of.
+            Hasher h;
+            for (const Material& m : c.scene.materials) {
+              h.value(has_pyramid(m));
+              if (!has_pyramid(m)) continue;
+              h.text(prefiltered_ndf_key(*m.normal_map, m.kind_param("intrinsic_roughness"),
+                                         prefilter_settings_from(c.params)));
+            }
+            char hex[17];
+            std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h.digest()));
+            return prefilter_settings_from(c.params).describe() + " maps=" + hex;
+          },
+      .estimate_bytes =
+          [](const ResourceContext& c) {
+            std::uint64_t bytes = 4 * kMaxMaterials + sizeof(float);  // each material's word; a value at least
+            const PrefilterSettings settings = prefilter_settings_from(c.params);
+            for (const Material& m : c.scene.materials)
+              if (has_pyramid(m)) bytes += prefiltered_ndf_bytes_bound(settings, m.normal_map->width, m.normal_map->height);
+            return bytes;
+          },
+      .make =
+          [](const ResourceContext& c) -> std::unique_ptr<GpuResource> {
+            const PrefilterSettings settings = prefilter_settings_from(c.params);
+            std::vector<std::unique_ptr<PrefilteredNdf>> pyramids;
+            std::vector<const PrefilteredNdf*> per_material;
+            for (const Material& m : c.scene.materials) {
+              pyramids.push_back(has_pyramid(m) ? std::make_unique<PrefilteredNdf>(load_or_precompute_prefiltered_ndf(
+                                                      *m.normal_map, m.kind_param("intrinsic_roughness"), settings,
+                                                      c.cache.directory()))
+                                                : nullptr);
+              per_material.push_back(pyramids.back().get());
+            }
+            PrefilteredNdfBuffers packed = pack_prefiltered_ndfs(per_material, kMaxMaterials);
+            if (packed.values.empty()) packed.values.push_back(0.0f);  // a buffer is never empty
+            return std::make_unique<PrefilteredNdfBuffersResource>(packed);
+          },
+  };
+}
+
+}  // namespace glintlab

@@ -15,6 +15,7 @@
 #include "eval/session.hpp"
 #include "render/reference_cache.hpp"
 #include "tables/gpu_tables.hpp"
+#include "scene/materials/material_reference.hpp"
 #include "scene/scene_loader.hpp"
 #include "shading/method_reference.hpp"
 #include "shading/registry.hpp"
@@ -226,7 +227,12 @@ int run_cli(int argc, char** argv) {
   auto* methods_cmd = app.add_subcommand("methods", "list every method with its parameters, defaults and ranges");
   bool methods_markdown = false;
   methods_cmd->add_flag("--markdown", methods_markdown,
-                        "print the method reference of docs/methods.md (see tools/update-method-reference.sh)");
+                        "print the method reference of docs/methods.md (see tools/update-reference-docs.sh)");
+  auto* materials_cmd =
+      app.add_subcommand("materials", "list every material kind (the [[material]] types) with its keys, defaults and ranges");
+  bool materials_markdown = false;
+  materials_cmd->add_flag("--markdown", materials_markdown,
+                          "print the material-kind reference of docs/scene-format.md (see tools/update-reference-docs.sh)");
   auto* scenes = app.add_subcommand("scenes", "list the built-in scenes");
   std::string print_scene;
   scenes->add_option("--print", print_scene, "print a built-in scene's TOML (a template for your own)");
@@ -275,6 +281,9 @@ int run_cli(int argc, char** argv) {
           std::cout << "builtin:" << s.name << "\n  " << s.description
                     << ("builtin:" + s.name == kDefaultScene ? " (default)" : "") << "\n";
       }
+    } else if (app.got_subcommand("materials")) {
+      std::cout << (materials_markdown ? material_reference_markdown(all_material_kinds())
+                                       : material_listing(all_material_kinds()));
     } else if (app.got_subcommand("info")) {
       print_info();
     } else if (app.got_subcommand("render")) {

@@ -31,12 +31,19 @@ std::string join(const std::vector<std::string>& v) {
   return out;
 }
 
+}  // namespace
+
 std::string range_text(double min, double max) {
   std::ostringstream s;
   s << min << " .. " << max;
   return s.str();
 }
-}  // namespace
+
+std::string number_text(double value) {
+  std::ostringstream s;
+  s << value;
+  return s.str();
+}
 
 TomlReader::TomlReader(const toml::table& table, std::string file, std::string context)
     : table_(table), file_(std::move(file)), context_(std::move(context)) {}

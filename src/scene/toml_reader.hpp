@@ -11,6 +11,11 @@
 
 namespace glintlab {
 
+/// "0.005 .. 0.7": a range as every message (and the generated docs) write it.
+std::string range_text(double min, double max);
+/// A number as the messages write it (6 significant digits).
+std::string number_text(double value);
+
 class TomlReader {
  public:
   TomlReader(const toml::table& table, std::string file, std::string context);

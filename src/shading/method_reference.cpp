@@ -21,14 +21,19 @@ std::string parameters_markdown(const MethodDescriptor& m) {
 }
 
 std::string tables_markdown(const MethodDescriptor& m) {
-  if (all_tables_of(m).empty()) return "Precomputed tables: none.\n";
+  std::string resources;
+  if (!m.resources.empty()) {
+    resources = "Other resources (src/render/resources/):\n\n";
+    for (const std::string& id : m.resources) resources += "- " + id + "\n";
+  }
+  if (all_tables_of(m).empty()) return "Precomputed tables: none.\n" + (resources.empty() ? "" : "\n" + resources);
   std::string out = "Precomputed tables:\n\n";
   for (const std::string& table : m.tables) out += "- " + table + "\n";
   for (const ParamDecl& p : m.params)
     for (std::size_t c = 0; c < p.choice_tables.size(); ++c)
       for (const std::string& table : p.choice_tables[c])
         out += "- " + table + " (with `" + p.name + " = " + p.choices[c] + "`)\n";
-  return out;
+  return out + (resources.empty() ? "" : "\n" + resources);
 }
 
 }  // namespace

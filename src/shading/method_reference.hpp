@@ -1,7 +1,7 @@
 #pragma once
 // The method reference of docs/methods.md, generated from the descriptors (Mitsuba 3's way: the
 // docs come from the same declaration as the parameter checks). `glintlab methods --markdown`
-// prints it; tools/update-method-reference.sh splices it into the docs between
+// prints it; tools/update-reference-docs.sh splices it into the docs between
 // <!-- generated:method-reference --> and <!-- /generated:method-reference -->.
 #include <string>
 #include <vector>

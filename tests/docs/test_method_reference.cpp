@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "scene/materials/material_reference.hpp"
 #include "shading/method_reference.hpp"
 #include "shading/registry.hpp"
 
@@ -45,7 +46,7 @@ TEST(MethodReference, DocsHoldTheReferenceGeneratedFromTheDescriptors) {
   const std::string generated = method_reference_markdown(all_methods());
   EXPECT_TRUE(block == generated) << "docs/methods.md's method reference differs from the descriptors ("
                                   << first_difference(block, generated) << "); regenerate it:\n"
-                                  << "  build/release/glintlab methods --markdown | tools/update-method-reference.sh";
+                                  << "  tools/update-reference-docs.sh";
 }
 
 TEST(MethodReference, HasASectionAndATableRowPerParameter) {
@@ -63,4 +64,31 @@ TEST(MethodReference, TheBinaryListsOnlyTheBuiltInMethods) {
   EXPECT_EQ(ids, (std::vector<std::string>{"conventional", "toksvig", "vlachos", "kaplanyan-beckmann", "kaplanyan-rect",
                                            "kaplanyan-ggx", "tokuyoshi", "lean", "podee", "chermain2020",
                                            "chermain2021", "deliot2023", "kneiphof2024", "yan2016", "deng2022"}));
+}
+
+TEST(MaterialReference, DocsHoldTheReferenceGeneratedFromTheKinds) {
+  std::ifstream in(GLINTLAB_SOURCE_DIR "/docs/scene-format.md", std::ios::binary);
+  ASSERT_TRUE(in) << "cannot read docs/scene-format.md";
+  std::stringstream s;
+  s << in.rdbuf();
+  const std::string docs = s.str();
+  const std::string begin_marker = "<!-- generated:material-reference -->\n";
+  const std::string end_marker = "<!-- /generated:material-reference -->\n";
+  const auto begin = docs.find(begin_marker), end = docs.find(end_marker);
+  ASSERT_NE(begin, std::string::npos) << "docs/scene-format.md lacks the line " << begin_marker;
+  ASSERT_NE(end, std::string::npos) << "docs/scene-format.md lacks the line " << end_marker;
+  ASSERT_LT(begin, end);
+  const std::string block = docs.substr(begin + begin_marker.size(), end - begin - begin_marker.size());
+  const std::string generated = material_reference_markdown(all_material_kinds());
+  EXPECT_TRUE(block == generated) << "docs/scene-format.md's material-kind reference differs from the declarations ("
+                                  << first_difference(block, generated) << "); regenerate it:\n"
+                                  << "  tools/update-reference-docs.sh";
+  // Every key of every kind has its row.
+  for (const MaterialKind& k : all_material_kinds()) {
+    EXPECT_NE(generated.find("### `type = \"" + k.id + "\"`"), std::string::npos) << k.id;
+    for (const MaterialParamDecl& p : k.params)
+      if (!p.derived) {
+        EXPECT_NE(generated.find("| `" + p.key + "` | number |"), std::string::npos) << p.key;
+      }
+  }
 }

@@ -133,7 +133,9 @@ void expect_offsets(GLuint program, const std::string& prefix, const Std140Field
     offset += std140_size(f.glsl_type);
   }
   EXPECT_EQ(offset, record_size) << prefix;
-  if (!next_record.empty()) EXPECT_EQ(uniform_offset(program, next_record.c_str()), static_cast<GLint>(record_size));
+  if (!next_record.empty()) {
+    EXPECT_EQ(uniform_offset(program, next_record.c_str()), static_cast<GLint>(record_size));
+  }
 }
 
 TEST(GpuContract, Std140LayoutsMatchTheCppRecords) {

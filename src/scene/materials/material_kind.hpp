@@ -18,6 +18,16 @@ namespace glintlab {
 class TomlReader;
 struct Material;
 
+/// A scene-file key the kind reads in its own code (parse_lobe) rather than from a declaration, as
+/// the reference documents it; its numbers are the constants parse_lobe uses.
+struct MaterialKeyDoc {
+  std::string key;
+  std::string type;          ///< "number", "number or [x, y]", "string"
+  std::string default_text;  ///< "0.1", "\"ggx\""
+  std::string allowed;       ///< "0.005 .. 0.7", "ggx, beckmann"
+  std::string meaning;
+};
+
 /// How many floats a kind's own parameters may take: MaterialGpu::kind_params is one vec4.
 inline constexpr int kMaxMaterialKindParams = 4;
 
@@ -38,6 +48,8 @@ struct MaterialKind {
   std::string citation;
   std::string summary;  ///< what the kind is, and what methods that do not know it shade (its smooth limit)
   std::vector<MaterialParamDecl> params;
+  /// The keys parse_lobe reads (the lobe's roughness and NDF), for the reference.
+  std::vector<MaterialKeyDoc> lobe_keys;
   /// Reads the kind's lobe keys (ndf, alpha, sigma, ...) into Material::ndf, alpha and rho, and fails
   /// on lobe keys the kind does not have. Called after `type`, before the kind's params and the
   /// common keys (f0, diffuse, normal_map, ...).

@@ -5,6 +5,11 @@
 
 namespace glintlab {
 
+namespace {
+constexpr float kDefaultAlpha = 0.1f;
+constexpr double kMinAlpha = 0.0, kMaxAlpha = 1.0;
+}  // namespace
+
 MaterialKind microfacet_material_kind() {
   return {
       .id = "microfacet",
@@ -15,10 +20,13 @@ MaterialKind microfacet_material_kind() {
       .summary = "A smooth microfacet lobe of roughness alpha (anisotropic: [alpha_x, alpha_y]) with the NDF `ndf`, "
                  "plus a Lambert term. What every method is built for; every other kind's smooth limit is one.",
       .params = {},
+      .lobe_keys = {{"ndf", "string", "\"ggx\"", "ggx, beckmann", "microfacet distribution"},
+                    {"alpha", "number or [ax, ay]", number_text(kDefaultAlpha), range_text(kMinAlpha, kMaxAlpha),
+                     "roughness alpha (anisotropic: along +u and +v, or the anisotropy direction of glTF materials)"}},
       .parse_lobe =
           [](TomlReader& r, Material& m) {
             m.ndf = r.get_string("ndf", "ggx", {"ggx", "beckmann"}) == "ggx" ? Ndf::GGX : Ndf::Beckmann;
-            m.alpha = r.get_vec2("alpha", m.alpha, 0.0, 1.0);
+            m.alpha = r.get_vec2("alpha", glm::vec2(kDefaultAlpha), kMinAlpha, kMaxAlpha);
           },
   };
 }

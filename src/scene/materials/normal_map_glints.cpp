@@ -20,11 +20,14 @@ MaterialKind normal_map_glints_material_kind() {
                  "Smith masking of the whole microsurface's Beckmann alpha. Requires `normal_map`. Methods that do "
                  "not know the kind shade its smooth limit, the Beckmann lobe of alpha = sqrt(2) intrinsic_roughness "
                  "over the normal map.",
-      .params = {{"intrinsic_roughness", 0.01f, 0.001, 0.3, "sigma_r, the deviation of each point's projected normal"},
+      .params = {{"intrinsic_roughness", 0.01f, 0.001, 0.3,
+                  "sigma_r: standard deviation of the projected normal h.xy about the map's normal n(u).xy, per axis "
+                  "(a flat map is Beckmann of alpha = sqrt(2) sigma_r)"},
                  {"masking_alpha", 0.01f, 0.0, 1e6,
                   "Beckmann alpha of the whole microsurface, sqrt(E[|b|^2] + 2 sigma_r^2) with b = n.xy / n.z over "
                   "the map's texels: Smith masking-shadowing only (derived from the map)",
                   /*derived=*/true}},
+      .lobe_keys = {},
       .parse_lobe =
           [](TomlReader& r, Material& m) {
             for (const char* key : {"alpha", "ndf", "sigma"})

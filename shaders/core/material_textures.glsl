@@ -22,7 +22,8 @@ struct TexturedParameters {
 };
 
 // One texture's texel at uv, through its slot's transform: at the base level, or filtered over
-// the footprint (dUVdx, dUVdy: the uv's screen derivatives, mapped by the transform's linear part).
+// the footprint (dUVdx, dUVdy: the uv's derivatives per pixel, the pixel footprint's dVertexUVdx
+// and dVertexUVdy, mapped by the transform's linear part).
 vec4 materialTexel(sampler2D texture, int slot, vec2 uv, vec2 dUVdx, vec2 dUVdy, bool atSample) {
   vec2 st = uTextureTransforms[slot] * vec3(uv, 1.0);
   mat2 linear = mat2(uTextureTransforms[slot]);

@@ -1,5 +1,7 @@
 // The per-pixel surface record every method receives (docs/methods.md, "The method interface").
 // Built once per fragment in uniform control flow by passes/forward.frag.
+#include "core/footprint.glsl"
+
 struct Surface {
   vec3 position;   // world space
   vec3 view;       // unit vector from the surface to the camera
@@ -13,9 +15,7 @@ struct Surface {
   vec3 mappedNormal;     // tangent-space normal-map value, filtered and NOT renormalised
                          // (its length measures the normals' spread; (0, 0, 1) without a map)
   vec2 uv;         // normal-map coordinates (tiling applied)
-  vec3 dPdx, dPdy; // screen-space derivatives of position (per pixel of the render target)
-  vec3 dNdx, dNdy; // of vertexNormal
-  vec2 dUVdx, dUVdy;
+  Footprint footprint;  // how all of the above changes over the pixel (core/footprint.glsl)
   // Material
   int ndf;
   vec2 alpha;
@@ -55,6 +55,14 @@ void vertexTangentFrame(vec3 n, vec4 tangent, float side, out vec3 t, out vec3 b
 
 // A tangent-space normal-map value m in the frame (t, b, n), normalised.
 vec3 mappedNormal(vec3 m, vec3 t, vec3 b, vec3 n) { return normalize(m.x * t + m.y * b + m.z * n); }
+
+// The half vector towards l and its derivatives per pixel from the footprint alone (l's own
+// derivatives: pointDirectionDerivative for a light at a point, 0 for a distant one): what a
+// backend without screen-space derivatives calls (core/footprint.glsl; no normal map).
+HalfVectorDifferential surfaceHalfVectorDifferential(Surface s, vec3 l, vec3 dldx, vec3 dldy) {
+  return halfVectorDifferential(s.footprint, s.view, l, dldx, dldy, mat3(s.tangent, s.bitangent, s.normal),
+                                s.vertexNormal, s.vertexTangent);
+}
 
 vec3 toLocal(Surface s, vec3 w) { return vec3(dot(w, s.tangent), dot(w, s.bitangent), dot(w, s.normal)); }
 vec3 toWorld(Surface s, vec3 w) { return w.x * s.tangent + w.y * s.bitangent + w.z * s.normal; }

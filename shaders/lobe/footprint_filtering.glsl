@@ -1,6 +1,7 @@
 // NDF filtering over the pixel footprint in half-vector space, per light: the half vector's
-// screen-space derivatives (quad finite differences, taken by the method in uniform control flow)
-// span the set of half vectors a pixel sees, and the NDF is convolved with that set.
+// derivatives per pixel (in the raster pass quad finite differences, taken by the method in
+// uniform control flow; from the footprint alone, core/footprint.glsl's half-vector
+// differentials) span the set of half vectors a pixel sees, and the NDF is convolved with that set.
 // Pure functions of the derivatives, so that tests can call them with any footprint.
 #include "lobe/lobe.glsl"
 #include "core/surface.glsl"
@@ -19,32 +20,27 @@ vec2 projectedHalfVector(Surface s, vec3 l) {
   return vec2(dot(h, s.tangent), dot(h, s.bitangent));
 }
 
-// Covariance of the parallelogram spanned by the derivatives: C = U U^T, U = [dx dy].
-mat2 footprintCovariance(vec2 dx, vec2 dy) { return outerProduct(dx, dx) + outerProduct(dy, dy); }
-
 // C scaled down so that its largest eigenvalue is at most limit (shape kept).
 mat2 clampCovariance(mat2 c, float limit) {
   float top = maxEigenvalue(c);
   return top > limit ? c * (limit / top) : c;
 }
 
-// Standard deviation (pixels) of the Gaussian pixel filter of Kaplanyan et al. 2016: the talk's
-// "standard deviation of 0.5 pixel" ("Filtering Beckmann"), the rectangle code's half extent
-// fp = (|dx| + |dy|) / 2, and tokuyoshi's sigma2 = 0.25 (docs/methods.md#kaplanyan-beckmann).
-const float KAPLANYAN_PIXEL_SIGMA = 0.5;
-
-// Kaplanyan et al. 2016, Beckmann: the Gaussian pixel filter mapped to slope space by the
-// whole-pixel derivatives U = [dx dy] has covariance C = sigma^2 U U^T; the lobe convolved with it
-// is R' = R + 2C, full (non-axis-aligned). fpMax bounds the footprint's standard deviation (sqrt of
-// C's largest eigenvalue) as the rectangle variants bound fp, which keeps grazing angles finite.
+// Kaplanyan et al. 2016, Beckmann: the Gaussian pixel filter (sigma = PIXEL_FILTER_SIGMA, the
+// talk's "standard deviation of 0.5 pixel", "Filtering Beckmann"; docs/methods.md#kaplanyan-beckmann)
+// mapped to slope space by the whole-pixel derivatives U = [dx dy] has covariance
+// C = sigma^2 U U^T; the lobe convolved with it is R' = R + 2C, full (non-axis-aligned). fpMax
+// bounds the footprint's standard deviation (sqrt of C's largest eigenvalue) as the rectangle
+// variants bound fp, which keeps grazing angles finite.
 Lobe kaplanyanBeckmannLobe(Lobe base, vec2 dx, vec2 dy, float fpMax) {
-  float sigma2 = KAPLANYAN_PIXEL_SIGMA * KAPLANYAN_PIXEL_SIGMA;
-  mat2 c = clampCovariance(sigma2 * footprintCovariance(dx, dy), fpMax * fpMax);
+  float sigma2 = PIXEL_FILTER_SIGMA * PIXEL_FILTER_SIGMA;
+  mat2 c = clampCovariance(sigma2 * derivativeCovariance(dx, dy), fpMax * fpMax);
   return Lobe(base.ndf, base.A + 2.0 * c, base.footprint);
 }
 
 // Half sides of the footprint's axis-aligned bounding rectangle, (|dx| + |dy|) / 2, clamped above:
-// per axis at least the covariance's standard deviation sigma sqrt(dx_i^2 + dy_i^2) (sigma = 1/2).
+// per axis at least the covariance's standard deviation sigma sqrt(dx_i^2 + dy_i^2) for sigma = 1/2
+// (the rectangle is the talk's code: the half extent of the pixel's box, not the filter's width).
 vec2 footprintRectangle(vec2 dx, vec2 dy, float fpMax) { return min(0.5 * (abs(dx) + abs(dy)), vec2(fpMax)); }
 
 // Kaplanyan et al. 2016, axis-aligned: R' = R + 2 diag(fp^2) with the bounding rectangle.
@@ -75,7 +71,7 @@ mat2 alphaMatrixFromProjected(mat2 p) {
 // from the derivatives J of the projected half vector, clamped to kappa, added to the
 // projected roughness and mapped back. Beckmann materials add K to alpha^2 directly.
 Lobe tokuyoshiLobe(Lobe base, vec2 dx, vec2 dy, float sigma2, float kappa) {
-  mat2 k = clampCovariance(2.0 * sigma2 * footprintCovariance(dx, dy), kappa);
+  mat2 k = clampCovariance(2.0 * sigma2 * derivativeCovariance(dx, dy), kappa);
   if (base.ndf == NDF_BECKMANN) return Lobe(base.ndf, base.A + k, base.footprint);
   vec2 beta2 = projectedRoughness(vec2(base.A[0][0], base.A[1][1]));  // material lobes are diagonal
   return Lobe(base.ndf, alphaMatrixFromProjected(mat2(beta2.x, 0.0, 0.0, beta2.y) + k), base.footprint);

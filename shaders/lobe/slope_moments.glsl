@@ -12,8 +12,8 @@ layout(binding = SLOPE_CROSS_MOMENT_UNIT) uniform sampler2D uSlopeCrossMoment;
 // Call in uniform control flow (textureGrad with the surface's uv derivatives is safe anywhere,
 // but callers take it with their other per-pixel work).
 mat2 footprintSlopeCovariance(Surface s, out vec2 meanSlope) {
-  vec4 m = textureGrad(uSlopeMoments, s.uv, s.dUVdx, s.dUVdy);
-  float mxy = textureGrad(uSlopeCrossMoment, s.uv, s.dUVdx, s.dUVdy).r;
+  vec4 m = textureGrad(uSlopeMoments, s.uv, s.footprint.dUVdx, s.footprint.dUVdy);
+  float mxy = textureGrad(uSlopeCrossMoment, s.uv, s.footprint.dUVdx, s.footprint.dUVdy).r;
   meanSlope = m.xy;
   return leanSlopeCovariance(m.xy, vec3(m.zw, mxy));
 }

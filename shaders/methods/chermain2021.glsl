@@ -12,7 +12,8 @@ GlintSurface gGlint;
 
 // The screen-space derivatives of the half vector towards light direction l (2021, sec. 6.1):
 // of its projection h.xy (eq. 21, after Tokuyoshi & Kaplanyan 2019) or of its slope (eq. 20).
-// Call in uniform control flow.
+// Call in uniform control flow. (From the pixel footprint alone, without the quad: core/footprint.glsl,
+// halfVectorProjectedDerivatives, and halfVectorSlopeDerivatives negated.)
 void halfVectorDerivatives(Surface s, vec3 l, bool ofSlopes, out vec2 dx, out vec2 dy) {
   vec3 h = normalize(toLocal(s, s.view) + toLocal(s, l));
   vec2 v = ofSlopes ? -h.xy / max(h.z, 1e-3) : h.xy;

@@ -38,7 +38,7 @@ void prepareSurface(inout Surface s) {
 #if MATERIAL_KIND == MATERIAL_KIND_NORMAL_MAP_GLINTS
   gDiffuseNormal = normalGlintsMacroFrame(s);
   ivec2 size = textureSize(uNormalMap, 0);
-  mat2 sigmaP = pixelFootprintCovariance(s.dUVdx, s.dUVdy, size, param_footprint_sigma);
+  mat2 sigmaP = footprintTexelCovariance(s.footprint, size, param_footprint_sigma);
   // The pyramid holds isotropic footprints: the one of the same area, sigma^2 = sqrt(det Sigma_p).
   gFootprintSigma = sqrt(sqrt(max(determinant(sigmaP), 0.0)));
   gFootprintCentre = fract(s.uv) * vec2(size);

@@ -3,6 +3,6 @@
 #include "lobe/lobe_shading.glsl"
 #include "lobe/roughness_filtering.glsl"
 
-void prepareSurface(inout Surface s) { s.alpha = vlachosAlpha(s.alpha, s.dNdx, s.dNdy, param_scale, param_exponent); }
+void prepareSurface(inout Surface s) { s.alpha = vlachosAlpha(s.alpha, s.footprint.dNdx, s.footprint.dNdy, param_scale, param_exponent); }
 
 Radiance shadeLight(Surface s, LightData L) { return shadeLobe(s, L, materialSmoothLobe(s), param_area_lights); }

@@ -28,7 +28,7 @@ void prepareSurface(inout Surface s) {
 #if MATERIAL_KIND == MATERIAL_KIND_NORMAL_MAP_GLINTS
   gDiffuseNormal = normalGlintsMacroFrame(s);
   ivec2 size = textureSize(uNormalMap, 0);
-  mat2 sigmaP = pixelFootprintCovariance(s.dUVdx, s.dUVdy, size, param_footprint_sigma);
+  mat2 sigmaP = footprintTexelCovariance(s.footprint, size, param_footprint_sigma);
   MaterialData m = materials[uMaterial];
   gFootprint = positionNormalFootprint(fract(s.uv) * vec2(size), sigmaP, size, ELEMENTS_PER_TEXEL,
                                        normalMapGlintsIntrinsicRoughness(m),

@@ -22,29 +22,40 @@
 layout(location = 0) out vec4 outTotal;
 layout(location = 1) out vec4 outSpecular;
 
+// The pixel footprint (core/footprint.glsl) from the fine screen-space derivatives of the
+// interpolated attributes: the raster pass's ray differentials (per pixel, not per quad). Call in
+// uniform control flow. Its normal derivatives are the interpolated normal's as interpolated, on
+// the front side (the caller turns them to the seen side).
+Footprint screenSpaceFootprint(vec3 view, vec2 uv) {
+  vec3 t, b;
+  vertexTangentFrame(normalize(vNormal), vTangent, 1.0, t, b);  // t is the same on either side
+  return makeFootprint(dFdxFine(vPosition), dFdyFine(vPosition), dFdxFine(vNormal), dFdyFine(vNormal), dFdxFine(t),
+                       dFdyFine(t), dFdxFine(view), dFdyFine(view), dFdxFine(vUV), dFdyFine(vUV), dFdxFine(uv),
+                       dFdyFine(uv));
+}
+
 void main() {
   MaterialData m = materials[uMaterial];
   vec2 uv = normalMapCoordinates(vUV);
-  // Screen-space derivatives first, while control flow is uniform (fine: per pixel, not per quad).
-  vec3 dPdx = dFdxFine(vPosition), dPdy = dFdyFine(vPosition);
-  vec3 dNdx = dFdxFine(vNormal), dNdy = dFdyFine(vNormal);
-  vec2 dUVdx = dFdxFine(uv), dUVdy = dFdyFine(uv);
+  vec3 view = viewDirectionFrom(vPosition);
+  // The footprint first, while control flow is uniform.
+  Footprint footprint = screenSpaceFootprint(view, uv);
 #if MATERIAL_NORMAL_MAP && REFERENCE_PASS
   // Ground truth takes the map at this sample point (bilinear at level 0), never an average over
   // a footprint: the normals a filtered level would average away are the highlights being judged.
   vec3 mapped = textureLod(uNormalMap, uv, 0.0).xyz;
 #elif MATERIAL_NORMAL_MAP
-  vec3 mapped = textureGrad(uNormalMap, uv, dUVdx, dUVdy).xyz;
+  vec3 mapped = textureGrad(uNormalMap, uv, footprint.dUVdx, footprint.dUVdy).xyz;
 #else
   vec3 mapped = vec3(0.0, 0.0, 1.0);
 #endif
 
   Surface s;
   s.position = vPosition;
-  s.view = viewDirectionFrom(vPosition);
+  s.view = view;
   // Two-sided: flip the frame to the side of the triangle the camera sees (face normal from
   // the position derivatives, so silhouettes of closed objects keep their vertex normals).
-  vec3 faceNormal = cross(dPdx, dPdy);
+  vec3 faceNormal = cross(footprint.dPdx, footprint.dPdy);
   float faceLength = length(faceNormal);
   vec3 n = normalize(vNormal);
   float side = 1.0;
@@ -59,12 +70,9 @@ void main() {
   s.mappedNormal = mapped;
   setShadingNormal(s, mappedNormal(mapped, t, b, n));
   s.uv = uv;
-  s.dPdx = dPdx;
-  s.dPdy = dPdy;
-  s.dNdx = dNdx * side;
-  s.dNdy = dNdy * side;
-  s.dUVdx = dUVdx;
-  s.dUVdy = dUVdy;
+  footprint.dNdx *= side;  // the seen side's, as the vertex normal
+  footprint.dNdy *= side;
+  s.footprint = footprint;
   s.ndf = int(m.f0_ndf.a + 0.5);
   s.alpha = m.alpha_rho.xy;
   s.rho = m.alpha_rho.z;
@@ -74,7 +82,8 @@ void main() {
   vec3 emission = m.emission.rgb;
 #if MATERIAL_TEXTURES
   // The parameters at this point of the surface, before any method widens the lobe.
-  TexturedParameters texel = texturedParameters(m, vUV, dFdxFine(vUV), dFdyFine(vUV), REFERENCE_PASS != 0);
+  TexturedParameters texel = texturedParameters(m, vUV, s.footprint.dVertexUVdx, s.footprint.dVertexUVdy,
+                                                REFERENCE_PASS != 0);
   s.alpha = texel.alpha;
   s.f0 = texel.f0;
   s.diffuse = texel.diffuse;

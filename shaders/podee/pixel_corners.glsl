@@ -17,7 +17,7 @@ const vec2 PIXEL_CORNERS[4] = vec2[](vec2(-0.5, -0.5), vec2(0.5, -0.5), vec2(0.5
 // effect the base level, bilinear). docs/methods.md#podee, parameter `corner_lod`.
 vec3 cornerNormalMap(Surface s, vec2 uv, float lodBias) {
   float scale = exp2(lodBias);
-  return textureGrad(uNormalMap, uv, s.dUVdx * scale, s.dUVdy * scale).xyz;
+  return textureGrad(uNormalMap, uv, s.footprint.dUVdx * scale, s.footprint.dUVdy * scale).xyz;
 }
 
 // Exact corners: the attributes interpolated at the corner, the shading normal rebuilt there as
@@ -41,9 +41,10 @@ CornerRays interpolatedCornerRays(Surface s, float lodBias) {
   return rays;
 }
 
-// First-order corners: r + dr/dx ox + dr/dy oy from the centre's normal (normal map included, read
-// at the level cornerNormalMap chooses). Fine derivatives are one-sided within the 2x2 quad, so two
-// of the four corners are extrapolated.
+// First-order corners: origins from the pixel footprint (core/footprint.glsl), directions
+// r + dr/dx ox + dr/dy oy from the centre's normal (normal map included, read at the level
+// cornerNormalMap chooses; dr by quad differences, as it depends on the map). Fine derivatives are
+// one-sided within the 2x2 quad, so two of the four corners are extrapolated.
 CornerRays derivativeCornerRays(Surface s, float lodBias) {
   vec3 n = s.normal;
 #if MATERIAL_NORMAL_MAP
@@ -54,7 +55,7 @@ CornerRays derivativeCornerRays(Surface s, float lodBias) {
   CornerRays rays;
   for (int i = 0; i < 4; ++i) {
     vec2 o = PIXEL_CORNERS[i];
-    rays.origin[i] = s.position + o.x * s.dPdx + o.y * s.dPdy;
+    rays.origin[i] = footprintPositionAt(s.footprint, s.position, o);
     rays.direction[i] = normalize(r + o.x * drdx + o.y * drdy);
   }
   return rays;

@@ -6,6 +6,7 @@
 
 #include "core/cache_directory.hpp"
 #include "core/error.hpp"
+#include "core/pixel_filter_width.hpp"
 #include "eval/commands.hpp"
 #include "eval/outputs.hpp"
 #include "eval/prefilter_report.hpp"
@@ -60,8 +61,9 @@ void add_common(CLI::App* cmd, CommonOptions& o, bool many_methods) {
                   "how the ground truth is computed (" + backends + "; see 'glintlab info')")
       ->default_str(o.reference_backend);
   cmd->add_option("--reference-filter", o.reference_filter,
-                  "the reference's pixel filter: box (each pixel's own samples), or gaussian:S (every sample "
-                  "within 3 S pixels, Gaussian of S = 0.1 .. 4 pixels: a method's Gaussian footprint)")
+                  "the reference's pixel filter: box (each pixel's own samples), or gaussian[:S] (every sample "
+                  "within 3 S pixels, Gaussian of S = 0.1 .. 4 pixels, default " +
+                      pixel_filter_sigma_text() + ": the methods' Gaussian footprint)")
       ->default_str(o.reference_filter);
   cmd->add_option("--width", o.width, "film width in pixels (overrides the scene)")
       ->check(CLI::Range(1, kMaxFilmSide));

@@ -4,26 +4,25 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/pixel_filter_width.hpp"
 
 namespace glintlab {
 
 namespace {
 
-constexpr const char* kAllowed = "allowed: box, or gaussian:S with S the standard deviation in pixels, 0.1 .. 4";
-
-std::string shortest(float v) {
-  char buffer[32];
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, v).ptr;
-  return std::string(buffer, end);
+std::string allowed() {
+  return "allowed: box, gaussian (S = " + pixel_filter_sigma_text() +
+         ", the methods' pixel filter) or gaussian:S with S the standard deviation in pixels, 0.1 .. 4";
 }
 
 }  // namespace
 
 PixelFilter PixelFilter::parse(const std::string& text) {
   const auto bad = [&](const std::string& why) {
-    return InputError("--reference-filter " + text + ": " + why + "; " + kAllowed);
+    return InputError("--reference-filter " + text + ": " + why + "; " + allowed());
   };
   if (text == "box") return {};
+  if (text == "gaussian") return gaussian(kPixelFilterSigma);
   const std::string prefix = "gaussian:";
   if (text.rfind(prefix, 0) != 0) throw bad("unknown filter");
   const std::string number = text.substr(prefix.size());
@@ -35,7 +34,7 @@ PixelFilter PixelFilter::parse(const std::string& text) {
   return gaussian(sigma);
 }
 
-std::string PixelFilter::text() const { return is_box() ? "box" : "gaussian:" + shortest(sigma); }
+std::string PixelFilter::text() const { return is_box() ? "box" : "gaussian:" + shortest_text(sigma); }
 
 int PixelFilter::support_pixels() const {
   return is_box() ? 0 : static_cast<int>(std::ceil(kTruncation * sigma));

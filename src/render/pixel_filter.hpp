@@ -1,6 +1,7 @@
 #pragma once
 // The reference's pixel filter: how the sub-pixel samples of a pass become a pixel. `box` averages
-// the k x k samples inside the pixel; `gaussian:S` weights every sample within 3 S pixels of the
+// the k x k samples inside the pixel; `gaussian` (S = kPixelFilterSigma, the methods' pixel filter:
+// src/core/pixel_filter_width.hpp) or `gaussian:S` weights every sample within 3 S pixels of the
 // pixel's centre (per axis) by a Gaussian of standard deviation S pixels, normalised per pixel over
 // the samples that exist, so that a reference can share a method's Gaussian footprint model
 // (docs/methods.md, "Ground truth", "Pixel filter").
@@ -17,8 +18,8 @@ struct PixelFilter {
   Kind kind = Kind::box;
   float sigma = 0.0f;  ///< pixels; gaussian only
 
-  /// "box" or "gaussian:S" with S in kMinSigma .. kMaxSigma; throws InputError naming
-  /// --reference-filter, the value and what is allowed.
+  /// "box", "gaussian" (S = kPixelFilterSigma) or "gaussian:S" with S in kMinSigma .. kMaxSigma;
+  /// throws InputError naming --reference-filter, the value and what is allowed.
   static PixelFilter parse(const std::string& text);
   static PixelFilter gaussian(float sigma_pixels) { return {Kind::gaussian, sigma_pixels}; }
 

@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "core/gpu_contract.hpp"
+#include "core/pixel_filter_width.hpp"
 #include "scene/lights/light_kind.hpp"
 #include "scene/materials/material_kind.hpp"
 #include "tables/registry.hpp"
@@ -216,6 +217,12 @@ std::string contract_glsl() {
   return out;
 }
 
+/// A GLSL float literal of v (a decimal point even where the shortest form has none).
+std::string glsl_float(float v) {
+  std::string text = shortest_text(v);
+  return text.find_first_of(".e") == std::string::npos ? text + ".0" : text;
+}
+
 }  // namespace
 
 ShaderDefines contract_defines() {
@@ -244,6 +251,7 @@ ShaderDefines contract_defines() {
       {"LIGHT_FORM_NONE", std::to_string(static_cast<int>(LightForm::None))},
       {"LIGHT_FORM_DISK", std::to_string(static_cast<int>(LightForm::Disk))},
       {"LIGHT_FORM_POLYGON", std::to_string(static_cast<int>(LightForm::Polygon))},
+      {"PIXEL_FILTER_SIGMA", glsl_float(kPixelFilterSigma)},
   };
   for (const LightKind& k : all_light_kinds()) d.emplace_back(code_name(k), std::to_string(k.code()));
   d.emplace_back("LIGHT_KIND_COUNT", std::to_string(all_light_kinds().size()));

@@ -105,7 +105,7 @@ TEST_F(Cli, BadInputClassesExitWith2AndWriteNothing) {
   for (const char* filter : {"gaussian:0", "gaussian:abc", "tent"})
     for (const char* command : {"render --reference=4", "compare --spp 4", "animate --spp 4 --frames 2"})
       expect_bad_input(std::string(command) + " --reference-filter " + filter,
-                       {"--reference-filter", filter, "allowed: box, or gaussian:S", "0.1 .. 4"});
+                       {"--reference-filter", filter, "allowed: box, gaussian", "gaussian:S", "0.1 .. 4"});
 }
 
 TEST_F(Cli, OutputPathsAreCheckedBeforeAnythingIsWritten) {

@@ -150,7 +150,7 @@ vec4 evaluate(vec4 a, vec4 b) {
     // Footprints of about 2^-9 uv, anisotropic and rotated differently each time.
     float angle = 6.2831853 * fract(k * 0.618034);
     vec2 dx = exp2(-9.0) * vec2(cos(angle), sin(angle)), dy = exp2(-9.0) * (1.0 + 3.0 * fract(k * 0.41421356)) * vec2(-sin(angle), cos(angle));
-    BinomialSurface s = binomialSurface(uv, binomialFootprint(dx, dy, 1.5), b.z, b.w, 0.05, 8.0);
+    BinomialSurface s = binomialSurface(uv, binomialFootprint(uvFootprint(dx, dy), 1.5), b.z, b.w, 0.05, 8.0);
     sum += binomialNdf(s, a.xyz, b.xy, )" + std::to_string(model) + R"();
   }
   return vec4(sum / 64.0);
@@ -173,7 +173,7 @@ TEST(BinomialGlints, MeanNdfIsAnisotropicGgxWithRandomizedDensity) {
 std::vector<std::map<std::uint32_t, double>> footprint_grids(const std::vector<glm::vec4>& jacobians) {
   const std::string body = R"(
 vec4 evaluate(vec4 a, vec4 b) {
-  BinomialFootprint f = binomialFootprint(a.xy, a.zw, 1.5);
+  BinomialFootprint f = binomialFootprint(uvFootprint(a.xy, a.zw), 1.5);
   return b.x < 0.5 ? vec4(f.grids[0].weight, f.grids[1].weight, f.grids[2].weight, f.grids[3].weight)
                    : uintBitsToFloat(uvec4(f.grids[0].seed, f.grids[1].seed, f.grids[2].seed, f.grids[3].seed));
 })";
@@ -235,8 +235,8 @@ vec4 evaluate(vec4 a, vec4 b) {
   vec2 d1 = scale * pow(10.0, -4.0 * rand(i, 5.0)) * vec2(rand(i, 6.0) - 0.5, rand(i, 7.0) - 0.5);
   if (rand(i, 19.0) < 0.1) d1 = d0;  // a degenerate (line) footprint
   vec2 alpha = vec2(0.01) + 0.99 * vec2(rand(i, 9.0), rand(i, 10.0));
-  BinomialSurface s = binomialSurface(uv, binomialFootprint(d0, d1, 0.5 + 7.5 * rand(i, 8.0)), 50.0 * rand(i, 11.0),
-                                      10.0 * rand(i, 12.0), pow(10.0, -4.0 * rand(i, 13.0)),
+  BinomialSurface s = binomialSurface(uv, binomialFootprint(uvFootprint(d0, d1), 0.5 + 7.5 * rand(i, 8.0)),
+                                      50.0 * rand(i, 11.0), 10.0 * rand(i, 12.0), pow(10.0, -4.0 * rand(i, 13.0)),
                                       0.1 + 999.9 * rand(i, 14.0));
   vec3 f0 = vec3(rand(i, 18.0));
   vec3 l = binomialSpecularCos(s, a.xyz, b.xyz, f0, alpha, REMAINING_LOGNORMAL);

@@ -1,12 +1,13 @@
 // The footprint kernels of Kaplanyan et al. 2016 (shaders/lobe/footprint_filtering.glsl), on the
 // GL device, against independent computations in C++: the pixel filter is a Gaussian of standard
-// deviation 0.5 px (the talk, "Filtering Beckmann"), and the bounding rectangle widens the lobe at
+// deviation kPixelFilterSigma = 0.5 px (the talk, "Filtering Beckmann"), and the bounding rectangle widens the lobe at
 // least as much as the covariance along both slope axes (docs/methods.md#kaplanyan-rect).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
+#include "core/pixel_filter_width.hpp"
 #include "gl_fixture.hpp"
 
 using namespace glintlab;
@@ -26,7 +27,7 @@ double p22_beckmann(double x, double y, double ax, double ay) {
 
 TEST(FootprintKernels, KaplanyanBeckmannIsAHalfPixelGaussianPixelFilter) {
   // The filtered NDF must be the Beckmann P22 averaged over the pixel with a screen-space Gaussian
-  // of sigma = 0.5 px, mapped to slopes by the whole-pixel derivatives: h~(o) = h~ + U o. Summed on
+  // of sigma = kPixelFilterSigma = 0.5 px, mapped to slopes by the whole-pixel derivatives: h~(o) = h~ + U o. Summed on
   // a screen-space grid here, independently of C. (A sigma = 1 px filter is 4x too wide.)
   std::mt19937 rng(61);
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -52,7 +53,7 @@ TEST(FootprintKernels, KaplanyanBeckmannIsAHalfPixelGaussianPixelFilter) {
                                  "  Lobe l = kaplanyanBeckmannLobe(axisAlignedLobe(NDF_BECKMANN, p.xy), d.xy, d.zw, 100.0);\n"
                                  "  return vec4(slopeDensityBeckmann(p.zw, l.A)); }",
                                  derivs, inputs);
-  const double sigma = 0.5;
+  const double sigma = kPixelFilterSigma;
   const int n = 240;
   const double step = 12.0 / n;  // standard normal z over |z| < 6, o = sigma z
   for (std::size_t i = 0; i < cases.size(); ++i) {
@@ -72,8 +73,9 @@ TEST(FootprintKernels, KaplanyanBeckmannIsAHalfPixelGaussianPixelFilter) {
 
 TEST(FootprintKernels, KaplanyanBeckmannEqualsTokuyoshisKernelOnBeckmann) {
   // Both are R' = R + 2 sigma^2 U U^T for a Gaussian pixel filter; tokuyoshi's default sigma2 = 0.25
-  // (I3D 2019) is the talk's 0.5 px, so on a Beckmann material (tokuyoshi adds its kernel to alpha^2
-  // directly) the two matrices agree for the same derivatives when neither clamp acts.
+  // (I3D 2019; kPixelFilterSigma^2) is the talk's 0.5 px, so on a Beckmann material (tokuyoshi adds
+  // its kernel to alpha^2 directly) the two matrices agree for the same derivatives when neither
+  // clamp acts.
   std::mt19937 rng(62);
   std::uniform_real_distribution<float> u(-1.0f, 1.0f);
   std::vector<glm::vec4> a, b;
@@ -83,13 +85,16 @@ TEST(FootprintKernels, KaplanyanBeckmannEqualsTokuyoshisKernelOnBeckmann) {
     a.emplace_back(alpha, alpha * (1.0f + 0.5f * u(rng)), i % 3, 0.0f);
     b.emplace_back(u(rng) * scale, u(rng) * scale, u(rng) * scale, u(rng) * scale);
   }
+  const std::string sigma2 = pixel_filter_variance_text();  // tokuyoshi's default
   const auto gpu = evaluate_glsl(kIncludes,
                                  "vec4 evaluate(vec4 a, vec4 d) {\n"
                                  "  Lobe base = axisAlignedLobe(NDF_BECKMANN, a.xy);\n"
                                  "  Lobe k = kaplanyanBeckmannLobe(base, d.xy, d.zw, 100.0);\n"
-                                 "  Lobe t = tokuyoshiLobe(base, d.xy, d.zw, 0.25, 1e4);\n"
-                                 "  mat2 e = k.A - t.A;\n"
-                                 "  return vec4(e[0][0], e[1][1], e[0][1], k.A[0][0] + k.A[1][1]); }",
+                                 "  Lobe t = tokuyoshiLobe(base, d.xy, d.zw, " +
+                                     sigma2 +
+                                     ", 1e4);\n"
+                                     "  mat2 e = k.A - t.A;\n"
+                                     "  return vec4(e[0][0], e[1][1], e[0][1], k.A[0][0] + k.A[1][1]); }",
                                  a, b);
   for (std::size_t i = 0; i < a.size(); ++i) {
     const double tol = 2e-6 * gpu[i].w;

@@ -127,7 +127,7 @@ vec4 evaluate(vec4 a, vec4 b) {
   for (int i = 0; i < 64; ++i) {
     float k = float(i + 64 * int(b.y));
     vec2 uv = vec2(fract(k * 0.7548777), fract(k * 0.5698403)) * 3.0;
-    GlintPatch fp = glintPatch(uv, vec2(exp2(-10.0), 0.0), vec2(0.0, exp2(-10.0)), 8.0);
+    GlintPatch fp = glintPatch(uv, uvFootprint(vec2(exp2(-10.0), 0.0), vec2(0.0, exp2(-10.0))), 8.0);
     sum += glintP22(q, lobe, fp);
   }
   return vec4(sum / 64.0, slopeDensityBeckmann(a.xy, lobe.A), 0.0, 0.0);
@@ -157,7 +157,7 @@ vec4 evaluate(vec4 a, vec4 b) {
   vec2 uv = (vec2(rand(i, 1.0), rand(i, 2.0)) - 0.5) * 2000.0;
   vec2 d0 = scale * vec2(rand(i, 3.0) - 0.5, rand(i, 4.0) - 0.5);
   vec2 d1 = scale * pow(10.0, -3.0 * rand(i, 5.0)) * vec2(rand(i, 6.0) - 0.5, rand(i, 7.0) - 0.5);
-  GlintPatch fp = glintPatch(uv, d0, d1, 1.0 + 63.0 * rand(i, 8.0));
+  GlintPatch fp = glintPatch(uv, uvFootprint(d0, d1), 1.0 + 63.0 * rand(i, 8.0));
   vec2 sigma = vec2(0.005) + 0.995 * vec2(rand(i, 9.0), rand(i, 10.0));
   float rho = 1.98 * rand(i, 11.0) - 0.99;
   GlintSurface g = GlintSurface(fp, glintLobe(roughnessMatrix(sigma, rho)), 60.0 * rand(i, 12.0), rand(i, 13.0));

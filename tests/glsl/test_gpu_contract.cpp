@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cstddef>
 
+#include "core/pixel_filter_width.hpp"
 #include "gl_fixture.hpp"
 #include "tables/registry.hpp"
 #include "render/shader_contract.hpp"
@@ -108,7 +109,16 @@ TEST(GpuContract, GeneratedDefinesAreTheCppConstants) {
   const std::size_t first_material = expected.size() + all_light_kinds().size();
   for (std::size_t k = 0; k < all_material_kinds().size(); ++k)
     EXPECT_EQ(values[first_material + k], all_material_kinds()[k].code()) << expressions[first_material + k];
-  EXPECT_EQ(contract_defines().size(), expressions.size()) << "a define this test does not check";
+  const std::size_t float_defines = 1;  // PIXEL_FILTER_SIGMA: GeneratedPixelFilterSigmaIsTheCppConstant
+  EXPECT_EQ(contract_defines().size(), expressions.size() + float_defines) << "a define this test does not check";
+}
+
+TEST(GpuContract, GeneratedPixelFilterSigmaIsTheCppConstant) {
+  // The one pixel-filter width (src/core/pixel_filter_width.hpp) as the shaders see it: a float.
+  const auto v = evaluate_glsl("#include \"generated/gpu_contract.glsl\"\n",
+                               "vec4 evaluate(vec4 a, vec4 b) { float s = PIXEL_FILTER_SIGMA; return vec4(s); }",
+                               {glm::vec4(0.0f)}, {glm::vec4(0.0f)});
+  EXPECT_EQ(v[0].x, kPixelFilterSigma);
 }
 
 /// The GLSL expression that reads every field of a record (so that the driver keeps them all), and

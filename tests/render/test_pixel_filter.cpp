@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "core/metrics.hpp"
+#include "core/pixel_filter_width.hpp"
 #include "gl_fixture.hpp"
 #include "render/raster_reference.hpp"
 
@@ -122,6 +123,23 @@ TEST(PixelFilter, ParsesBoxAndGaussianAndRejectsAnythingElse) {
         EXPECT_NE(m.find(f), std::string::npos) << "'" << f << "' not in: " << m;
     }
   }
+}
+
+TEST(PixelFilter, OneWidthIsTheReferencesGaussianAndTheMethodsDefaults) {
+  // kPixelFilterSigma (src/core/pixel_filter_width.hpp): `gaussian` without a width, tokuyoshi's
+  // sigma2 (its square) and the footprint_sigma of the normal-map glint methods; kaplanyan-beckmann
+  // reads it in GLSL (PIXEL_FILTER_SIGMA: tests/glsl/test_gpu_contract.cpp, test_footprint_kernels.cpp).
+  EXPECT_EQ(PixelFilter::parse("gaussian"), PixelFilter::gaussian(kPixelFilterSigma));
+  EXPECT_EQ(PixelFilter::parse("gaussian").text(), "gaussian:" + pixel_filter_sigma_text());
+  const auto default_of = [](const std::string& method, const std::string& param) {
+    for (const ParamDecl& p : find_method(method).params)
+      if (p.name == param) return p.default_value;
+    ADD_FAILURE() << method << " has no parameter " << param;
+    return -1.0f;
+  };
+  EXPECT_EQ(default_of("tokuyoshi", "sigma2"), kPixelFilterSigma * kPixelFilterSigma);
+  EXPECT_EQ(default_of("yan2016", "footprint_sigma"), kPixelFilterSigma);
+  EXPECT_EQ(default_of("deng2022", "footprint_sigma"), kPixelFilterSigma);
 }
 
 TEST(PixelFilter, GaussianKeepsAConstantImageConstantUpToTheFilmsEdges) {

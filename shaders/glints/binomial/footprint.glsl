@@ -1,10 +1,11 @@
 // The pixel's footprint as Deliot & Belcour 2023 use it (docs/methods.md#deliot2023): the ellipse
-// of the uv Jacobian, its level of detail (cells screen_space_scale pixels across its minor
-// axis) and anisotropy, and the four anisotropic grids whose weights interpolate it
+// of the uv Jacobian (core/footprint.glsl), its level of detail (cells screen_space_scale pixels
+// across its minor axis) and anisotropy, and the four anisotropic grids whose weights interpolate it
 // tetrahedrally in (angle, log2 anisotropy, level of detail), so that every grid enters and
 // leaves with weight 0 as the footprint changes.
 #include "glints/binomial/random.glsl"
 #include "core/constants.glsl"
+#include "core/footprint.glsl"
 
 // Anisotropy levels: level j has cells 2^j times longer than wide, at 2^(j+1) angles over 180
 // degrees (one unrotated grid at level 0, where the cells are square). Footprints more eccentric
@@ -23,21 +24,6 @@ struct BinomialGrid {
 struct BinomialFootprint {
   BinomialGrid grids[4];
 };
-
-// The footprint ellipse of J = [dUVdx dUVdy]: its semi-axes are J's singular values, the roots of
-// the eigenvalues of J J^T = [[a, b], [b, c]]. Without cancellation (Kneiphof & Klein replaced the
-// paper's inverse of J): the larger from the half-difference d, the smaller as |det J| over the
-// larger; the major direction from the row of J J^T - L I that does not vanish.
-void footprintEllipse(vec2 dx, vec2 dy, out vec2 major, out float majorLength, out float minorLength) {
-  float a = dx.x * dx.x + dy.x * dy.x, b = dx.x * dx.y + dy.x * dy.y, c = dx.y * dx.y + dy.y * dy.y;
-  float d = 0.5 * (a - c);
-  float root = sqrt(d * d + b * b);
-  majorLength = sqrt(0.5 * (a + c) + root);
-  minorLength = majorLength > 0.0 ? abs(dx.x * dy.y - dx.y * dy.x) / majorLength : 0.0;
-  vec2 e = d >= 0.0 ? vec2(d + root, b) : vec2(b, root - d);
-  float len = length(e);
-  major = len > 0.0 ? e / len : vec2(1.0, 0.0);
-}
 
 // The grid of one lattice point: anisotropy level, angle index (any integer: taken modulo
 // 2^(level + 1), i.e. 180 degrees, so that the grids at 0 and 180 degrees are one) and lod.
@@ -76,15 +62,16 @@ void anisotropyTriangle(float theta, float level, out ivec2 vertex[3], out vec3 
   }
 }
 
-// The footprint of uv derivatives dUVdx, dUVdy. The triangle above times the lod interval
-// [floor(lod), floor(lod) + 1] is a prism; its tetrahedron around the footprint couples the
-// triangle's weights with the lod's (1 - t, t) monotonically (a staircase: the triangle's
-// cumulative weights against the split point 1 - t), which picks four of the prism's six grids.
+// The grids of a pixel footprint (in the glint uv: footprintInUnits), from its ellipse (majorAxis,
+// majorLength, minorLength: J's singular values, core/footprint.glsl). The triangle above times the
+// lod interval [floor(lod), floor(lod) + 1] is a prism; its tetrahedron around the footprint
+// couples the triangle's weights with the lod's (1 - t, t) monotonically (a staircase: the
+// triangle's cumulative weights against the split point 1 - t), which picks four of the prism's
+// six grids.
 // With the global vertex order, neighbouring prisms agree on their shared faces: continuous.
-BinomialFootprint binomialFootprint(vec2 dUVdx, vec2 dUVdy, float screenSpaceScale) {
-  vec2 major;
-  float majorLength, minorLength;
-  footprintEllipse(dUVdx, dUVdy, major, majorLength, minorLength);
+BinomialFootprint binomialFootprint(Footprint footprint, float screenSpaceScale) {
+  vec2 major = footprint.majorAxis;
+  float majorLength = footprint.majorLength, minorLength = footprint.minorLength;
   float maxRatio = exp2(float(BINOMIAL_MAX_LEVEL));
   minorLength = max(minorLength, majorLength / maxRatio);
   // Cells screenSpaceScale pixels across the minor axis (the paper halves this: Kneiphof & Klein's

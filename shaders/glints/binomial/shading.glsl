@@ -12,7 +12,7 @@
 // for Chermain's glints), cells screenSpaceScale pixels across.
 BinomialSurface prepareBinomialGlints(Surface s, MaterialData m, float screenSpaceScale) {
   float tiling = m.diffuse_tiling.a;
-  BinomialFootprint f = binomialFootprint(s.dUVdx / tiling, s.dUVdy / tiling, screenSpaceScale);
+  BinomialFootprint f = binomialFootprint(footprintInUnits(s.footprint, tiling), screenSpaceScale);
   return binomialSurface(s.uv / tiling, f, binomialGlintsLogDensity(m), binomialGlintsDensityRandomization(m),
                          binomialGlintsMicrofacetRoughness(m), binomialGlintsSlopeGridScale(m));
 }

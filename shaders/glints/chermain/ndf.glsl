@@ -3,6 +3,7 @@
 // the pixel's footprint, a weighted sum over the cells of a virtual MIP hierarchy of linearly
 // transformed products of two dictionary marginals (2021, eqs. 3-6, 10, 15, 18).
 #include "core/constants.glsl"
+#include "core/footprint.glsl"
 #include "glints/chermain/dictionary.glsl"
 #include "lobe/lobe.glsl"
 
@@ -63,15 +64,16 @@ GlintEllipse glintEllipse(vec2 uv, vec2 axis0, vec2 axis1, int level) {
   return GlintEllipse(st, abc, ivec2(ceil(st - halfBox)), ivec2(floor(st + halfBox)));
 }
 
-// The uv derivatives as an ellipse with a major axis and a minor one lengthened so that the
-// eccentricity is at most maxAnisotropy (pbrt's EWA clamp); its level of detail
-// lod = levels - 1 + log2(|minor|): level l has 2^(levels - 1 - l) cells per uv unit, so the minor
-// axis spans one to two cells of level floor(lod).
-GlintPatch glintPatch(vec2 uv, vec2 dUVdx, vec2 dUVdy, float maxAnisotropy) {
-  vec2 major = dUVdx, minor = dUVdy;
+// The pixel footprint's uv derivatives (in the glint uv: core/footprint.glsl, footprintInUnits) as
+// an ellipse with a major axis, the longer of the two, and a minor one lengthened so that the
+// eccentricity is at most maxAnisotropy (pbrt's EWA clamp, as the papers' shaders); its level of
+// detail lod = levels - 1 + log2(|minor|): level l has 2^(levels - 1 - l) cells per uv unit, so
+// the minor axis spans one to two cells of level floor(lod).
+GlintPatch glintPatch(vec2 uv, Footprint footprint, float maxAnisotropy) {
+  vec2 major = footprint.dUVdx, minor = footprint.dUVdy;
   if (dot(major, major) < dot(minor, minor)) {
-    major = dUVdy;
-    minor = dUVdx;
+    major = footprint.dUVdy;
+    minor = footprint.dUVdx;
   }
   float majorLength = length(major), minorLength = length(minor);
   if (minorLength * maxAnisotropy < majorLength && minorLength > 0.0) {

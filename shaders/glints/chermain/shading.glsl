@@ -28,7 +28,7 @@ GlintSurface prepareGlints(inout Surface s, MaterialData m, bool lean, bool corr
 #endif
   if (!correlated) lobe.A[0][1] = lobe.A[1][0] = 0.0;
   float tiling = m.diffuse_tiling.a;
-  return GlintSurface(glintPatch(s.uv / tiling, s.dUVdx / tiling, s.dUVdy / tiling, glintyMaxAnisotropy(m)),
+  return GlintSurface(glintPatch(s.uv / tiling, footprintInUnits(s.footprint, tiling), glintyMaxAnisotropy(m)),
                       glintLobe(lobe.A), glintyLogDensity(m), glintyRelativeArea(m));
 }
 

@@ -26,17 +26,8 @@ struct PositionNormalFootprint {
   ivec2 size;         // the map's texels
 };
 
-// The footprint's covariance in texels^2: a screen-space Gaussian of `sigma` pixels mapped by the
-// uv Jacobian (dUVdx, dUVdy: derivatives of the normal map's coordinates), Sigma_p = sigma^2
-// (Jx Jx^T + Jy Jy^T) with Jx = dUVdx (W, H). Non-finite derivatives (at the horizon) give a point.
-mat2 pixelFootprintCovariance(vec2 dUVdx, vec2 dUVdy, ivec2 size, float sigma) {
-  vec2 jx = dUVdx * vec2(size), jy = dUVdy * vec2(size);
-  mat2 c = sigma * sigma * (outerProduct(jx, jx) + outerProduct(jy, jy));
-  bool finite = !any(isnan(vec4(c[0], c[1]))) && !any(isinf(vec4(c[0], c[1])));
-  return finite ? c : mat2(0.0);
-}
-
-// The footprint N(centre, sigmaP) (texels) prepared for the sums below. Truncation: the elements
+// The footprint N(centre, sigmaP) (texels; sigmaP: the pixel footprint's texel covariance,
+// footprintTexelCovariance in core/footprint.glsl) prepared for the sums below. Truncation: the elements
 // in the bounding box of the 3-sigma ellipse of T, whose half extents are kept within maxRadius
 // texels by scaling Sigma_p down (a large footprint is then under-blurred: the baseline's cost is
 // O(maxRadius^2 k^2) per evaluation).

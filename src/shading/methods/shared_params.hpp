@@ -2,6 +2,7 @@
 // Parameters and citations that several method descriptors share.
 #include <string>
 
+#include "core/pixel_filter_width.hpp"
 #include "shading/method.hpp"
 
 namespace glintlab {
@@ -74,10 +75,12 @@ inline ParamDecl binomial_remaining_count_param() {
 
 /// The pixel's Gaussian footprint of the methods on normal-map-glints materials (yan2016, deng2022).
 inline ParamDecl footprint_sigma_param() {
-  return {"footprint_sigma", 0.5f, 0.05f, 4.0f,
+  return {"footprint_sigma", kPixelFilterSigma, 0.05f, 4.0f,
           "standard deviation of the pixel's Gaussian footprint in pixels, mapped to the normal map's texels "
-          "by the uv Jacobian (0.5: about a pixel's box; the reference's --reference-filter gaussian:0.5 "
-          "matches it)"};
+          "by the uv Jacobian (default " +
+              pixel_filter_sigma_text() +
+              ": glintlab's one pixel-filter width, about a pixel's box; the reference's --reference-filter "
+              "gaussian matches it)"};
 }
 
 inline constexpr const char* kChermain2020Citation =

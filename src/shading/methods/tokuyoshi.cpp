@@ -1,4 +1,5 @@
 // Descriptor of `tokuyoshi`: projected-space NDF filtering (Tokuyoshi & Kaplanyan 2019, 2021).
+#include "core/pixel_filter_width.hpp"
 #include "shading/methods/shared_params.hpp"
 #include "shading/registry.hpp"
 
@@ -15,9 +16,10 @@ MethodDescriptor tokuyoshi_method() {
                  "projected half vector (towards the light's centre), scaled down to at most kappa, "
                  "P = diag(beta^2) + K, and back with A = (P + det(P) I) / (1 + tr(P) + det(P)). "
                  "Beckmann materials add K to alpha^2.",
-      .params = {{"sigma2", 0.25f, 0.0f, 1.0f,
-                  "variance of the Gaussian pixel filter in pixels^2 (0.25: I3D 2019; 1/(4 pi) reproduces "
-                  "JCGT 2021's gain)"},
+      .params = {{"sigma2", kPixelFilterSigma * kPixelFilterSigma, 0.0f, 1.0f,
+                  "variance of the Gaussian pixel filter in pixels^2 (default " + pixel_filter_variance_text() +
+                      ": the square of glintlab's one pixel-filter width, as I3D 2019; 1/(4 pi) reproduces "
+                      "JCGT 2021's gain)"},
                  {"kappa", 0.18f, 0.0f, 1.0f, "clamp of the kernel's largest eigenvalue"},
                  area_lights_param()},
       .tables = {},

@@ -7,8 +7,10 @@
 #include "core/atomic_file.hpp"
 #include "core/colour.hpp"
 #include "core/image_io.hpp"
+#include "core/label_font.hpp"
 #include "core/output_stage.hpp"
 #include "eval/commands.hpp"
+#include "eval/crop_strip.hpp"
 #include "eval/outputs.hpp"
 
 namespace glintlab {
@@ -48,28 +50,11 @@ std::vector<Region> worst_regions(const Image& error_sum, int size, int count) {
   return chosen;
 }
 
-/// White pixels between the crops of a strip (metrics.json's crops[].gap).
-constexpr int kStripGap = 2;
-
-/// Crops of the reference and each method side by side, enlarged, kStripGap apart: an empty
-/// strip for `columns` crops of `r`; paste_crop fills one column.
-Image side_by_side_strip(int columns, const Region& r, int zoom) {
-  const int cell = r.size * zoom, gap = kStripGap;
-  return Image(columns * (cell + gap) - gap, cell, glm::vec3(1.0f));
-}
-
-void paste_crop(Image& strip, int column, const Image& display, const Region& r, int zoom) {
-  const int cell = r.size * zoom, gap = kStripGap;
-  const Image crop = display.crop(r.x, r.y, r.size, r.size).upscale(zoom);
-  for (int y = 0; y < crop.height(); ++y)
-    for (int x = 0; x < crop.width(); ++x) strip.at(column * (cell + gap) + x, y) = crop.at(x, y);
-}
-
 std::string format_table(const std::vector<MethodMetrics>& rows, const ReferenceFrame& reference) {
   std::ostringstream s;
   char line[256];
-  std::snprintf(line, sizeof line, "%-22s %10s %10s %8s %9s %9s %9s\n", "method", "rmse", "rmse_spec", "psnr",
-                "energy", "e_spec", "max_err");
+  std::snprintf(line, sizeof line, "%-22s %10s %10s %8s %9s %9s %9s\n", "method", "rmse", "rmse_spec", "psnr", "energy",
+                "e_spec", "max_err");
   s << line;
   for (const auto& r : rows) {
     const auto& m = r.metrics;
@@ -103,7 +88,8 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
   Image error_sum(session.width(), session.height());
   float error_scale = 0.0f;
   for (std::size_t i = 0; i < methods.size(); ++i) {
-    rows.push_back({methods[i].method->id, measure(frames[i].total, frames[i].specular, reference.total, reference.specular)});
+    rows.push_back(
+        {methods[i].method->id, measure(frames[i].total, frames[i].specular, reference.total, reference.specular)});
     const Image error = abs_error_map(frames[i].total, reference.total);
     for (std::size_t p = 0; p < error.pixel_count(); ++p) error_sum.pixels()[p] += error.pixels()[p];
     // One colour scale for all maps (the largest 99.5th percentile) so they compare at a glance.
@@ -112,14 +98,20 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
   if (error_scale <= 0.0f) error_scale = 1.0f;
   const auto regions = worst_regions(error_sum, std::max(16, std::min(session.width(), session.height()) / 8), 3);
   const int columns = static_cast<int>(methods.size()) + 1;
-  std::vector<Image> strips;
-  std::vector<int> zooms;
-  for (const auto& r : regions) {
-    zooms.push_back(std::max(1, 192 / r.size));
-    strips.push_back(side_by_side_strip(columns, r, zooms.back()));
-  }
-  auto add_crops = [&](int column, const Image& display) {
-    for (std::size_t r = 0; r < regions.size(); ++r) paste_crop(strips[r], column, display, regions[r], zooms[r]);
+  std::string font_error;
+  const std::optional<LabelFont> font = LabelFont::load(kLabelFontFile, font_error);
+  if (!font)
+    std::cerr << "glintlab: warning: " << font_error
+              << ": the worst-region crops are written without their names (Debian: apt-get install "
+                 "fonts-dejavu-core)\n";
+  std::vector<CropStrip> strips;
+  for (const auto& r : regions)
+    strips.emplace_back(columns, CropWindow{r.x, r.y, r.size}, std::max(1, 192 / r.size), font.has_value());
+  auto add_crops = [&](int column, const std::string& name, const Image& display) {
+    for (auto& strip : strips) {
+      strip.paste(column, display);
+      if (font) strip.label(column, name, *font);
+    }
   };
 
   // Published as a unit: written into a staging folder, moved into `out` with the metrics last.
@@ -127,25 +119,28 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
   const std::filesystem::path& staged = stage.path();
   const Film& film = session.scene().film;
   write_reference(staged, "reference", reference_estimate, film);
-  add_crops(0, tonemap_for_display(reference.total, film.exposure, film.bloom));
+  add_crops(0, "reference", tonemap_for_display(reference.total, film.exposure, film.bloom));
   for (std::size_t i = 0; i < methods.size(); ++i) {
     write_frame(staged, methods[i].method->id, frames[i], film);
     write_png(staged / (methods[i].method->id + "-error.png"),
               false_colour(abs_error_map(frames[i].total, reference.total), error_scale));
-    add_crops(static_cast<int>(i) + 1, tonemap_for_display(frames[i].total, film.exposure, film.bloom));
+    add_crops(static_cast<int>(i) + 1, methods[i].method->id,
+              tonemap_for_display(frames[i].total, film.exposure, film.bloom));
   }
   nlohmann::json crops = nlohmann::json::array();
   for (std::size_t r = 0; r < regions.size(); ++r) {
     const std::string name = "worst-region-" + std::to_string(r + 1) + ".png";
-    write_png(staged / name, strips[r]);
-    // zoom, cell (its side in the strip) and gap: what `glintlab report` needs to label each crop.
+    write_png(staged / name, strips[r].image());
+    // zoom, cell (its side in the strip), gap and the label band below the crops: what `glintlab
+    // report` needs to cut the crops out again.
     crops.push_back({{"file", name},
                      {"x", regions[r].x},
                      {"y", regions[r].y},
                      {"size", regions[r].size},
-                     {"zoom", zooms[r]},
-                     {"cell", regions[r].size * zooms[r]},
-                     {"gap", kStripGap}});
+                     {"zoom", strips[r].zoom()},
+                     {"cell", strips[r].cell()},
+                     {"gap", CropStrip::kGap},
+                     {"label_height", strips[r].label_height()}});
   }
 
   std::ostringstream csv;
@@ -170,7 +165,7 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
   }
   json["error_map_scale"] = error_scale;
   json["crops"] = crops;
-  json["columns"] = "crops: reference, then methods in order";
+  json["columns"] = "crops: reference, then methods in order, each named in the band below it";
   for (const auto& row : rows) {
     const auto& m = row.metrics;
     char line[256];

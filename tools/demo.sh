@@ -23,14 +23,23 @@ out=out/demo
 # (README, "Set-up": measured).
 spp=1024
 
+# Each part's wall time, and the CPU time of everything it ran (this shell's waited-for children,
+# /proc/<pid>/stat fields 16 and 17), which says how much of the wall time was the machine's load.
 declare -a parts
 now() { echo "${EPOCHREALTIME/./}"; }  # microseconds
+cpu() {  # microseconds
+  local stat fields
+  stat=$(</proc/$$/stat)
+  read -ra fields <<<"${stat##*) }"
+  echo $(((fields[13] + fields[14]) * 1000000 / $(getconf CLK_TCK)))
+}
 timed() {
-  local name=$1 start
+  local name=$1 start start_cpu
   shift
   start=$(now)
+  start_cpu=$(cpu)
   "$@"
-  parts+=("$name $(($(now) - start))")
+  parts+=("$name $(($(now) - start)) $(($(cpu) - start_cpu))")
 }
 seconds() { printf '%d.%d' $(($1 / 1000000)) $(($1 / 100000 % 10)); }
 
@@ -68,11 +77,14 @@ timed compare "$glintlab" compare --methods all --spp "$spp" -o "$out"
 timed report "$glintlab" report -o "$out/report" "$out"
 
 total=0
+total_cpu=0
 line=""
 for p in "${parts[@]}"; do
-  total=$((total + ${p#* }))
-  line+="${line:+, }${p% *} $(seconds "${p#* }") s"
+  read -r name wall cpu_time <<<"$p"
+  total=$((total + wall))
+  total_cpu=$((total_cpu + cpu_time))
+  line+="${line:+, }$name $(seconds "$wall") s (CPU $(seconds "$cpu_time") s)"
 done
 echo
 echo "glintlab: the report is $out/report/index.html (open it in a browser); images and metrics in $out/"
-echo "glintlab: make demo took $(seconds $total) s: $line"
+echo "glintlab: make demo took $(seconds $total) s (CPU $(seconds $total_cpu) s on $(nproc) cores, load now $(cut -d' ' -f1-3 /proc/loadavg)): $line"

@@ -1,5 +1,6 @@
 # glintlab: the two set-up commands (README) and a few conveniences.
-#   make demo   install missing Debian packages, build (Release), compare every method on the default scene
+#   make demo   install the missing Debian packages the glintlab binary needs, build only it (build/demo),
+#               compare every method on the default scene and write the HTML report (tools/demo.sh)
 #   make test   install missing Debian packages, build (Release and the clang fuzz targets), run the whole
 #               suite through ctest, then the fuzz targets' smoke pass (docs/fuzzing.md)
 #   make view   open the viewer on the default scene (needs a display; docs/viewer.md)
@@ -29,8 +30,8 @@ build-fuzz: deps
 	  cmake --preset fuzz >/dev/null && cmake --build $(FUZZ_BUILD) -j $(JOBS); \
 	else echo "glintlab: clang++ not found: fuzz targets skipped"; fi
 
-demo: build
-	$(BUILD)/glintlab compare --scene builtin:spheres --methods all -o out/demo
+demo:
+	@JOBS=$(JOBS) tools/demo.sh
 
 view: build
 	$(BUILD)/glintlab view --mode split

@@ -8,6 +8,8 @@ set(glintlab_test_costs
   "^Images/EveryMethodOnBuiltinScene\\.IsFinite/(gltf_showcase|glint_area_lights|glint_tubes|normal_glints_noise)( |$)" 60
   "^GltfMaterials\\.TexturedMaterialEqualsTheMaterialOfItsTexels" 20
   "^Images/EveryMethodOnBuiltinScene\\.IsFinite/glint_sphere( |$)" 45
+  # The default scene: conventional and the reference in its five material variants.
+  "^Images/EveryMethodOnBuiltinScene\\.IsFinite/every_family( |$)" 45
   "^Shaders[./]EveryMethodAndPassCompiles" 35
   "^Chermain\\.GeometricGlintAntiAliasing" 40
   "^Images/EveryMethodOnBuiltinScene\\." 5

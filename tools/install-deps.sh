@@ -1,25 +1,38 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages glintlab needs to build, test and run, if any are missing.
+# Installs the Debian 12 packages glintlab needs, if any are missing.
 # Usage: tools/install-deps.sh          what building, testing and running need (ffmpeg: animate's MP4s;
 #                                       clang and its libFuzzer runtime: the fuzz targets, docs/fuzzing.md;
 #                                       GLFW and Dear ImGui: the viewer; xvfb: its test on a virtual display;
 #                                       chromium: the HTML report's test in a real browser)
+#        tools/install-deps.sh demo     only what building and running the glintlab binary need (make demo):
+#                                       no test, benchmark, fuzzing, video or browser packages
 #        tools/install-deps.sh results  also what the runs of tools/results.py use (jq: tools/bench-constant-cost.sh)
 # (as root, or with sudo available)
 set -euo pipefail
 
-packages=(
+# Building and running glintlab: the compiler and build tools, OpenGL through EGL on Mesa (llvmpipe
+# without a GPU), the header libraries, GLFW and Dear ImGui (the viewer is part of the binary) and
+# the font the worst-region crops are labelled with.
+demo_packages=(
   build-essential cmake ninja-build pkg-config
   libepoxy-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   libglm-dev libopenexr-dev libstb-dev libtinygltf-dev libtinyobjloader-dev
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libeigen3-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
   libglfw3-dev libimgui-dev
+  fonts-dejavu-core
+)
+packages=("${demo_packages[@]}"
+  libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-dev
   ffmpeg
   xvfb xauth chromium
 )
-if [[ "${1:-}" == results ]]; then packages+=(jq); fi
+case "${1:-}" in
+  "") ;;
+  demo) packages=("${demo_packages[@]}") ;;
+  results) packages+=(jq) ;;
+  *) echo "tools/install-deps.sh: unknown list '$1'; allowed: demo, results, or none (everything)" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do

@@ -7,8 +7,10 @@
 #include "core/atomic_file.hpp"
 #include "core/colour.hpp"
 #include "core/image_io.hpp"
+#include "core/label_font.hpp"
 #include "core/output_stage.hpp"
 #include "eval/commands.hpp"
+#include "eval/crop_strip.hpp"
 #include "eval/outputs.hpp"
 
 namespace glintlab {
@@ -51,23 +53,6 @@ std::vector<Region> worst_regions(const Image& error_sum, int size, int count) {
     chosen.push_back(best);
   }
   return chosen;
-}
-
-/// White pixels between the crops of a strip (metrics.json's crops[].gap).
-constexpr int kStripGap = 2;
-
-/// Crops of the reference and each method side by side, enlarged, kStripGap apart: an empty
-/// strip for `columns` crops of `r`; paste_crop fills one column.
-Image side_by_side_strip(int columns, const Region& r, int zoom) {
-  const int cell = r.size * zoom, gap = kStripGap;
-  return Image(columns * (cell + gap) - gap, cell, glm::vec3(1.0f));
-}
-
-void paste_crop(Image& strip, int column, const Image& display, const Region& r, int zoom) {
-  const int cell = r.size * zoom, gap = kStripGap;
-  const Image crop = display.crop(r.x, r.y, r.size, r.size).upscale(zoom);
-  for (int y = 0; y < crop.height(); ++y)
-    for (int x = 0; x < crop.width(); ++x) strip.at(column * (cell + gap) + x, y) = crop.at(x, y);
 }
 
 std::string format_table(const std::vector<MethodMetrics>& rows, const ReferenceFrame& reference) {
@@ -121,14 +106,20 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
   if (error_scale <= 0.0f) error_scale = 1.0f;
   const auto regions = worst_regions(error_sum, std::max(16, std::min(session.width(), session.height()) / 8), 3);
   const int columns = static_cast<int>(methods.size()) + 1;
-  std::vector<Image> strips;
-  std::vector<int> zooms;
-  for (const auto& r : regions) {
-    zooms.push_back(std::max(1, 192 / r.size));
-    strips.push_back(side_by_side_strip(columns, r, zooms.back()));
-  }
-  auto add_crops = [&](int column, const Image& display) {
-    for (std::size_t r = 0; r < regions.size(); ++r) paste_crop(strips[r], column, display, regions[r], zooms[r]);
+  std::string font_error;
+  const std::optional<LabelFont> font = LabelFont::load(kLabelFontFile, font_error);
+  if (!font)
+    std::cerr << "glintlab: warning: " << font_error
+              << ": the worst-region crops are written without their names (Debian: apt-get install "
+                 "fonts-dejavu-core)\n";
+  std::vector<CropStrip> strips;
+  for (const auto& r : regions)
+    strips.emplace_back(columns, CropWindow{r.x, r.y, r.size}, std::max(1, 192 / r.size), font.has_value());
+  auto add_crops = [&](int column, const std::string& name, const Image& display) {
+    for (auto& strip : strips) {
+      strip.paste(column, display);
+      if (font) strip.label(column, name, *font);
+    }
   };
 
   // Published as a unit: written into a staging folder, moved into `out` with the metrics last.
@@ -136,25 +127,28 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
   const std::filesystem::path& staged = stage.path();
   const Film& film = session.scene().film;
   write_reference(staged, "reference", reference_estimate, film);
-  add_crops(0, tonemap_for_display(reference.total, film.exposure, film.bloom));
+  add_crops(0, "reference", tonemap_for_display(reference.total, film.exposure, film.bloom));
   for (std::size_t i = 0; i < methods.size(); ++i) {
     write_frame(staged, methods[i].file_stem(), frames[i], film);
     write_png(staged / (methods[i].file_stem() + "-error.png"),
               false_colour(abs_error_map(frames[i].total, reference.total), error_scale));
-    add_crops(static_cast<int>(i) + 1, tonemap_for_display(frames[i].total, film.exposure, film.bloom));
+    add_crops(static_cast<int>(i) + 1, methods[i].display_name(),
+              tonemap_for_display(frames[i].total, film.exposure, film.bloom));
   }
   nlohmann::json crops = nlohmann::json::array();
   for (std::size_t r = 0; r < regions.size(); ++r) {
     const std::string name = "worst-region-" + std::to_string(r + 1) + ".png";
-    write_png(staged / name, strips[r]);
-    // zoom, cell (its side in the strip) and gap: what `glintlab report` needs to label each crop.
+    write_png(staged / name, strips[r].image());
+    // zoom, cell (its side in the strip), gap and the label band below the crops: what `glintlab
+    // report` needs to cut the crops out again.
     crops.push_back({{"file", name},
                      {"x", regions[r].x},
                      {"y", regions[r].y},
                      {"size", regions[r].size},
-                     {"zoom", zooms[r]},
-                     {"cell", regions[r].size * zooms[r]},
-                     {"gap", kStripGap}});
+                     {"zoom", strips[r].zoom()},
+                     {"cell", strips[r].cell()},
+                     {"gap", CropStrip::kGap},
+                     {"label_height", strips[r].label_height()}});
   }
 
   std::ostringstream csv;
@@ -179,7 +173,7 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
   }
   json["error_map_scale"] = error_scale;
   json["crops"] = crops;
-  json["columns"] = "crops: reference, then methods in order";
+  json["columns"] = "crops: reference, then methods in order, each named in the band below it";
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const MethodMetrics& row = rows[i];
     const auto& m = row.metrics;

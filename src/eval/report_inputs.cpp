@@ -165,15 +165,19 @@ CompareRun read_compare(const Field& root, const fs::path& dir) {
     require_file(strip, root);
     const auto dims = check_png_header(strip);
     if (!dims) throw InputError(strip.string() + ": not a PNG file; " + root.file().string() + " names it");
-    // compare writes cell and gap since the report; older outputs: the strip's height, 2-px gaps.
-    w.cell = c.has("cell") ? c["cell"].integer(1) : static_cast<int>(dims->second);
+    // compare writes cell and gap since the report, label_height since it names the crops; older
+    // outputs: the strip's height, 2-px gaps, no labels.
+    w.label_height = c.has("label_height") ? c["label_height"].integer(0) : 0;
+    w.cell = c.has("cell") ? c["cell"].integer(1) : static_cast<int>(dims->second) - w.label_height;
     w.gap = c.has("gap") ? c["gap"].integer(0) : 2;
     const std::int64_t width = static_cast<std::int64_t>(columns) * (static_cast<std::int64_t>(w.cell) + w.gap) - w.gap;
-    if (dims->first != width || dims->second != w.cell)
+    const std::int64_t height = static_cast<std::int64_t>(w.cell) + w.label_height;
+    if (dims->first != width || dims->second != height)
       throw InputError(strip.string() + ": is " + std::to_string(dims->first) + "x" + std::to_string(dims->second) +
                        "; allowed: the strip of " + std::to_string(columns) + " crops (reference and methods) of " +
-                       std::to_string(w.cell) + " px, " + std::to_string(w.gap) + " px apart, that " +
-                       root.file().string() + " describes: " + std::to_string(width) + "x" + std::to_string(w.cell));
+                       std::to_string(w.cell) + " px, " + std::to_string(w.gap) + " px apart, above a " +
+                       std::to_string(w.label_height) + "-px band of their names, that " + root.file().string() +
+                       " describes: " + std::to_string(width) + "x" + std::to_string(height));
   }
   return run;
 }

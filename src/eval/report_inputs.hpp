@@ -20,11 +20,12 @@ struct CompareRow {
 };
 
 /// One worst-region strip of compare: crops of the reference, then of each method in order, each
-/// `cell` pixels square, `gap` pixels apart.
+/// `cell` pixels square, `gap` pixels apart, above a band `label_height` pixels tall holding their
+/// names (0: none).
 struct WorstRegion {
   std::string file;
   int x = 0, y = 0, size = 0;
-  int cell = 0, gap = 0;
+  int cell = 0, gap = 0, label_height = 0;
 };
 
 struct CompareRun {

@@ -5,13 +5,9 @@
 
 namespace glintlab {
 
-namespace {
-int wrap(int i, int n) { return i >= 0 && i < n ? i : ((i % n) + n) % n; }
-}  // namespace
-
 glm::dvec3 NormalField::texel(int x, int y) const {
-  const auto i = static_cast<std::size_t>(wrap(y, map_->height)) * static_cast<std::size_t>(map_->width) +
-                 static_cast<std::size_t>(wrap(x, map_->width));
+  const auto i = static_cast<std::size_t>(wrap_texel(y, map_->height)) * static_cast<std::size_t>(map_->width) +
+                 static_cast<std::size_t>(wrap_texel(x, map_->width));
   return glm::dvec3(map_->normals[i]);
 }
 

@@ -11,6 +11,9 @@
 
 namespace glintlab {
 
+/// Index i of a map n texels wide that wraps (GL_REPEAT), in [0, n).
+inline int wrap_texel(int i, int n) { return i >= 0 && i < n ? i : ((i % n) + n) % n; }
+
 class NormalField {
  public:
   explicit NormalField(const NormalMap& map) : map_(&map) {}

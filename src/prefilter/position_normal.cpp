@@ -11,8 +11,6 @@ namespace glintlab {
 
 namespace {
 
-int wrap(int i, int n) { return i >= 0 && i < n ? i : ((i % n) + n) % n; }
-
 double gaussian2(glm::dvec2 x, const glm::dmat2& cov) {
   const double det = glm::determinant(cov);
   if (!(det > 0)) return 0.0;
@@ -83,8 +81,8 @@ double PositionNormalDistribution::element_sigma() const { return 1.5 / (k_ * st
 
 const PositionNormalDistribution::Element& PositionNormalDistribution::element(int ex, int ey) const {
   const int w = width() * k_, h = height() * k_;
-  return elements_[static_cast<std::size_t>(wrap(ey, h)) * static_cast<std::size_t>(w) +
-                   static_cast<std::size_t>(wrap(ex, w))];
+  return elements_[static_cast<std::size_t>(wrap_texel(ey, h)) * static_cast<std::size_t>(w) +
+                   static_cast<std::size_t>(wrap_texel(ex, w))];
 }
 
 double PositionNormalDistribution::suggested_extent() const {

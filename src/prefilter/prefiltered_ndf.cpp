@@ -10,12 +10,11 @@
 #include <glm/common.hpp>
 
 #include "core/error.hpp"
+#include "prefilter/normal_field.hpp"
 
 namespace glintlab {
 
 namespace {
-
-int wrap(int i, int n) { return i >= 0 && i < n ? i : ((i % n) + n) % n; }
 
 bool kept(const FootprintRecord& r, int bit) {
   return ((bit < 32 ? r.mask_lo >> bit : r.mask_hi >> (bit - 32)) & 1u) != 0;
@@ -159,7 +158,7 @@ std::vector<PrefilteredNdf::Weighted> PrefilteredNdf::interpolation(glm::dvec2 c
       for (int dx = 0; dx < 2; ++dx) {
         const double w = level_weight * (dx ? f.x : 1 - f.x) * (dy ? f.y : 1 - f.y);
         if (w <= 0.0) continue;
-        const int x = wrap(static_cast<int>(g0.x) + dx, level.nx), y = wrap(static_cast<int>(g0.y) + dy, level.ny);
+        const int x = wrap_texel(static_cast<int>(g0.x) + dx, level.nx), y = wrap_texel(static_cast<int>(g0.y) + dy, level.ny);
         out.push_back({level.first_footprint + static_cast<std::uint32_t>(y * level.nx + x), w});
       }
   }

@@ -24,6 +24,6 @@ const std::vector<BuiltinScene>& builtin_scenes();
 /// TOML text of a built-in scene. Throws InputError for an unknown name, listing the known ones.
 std::string builtin_scene_toml(const std::string& name);
 
-inline constexpr const char* kDefaultScene = "builtin:spheres";
+inline constexpr const char* kDefaultScene = "builtin:every-family";
 
 }  // namespace glintlab

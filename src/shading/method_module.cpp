@@ -30,8 +30,6 @@ std::string without_comments(const std::string& text) {
   return out;
 }
 
-bool identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
 struct ParamUses {
   std::set<std::string> read;      ///< names of every `param_<name>` in the text
   std::set<std::string> declared;  ///< names the text declares itself (`uniform <type> param_<name>`)
@@ -42,13 +40,13 @@ ParamUses param_uses(const std::string& source) {
   ParamUses uses;
   std::string previous[2];  // the two identifiers before the current one
   for (std::size_t i = 0; i < text.size();) {
-    if (!identifier_char(text[i])) {
+    if (!glsl_identifier_char(text[i])) {
       if (!std::isspace(static_cast<unsigned char>(text[i]))) previous[0] = previous[1] = "";
       ++i;
       continue;
     }
     std::size_t end = i;
-    while (end < text.size() && identifier_char(text[end])) ++end;
+    while (end < text.size() && glsl_identifier_char(text[end])) ++end;
     const std::string word = text.substr(i, end - i);
     if (word.starts_with(kParamPrefix) && word.size() > std::string(kParamPrefix).size()) {
       const std::string name = word.substr(std::string(kParamPrefix).size());

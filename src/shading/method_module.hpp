@@ -2,11 +2,15 @@
 // A method's parameter uniforms, generated from its descriptor: the forward program includes
 // generated/methods/<id>.glsl, which declares `uniform float param_<name>;` for every ParamDecl
 // and then includes the module, shaders/methods/<id>.glsl. Modules never declare them.
+#include <cctype>
 #include <string>
 
 #include "shading/method.hpp"
 
 namespace glintlab {
+
+/// A character of a GLSL identifier (and of a parameter's name, which becomes one: param_<name>).
+inline bool glsl_identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 /// "generated/methods/<id>.glsl": the path the generated source is known by in the shader library;
 /// with compile-time parameters, "<id>.<name>-<choice>...glsl", one per combination of their values.

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "core/error.hpp"
+#include "shading/method_module.hpp"
 
 namespace glintlab {
 
@@ -25,11 +26,10 @@ std::string file_name(const char* path) { return std::filesystem::path(path).fil
 bool lower_alnum(char c) {
   return std::islower(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c));
 }
-bool identifier_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 bool is_identifier(const std::string& name) {
   if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0]))) return false;
-  return std::all_of(name.begin(), name.end(), identifier_char);
+  return std::all_of(name.begin(), name.end(), glsl_identifier_char);
 }
 
 /// The id names the module's file and is the key of `--param id.name`; a parameter becomes the

@@ -2,8 +2,9 @@
 // the report opened in Debian's chromium (headless) with #selftest, which checks that every image
 // and video loads and the slider moves (a report with an image removed must FAIL it), and a
 // screenshot that is not blank. Each crop cell, as the page's data places and labels it, holds the
-// pixels of its method's image. Bad input: exit 2, a message naming the file and key, no output,
-// an old report left whole. The plots' geometry against the values drawn.
+// pixels of its method's image, and the strip names each crop in a band below it. Bad input: exit
+// 2, a message naming the file and key, no output, an old report left whole. The plots' geometry
+// against the values drawn.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -249,6 +250,20 @@ TEST(Report, EachCropCellShowsTheMethodItIsLabelledWith) {
           differing += shown != source;
         }
       EXPECT_EQ(differing, 0) << label << "'s cell of " << region["strip"];
+    }
+  }
+  // The strips compare wrote carry each crop's name in a band below it (the page hides the band).
+  const auto crops = nlohmann::json::parse(read_text(scratch / "runs" / "compare" / "metrics.json"))["crops"];
+  for (const auto& c : crops) {
+    const glintlab::Image strip = glintlab::read_ldr_image(scratch / "runs" / "compare" / c["file"].get<std::string>());
+    const int cell = c["cell"], gap = c["gap"], band = c["label_height"];
+    ASSERT_GT(band, 0) << c["file"] << ": no label band (is fonts-dejavu-core installed?)";
+    ASSERT_EQ(strip.height(), cell + band) << c["file"];
+    for (std::size_t column = 0; column < run["columns"].size(); ++column) {
+      int ink = 0;
+      for (int y = cell; y < cell + band; ++y)
+        for (int x = 0; x < cell; ++x) ink += strip.at(static_cast<int>(column) * (cell + gap) + x, y).r < 0.5f;
+      EXPECT_GT(ink, 20) << "no name under column " << column << " of " << c["file"];
     }
   }
 }

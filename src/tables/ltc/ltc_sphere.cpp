@@ -8,12 +8,10 @@
 namespace glintlab {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 /// The integral over azimuth of max(0, a + b cos(phi)), b >= 0: the cosine of the points of one
 /// ring of the cap, at polar angle rho from its centre (a = z cos rho, b = sqrt(1 - z^2) sin rho).
 double ring_integral(double a, double b) {
-  if (a >= b) return 2.0 * kPi * a;
+  if (a >= b) return 2.0 * std::numbers::pi * a;
   if (a <= -b) return 0.0;
   const double phi0 = std::acos(-a / b);  // where the ring meets the horizon
   return 2.0 * (a * phi0 + b * std::sin(phi0));
@@ -25,7 +23,7 @@ struct GaussLegendre {
   std::array<double, kOrder> x{}, w{};
   GaussLegendre() {
     for (int i = 0; i < kOrder; ++i) {
-      double t = std::cos(kPi * (i + 0.75) / (kOrder + 0.5));
+      double t = std::cos(std::numbers::pi * (i + 0.75) / (kOrder + 0.5));
       double derivative = 1.0;
       for (int iteration = 0; iteration < 100; ++iteration) {
         double p0 = 1.0, p1 = t;  // P_0, P_1, then the recurrence up to P_n
@@ -66,12 +64,12 @@ double clipped_cap_form_factor(double z, double sin2_sigma) {
   // Rings with rho < |pi/2 - omega| lie wholly above (or below) the horizon; beyond, they cross it
   // and the integrand has a kink there: integrate the two parts separately, and the crossing part
   // in pieces, since the kink of acos at the ring that just touches is steep.
-  const double whole = std::min(sigma, std::abs(0.5 * kPi - omega));
+  const double whole = std::min(sigma, std::abs(0.5 * std::numbers::pi - omega));
   double sum = rings(z, 0.0, whole);
   constexpr int kPieces = 8;
   for (int i = 0; i < kPieces; ++i)
     sum += rings(z, whole + (sigma - whole) * i / kPieces, whole + (sigma - whole) * (i + 1) / kPieces);
-  return sum / kPi;
+  return sum / std::numbers::pi;
 }
 
 double clipped_cap_ratio(double z, double form_factor_length) {

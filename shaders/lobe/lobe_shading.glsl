@@ -1,6 +1,7 @@
 // Shading of one light with a given specular lobe: exact for delta lights, and for lights with
 // extent the lobe integrated over the light's image (below), so that every NDF-filtering method
 // differs from the `conventional` baseline only in the lobe it passes in.
+#include "generated/gpu_contract.glsl"
 #include "core/brdf.glsl"
 #include "lobe/delta_lights.glsl"
 #include "lights/lights.glsl"
@@ -61,13 +62,12 @@ Radiance shadeLobe(Surface s, LightData L, Lobe lobe) {
   return result;
 }
 
-// The area-light integration a lobe method chose (its compile-time parameter `area_lights`,
-// src/shading/methods/shared_params.hpp): AREA_LIGHTS_LTC integrates GGX lobes' linearly
-// transformed cosines over the light (ltc/ltc_shading.glsl); otherwise shadeLobe above.
-#define AREA_LIGHTS_REPRESENTATIVE_POINT 0
-#define AREA_LIGHTS_LTC 1
-Radiance shadeLobe(Surface s, LightData L, Lobe lobe, float areaLights) {
-  if (int(areaLights) == AREA_LIGHTS_LTC && lightHasExtent(L) && lobe.ndf == NDF_GGX) {
+// The area-light integration a lobe method chose (its compile-time enumeration `area_lights`,
+// src/shading/methods/shared_params.hpp; the AREA_LIGHTS_* choices come from the generated
+// contract): AREA_LIGHTS_LTC integrates GGX lobes' linearly transformed cosines over the light
+// (ltc/ltc_shading.glsl); AREA_LIGHTS_REPRESENTATIVE_POINT is shadeLobe above.
+Radiance shadeLobe(Surface s, LightData L, Lobe lobe, int areaLights) {
+  if (areaLights == AREA_LIGHTS_LTC && lightHasExtent(L) && lobe.ndf == NDF_GGX) {
     vec3 wo = toLocal(s, s.view);
     if (wo.z <= 0.0) return Radiance(vec3(0.0), vec3(0.0));
     return shadeLobeLtc(s, L, lobe, wo);

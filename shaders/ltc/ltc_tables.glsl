@@ -1,14 +1,13 @@
 // The LTC tables (Heitz, Dupuy, Hill, Neubelt 2016; our own fit, src/tables/ltc/ltc_fit.hpp), ltc-ggx and
 // ltc-ndf (src/tables/ltc_*_table.cpp; units TABLE_UNIT_LTC_GGX/NDF from the table registry).
-// Layout (src/tables/ltc/ltc_table.hpp): 64 x 64 cells, x = roughness r = sqrt(alpha) (alpha floored at
-// MIN_ALPHA), y = sqrt(1 - cos(theta_v)), in the frame z = normal, x = the view's tangent direction.
+// Layout (src/tables/ltc/ltc_table.hpp): LTC_TABLE_SIZE^2 cells (64 x 64; the tables declare it, the
+// generated contract defines it), x = roughness r = sqrt(alpha) (alpha floored at MIN_ALPHA),
+// y = sqrt(1 - cos(theta_v)), in the frame z = normal, x = the view's tangent direction.
 //   layer 0: M^-1 / m11 as (m00, m02, m20, m22);
 //   layer 1 of uLtcGgx: (magnitude, fresnel, clipped-sphere ratio S, 0): the integral of the GGX
 //     specular lobe times Schlick's F is f0 * magnitude + (1 - f0) * fresnel (ltcSpecularScale);
 //   layer 1 of uLtcNdf: (magnitude of D(h) / (4 v.h) over l.z > 0, total NDF, 0, 0).
 #include "generated/gpu_contract.glsl"
-
-const float LTC_TABLE_SIZE = 64.0;  // kLtcTableSize (checked by tests/tables/ltc/test_ltc_tables.cpp)
 
 layout(binding = TABLE_UNIT_LTC_GGX) uniform sampler2DArray uLtcGgx;
 layout(binding = TABLE_UNIT_LTC_NDF) uniform sampler2DArray uLtcNdf;

@@ -33,7 +33,7 @@ vec3 binomialGlintsMaterialSpecularCos(Surface s, vec3 wo, vec3 wi) {
 #if REFERENCE_BINOMIAL_REALISATION
   return binomialRealisationSpecularCos(gBinomialGlintsMaterial, wo, wi, s.f0, s.alpha);
 #else
-  return binomialSpecularCos(gBinomialGlintsMaterial, wo, wi, s.f0, s.alpha, REMAINING_LOGNORMAL);
+  return binomialSpecularCos(gBinomialGlintsMaterial, wo, wi, s.f0, s.alpha, REMAINING_COUNT_LOGNORMAL);
 #endif
 }
 
@@ -71,6 +71,6 @@ float binomialGlintsMaterialLightFactor(Surface s, LightData L, vec3 wo, uint su
                                     rotLight, rotBrdf);
   float p = integral / ggxTotalNdf(glintIsotropicAlpha(s.alpha));
   vec3 h = normalize(wo + toLocal(s, lightCentreDirection(L, s.position)));
-  return glintFactor(gBinomialGlintsMaterial, h, p, REMAINING_LOGNORMAL);
+  return glintFactor(gBinomialGlintsMaterial, h, p, REMAINING_COUNT_LOGNORMAL);
 #endif
 }

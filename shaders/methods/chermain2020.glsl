@@ -11,7 +11,7 @@ GlintSurface gGlint;
 
 void prepareSurface(inout Surface s) {
 #if MATERIAL_KIND == MATERIAL_KIND_GLINTY
-  gGlint = prepareGlints(s, materials[uMaterial], param_lean > 0.5, false);  // 2020: no correlation
+  gGlint = prepareGlints(s, materials[uMaterial], param_lean == LEAN_ON, false);  // 2020: no correlation
 #endif
 }
 
@@ -22,7 +22,7 @@ Radiance shadeLight(Surface s, LightData L) {
   vec2 dx = vec2(0.0), dy = vec2(0.0);
   // Lights with extent: the light's half-vector region is the kernel of the filtered lookups
   // (glints/chermain/light_kernel.glsl); delta lights keep the unfiltered ones. Both constant.
-  bool lightKernel = param_light_extent > 0.5 && lightHasExtent(L);
+  bool lightKernel = param_light_extent == LIGHT_EXTENT_HALF_VECTOR_KERNEL && lightHasExtent(L);
   if (lightKernel) addLightRegionToKernel(s, L, l, dx, dy);
   return shadeGlints(s, gGlint, l, irradiance, dx, dy, lightKernel);
 #else

@@ -23,7 +23,7 @@ void halfVectorDerivatives(Surface s, vec3 l, bool ofSlopes, out vec2 dx, out ve
 
 void prepareSurface(inout Surface s) {
 #if MATERIAL_KIND == MATERIAL_KIND_GLINTY
-  gGlint = prepareGlints(s, materials[uMaterial], param_lean > 0.5, true);
+  gGlint = prepareGlints(s, materials[uMaterial], param_lean == LEAN_ON, true);
 #endif
 }
 
@@ -32,12 +32,12 @@ Radiance shadeLight(Surface s, LightData L) {
   vec3 l, irradiance;
   centreLightIncidence(L, s.position, l, irradiance);
   vec2 dx, dy;
-  halfVectorDerivatives(s, l, param_derivatives > 0.5, dx, dy);  // first: uniform control flow
+  halfVectorDerivatives(s, l, param_derivatives == DERIVATIVES_SLOPES, dx, dy);  // first: uniform control flow
   dx *= param_kernel;
   dy *= param_kernel;
   // Lights with extent: the pixel's kernel widened by the light's half-vector region
   // (glints/chermain/light_kernel.glsl); a constant condition.
-  if (param_light_extent > 0.5 && lightHasExtent(L)) addLightRegionToKernel(s, L, l, dx, dy);
+  if (param_light_extent == LIGHT_EXTENT_HALF_VECTOR_KERNEL && lightHasExtent(L)) addLightRegionToKernel(s, L, l, dx, dy);
   return shadeGlints(s, gGlint, l, irradiance, dx, dy, true);
 #else
   return shadeLobe(s, L, materialSmoothLobe(s));

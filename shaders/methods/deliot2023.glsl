@@ -20,8 +20,8 @@ Radiance shadeLight(Surface s, LightData L) {
 #if MATERIAL_KIND == MATERIAL_KIND_BINOMIAL_GLINTS
   vec3 l, irradiance;
   centreLightIncidence(L, s.position, l, irradiance);
-  return shadeBinomialGlints(s, gBinomial, l, irradiance, int(param_remaining_count + 0.5));
+  return shadeBinomialGlints(s, gBinomial, l, irradiance, param_remaining_count);
 #else
-  return shadeLobe(s, L, materialSmoothLobe(s), float(AREA_LIGHTS_LTC));  // conventional's default
+  return shadeLobe(s, L, materialSmoothLobe(s), AREA_LIGHTS_LTC);  // conventional's default
 #endif
 }

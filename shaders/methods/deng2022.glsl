@@ -47,7 +47,7 @@ void prepareSurface(inout Surface s) {
   // Below sigma_0 the elements within 3 sigma_0 (plus the element's own extent) are all a footprint
   // can reach: a bounded loop, (6 sigma_0 + 3)^2 elements at most, within llvmpipe's loop budget.
   float sigma0 = pndfFirstSigma(uMaterial);
-  gBelowPyramid = param_small_footprints < 0.5 && gFootprintSigma < sigma0;
+  gBelowPyramid = param_small_footprints == SMALL_FOOTPRINTS_YAN2016 && gFootprintSigma < sigma0;
   gElements = positionNormalFootprint(gFootprintCentre, sigmaP, size, 1, normalMapGlintsIntrinsicRoughness(m),
                                        positionNormalRadiusBudget(3.0 * sigma0 + 1.5, 1));
   if (!gBelowPyramid) gElements.count = ivec2(0);
@@ -58,6 +58,6 @@ Radiance shadeLight(Surface s, LightData L) {
 #if MATERIAL_KIND == MATERIAL_KIND_NORMAL_MAP_GLINTS
   return shadeNormalGlints(s, L, gMaskingAlpha, gDiffuseNormal);
 #else
-  return shadeLobe(s, L, materialSmoothLobe(s), float(AREA_LIGHTS_LTC));  // conventional's default
+  return shadeLobe(s, L, materialSmoothLobe(s), AREA_LIGHTS_LTC);  // conventional's default
 #endif
 }

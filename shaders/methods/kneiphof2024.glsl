@@ -8,7 +8,7 @@
 #include "lobe/lobe_shading.glsl"
 
 #if MATERIAL_KIND == MATERIAL_KIND_BINOMIAL_GLINTS
-const int LIGHT_CELLS = 1 << (2 * int(param_subdivision + 0.5));  // 1 (none), 4 or 16
+const int LIGHT_CELLS = param_subdivision == SUBDIVISION_4X4 ? 16 : param_subdivision == SUBDIVISION_2X2 ? 4 : 1;
 #include "glints/binomial/area_shading.glsl"
 #include "glints/binomial/subdivision.glsl"
 BinomialSurface gBinomial;
@@ -24,7 +24,7 @@ void prepareSurface(inout Surface s) {
 
 Radiance shadeLight(Surface s, LightData L) {
 #if MATERIAL_KIND == MATERIAL_KIND_BINOMIAL_GLINTS
-  const int model = int(param_remaining_count + 0.5);
+  const int model = param_remaining_count;  // REMAINING_COUNT_*
   if (!lightHasExtent(L)) return shadeBinomialDeltaGlints(s, gBinomial, L, param_point_light_solid_angle, model);
   Radiance result = Radiance(vec3(0.0), vec3(0.0));
   vec3 wo = toLocal(s, s.view);
@@ -41,6 +41,6 @@ Radiance shadeLight(Surface s, LightData L) {
   }
   return result;
 #else
-  return shadeLobe(s, L, materialSmoothLobe(s), float(AREA_LIGHTS_LTC));  // conventional's default
+  return shadeLobe(s, L, materialSmoothLobe(s), AREA_LIGHTS_LTC);  // conventional's default
 #endif
 }

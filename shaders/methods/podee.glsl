@@ -14,21 +14,21 @@ Lobe gLobe;           // this pixel's lobe, set by prepareSurface
 void prepareSurface(inout Surface s) {
   // A branch on a uniform is uniform control flow, so the derivative variant may take its
   // derivatives inside it.
-  if (param_corners < 0.5) gCorners = interpolatedCornerRays(s, param_corner_lod);
+  if (param_corners == CORNERS_INTERPOLATED) gCorners = interpolatedCornerRays(s, param_corner_lod);
   else gCorners = derivativeCornerRays(s, param_corner_lod);
-  if (param_origin > 0.5)
+  if (param_origin == ORIGIN_CENTRE)
     for (int i = 0; i < 4; ++i) gCorners.origin[i] = s.position;
   gLobe = materialSmoothLobe(s);
 #if MATERIAL_NORMAL_MAP
   // Normals that vary inside the footprint the corners read the map over are invisible to them,
   // but not to the footprint's slope moments: LEAN's frame and covariance, as `lean`.
-  if (param_lobe > 0.5) gLobe.A += 2.0 * leanShadingFrame(s);
+  if (param_lobe == LOBE_LEAN) gLobe.A += 2.0 * leanShadingFrame(s);
 #endif
 }
 
 Radiance shadeLight(Surface s, LightData L) {
   // The reflection space is measured against the light's disk form (disks, spheres, suns).
   if (lightForm(L) == LIGHT_FORM_DISK)
-    return shadeReflectionSpace(s, L, gCorners, gLobe, ReflectionSpaceOptions(int(param_area + 0.5), param_glossy > 0.5));
+    return shadeReflectionSpace(s, L, gCorners, gLobe, ReflectionSpaceOptions(param_area, param_glossy == GLOSSY_ON));
   return shadeLobe(s, L, gLobe);  // delta lights and polygons: the baseline
 }

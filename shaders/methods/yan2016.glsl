@@ -9,7 +9,7 @@
 
 
 #if MATERIAL_KIND == MATERIAL_KIND_NORMAL_MAP_GLINTS
-const int ELEMENTS_PER_TEXEL = int(param_elements_per_texel + 0.5) + 1;  // the choices "1", "2"
+const int ELEMENTS_PER_TEXEL = param_elements_per_texel == ELEMENTS_PER_TEXEL_2 ? 2 : 1;
 #include "glints/normal-map/position_normal.glsl"
 
 PositionNormalFootprint gFootprint;
@@ -41,6 +41,6 @@ Radiance shadeLight(Surface s, LightData L) {
 #if MATERIAL_KIND == MATERIAL_KIND_NORMAL_MAP_GLINTS
   return shadeNormalGlints(s, L, gMaskingAlpha, gDiffuseNormal);
 #else
-  return shadeLobe(s, L, materialSmoothLobe(s), float(AREA_LIGHTS_LTC));  // conventional's default
+  return shadeLobe(s, L, materialSmoothLobe(s), AREA_LIGHTS_LTC);  // conventional's default
 #endif
 }

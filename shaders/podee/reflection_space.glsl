@@ -3,6 +3,7 @@
 // projected light is the unit disk centred at the origin (an affine map, so area ratios and the
 // order of points are kept). Pure functions; tested in tests/glsl/test_reflection_space.cpp.
 #include "core/constants.glsl"
+#include "generated/gpu_contract.glsl"
 
 float cross2(vec2 a, vec2 b) { return a.x * b.y - a.y * b.x; }
 
@@ -175,16 +176,15 @@ float unitDiskLensArea(float r, float d) {
   return clamp(r < 0.01 ? onALine : lens, 0.0, PI * min(r * r, 1.0));
 }
 
-// How the covered fraction is computed (the method's `area` parameter).
-#define COVERAGE_EXACT 0   // exact area of disk ∩ quad (chord polygon plus circular segments)
-#define COVERAGE_LENS 1    // the quad as the disk of equal area at the mean of its corners: a lens, closed form
-
-// Area of (unit disk) ∩ (the convex counter-clockwise quad q), exact or as a lens.
-float unitDiskIntersectionArea(vec2 q[4], int mode) {
+// Area of (unit disk) ∩ (the convex counter-clockwise quad q) as the method's `area` choice computes
+// it: AREA_LENS takes the quad as the disk of equal area at the mean of its corners (a lens, closed
+// form); AREA_EXACT and AREA_CIRCLE (whose light is already a circle) the exact area (chord polygon
+// plus circular segments).
+float unitDiskIntersectionArea(vec2 q[4], int area) {
   bool allInside = dot(q[0], q[0]) <= 1.0 && dot(q[1], q[1]) <= 1.0 && dot(q[2], q[2]) <= 1.0 && dot(q[3], q[3]) <= 1.0;
   if (allInside) return quadArea(q);  // exact, and free of the cancellation of nearly equal terms
   vec2 mean = 0.25 * (q[0] + q[1] + q[2] + q[3]);
-  return mode == COVERAGE_LENS ? unitDiskLensArea(sqrt(max(quadArea(q), 0.0) / PI), length(mean)) : unitDiskQuadArea(q);
+  return area == AREA_LENS ? unitDiskLensArea(sqrt(max(quadArea(q), 0.0) / PI), length(mean)) : unitDiskQuadArea(q);
 }
 
 // Solid angle of the triangle a, b = a + ab, c = a + ac seen from the origin (Van Oosterom &

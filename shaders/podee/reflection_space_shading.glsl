@@ -14,9 +14,10 @@ struct CornerRays {
 
 // Choices of the method's parameters (src/shading/methods/podee.cpp).
 struct ReflectionSpaceOptions {
-  int area;     // 0: exact (a disk in its own plane), 1: the paper's plane, light as a circle of equal
-                // area; 2: the same, light and reflection space as circles (a lens)
-  bool glossy;  // the lobe extension; false: every material shaded as a mirror (the paper)
+  int area;     // AREA_EXACT: a disk in its own plane, exactly; AREA_CIRCLE: the paper's plane, the
+                // light as a circle of equal area; AREA_LENS: the same, light and reflection space
+                // as circles (a lens)
+  bool glossy;  // the lobe extension (GLOSSY_ON); false: every material shaded as a mirror (the paper)
 };
 
 // The plane on which a pixel's reflection space is measured: through the light's centre c, with
@@ -141,7 +142,7 @@ LightData reflectionSpaceLight(Surface s, LightData L, LightPlane plane, vec2 un
 // Reflected radiance of a light with a disk form (disk, sphere, sun) through the pixel whose
 // corner rays are `corners`. Other kinds of light are not handled here.
 Radiance shadeReflectionSpace(Surface s, LightData L, CornerRays corners, Lobe lobe, ReflectionSpaceOptions options) {
-  LightPlane plane = lightPlane(L, s.position, options.area == 0);
+  LightPlane plane = lightPlane(L, s.position, options.area == AREA_EXACT);
   float angularRadius = plane.angularRadius;
   // Nothing from a light whose emitting side p does not see, or that lies wholly below the
   // surface's tangent plane (whatever the normal map says).
@@ -157,7 +158,7 @@ Radiance shadeReflectionSpace(Surface s, LightData L, CornerRays corners, Lobe l
   float cosThetaD = dot(s.view, normalize(s.view + plane.l));
   float mass = options.glossy ? lobeMassOnLight(lobe, angularRadius, cosThetaD) : 1.0;
   float scale = inversesqrt(max(mass, 1e-8));
-  vec2 axes = options.area >= 1 ? vec2(sqrt(plane.axes.x * plane.axes.y)) : plane.axes;  // circle of equal area
+  vec2 axes = options.area != AREA_EXACT ? vec2(sqrt(plane.axes.x * plane.axes.y)) : plane.axes;  // circle of equal area
   axes *= scale;
 
   // Reflection space: the corner rays' hits with the light plane, in coordinates where the
@@ -201,7 +202,7 @@ Radiance shadeReflectionSpace(Surface s, LightData L, CornerRays corners, Lobe l
   float spaceSolidAngle = max(triangleSolidAngle(first, e1, e2) + triangleSolidAngle(first, e2, e3), directionSolidAngle);
   vec3 toSelected = selected - s.position;
   float perArea = abs(dot(plane.normal, toSelected)) / pow(dot(toSelected, toSelected), 1.5);
-  float covered = unitDiskIntersectionArea(q, options.area == 2 ? COVERAGE_LENS : COVERAGE_EXACT) * axes.x * axes.y;
+  float covered = unitDiskIntersectionArea(q, options.area) * axes.x * axes.y;
   vec2 mean = 0.25 * (q[0] + q[1] + q[2] + q[3]);
   float coverage = spaceSolidAngle > 1e-20 ? clamp(covered * perArea / spaceSolidAngle, 0.0, 1.0)
                                            : (dot(mean, mean) <= 1.0 ? 1.0 : 0.0);

@@ -50,6 +50,17 @@ std::string method_program_module(ShaderLibrary& shaders, const MethodDescriptor
   return path;
 }
 
+namespace {
+/// The GL type of an active uniform of `program` (GL_FLOAT, GL_INT, ...).
+GLint uniform_type(GLuint program, const std::string& name) {
+  const GLuint index = glGetProgramResourceIndex(program, GL_UNIFORM, name.c_str());
+  const GLenum property = GL_TYPE;
+  GLint type = 0;
+  if (index != GL_INVALID_INDEX) glGetProgramResourceiv(program, GL_UNIFORM, index, 1, &property, 1, nullptr, &type);
+  return type;
+}
+}  // namespace
+
 GLuint Renderer::forward_program(const std::string& module, int material) {
   const MaterialVariant variant = material_variant(scene_, material);
   GLuint& program = forward_programs_[{module, variant}];
@@ -81,8 +92,14 @@ void Renderer::draw_scene(const std::string& module, const ParamValues& params, 
       for (const auto& [name, value] : params) {
         // Every parameter is read by the module (method_program_module checked), but a variant
         // may not use it (a glint parameter on a material without glints): then it has no location.
-        const GLint loc = glGetUniformLocation(program, ("param_" + name).c_str());
-        if (loc >= 0) glProgramUniform1f(program, loc, value);
+        const std::string uniform = "param_" + name;
+        const GLint loc = glGetUniformLocation(program, uniform.c_str());
+        if (loc < 0) continue;
+        // An enumeration is a `uniform int`, the choice's index (shading/method_module.hpp).
+        if (uniform_type(program, uniform) == GL_INT)
+          glProgramUniform1i(program, loc, static_cast<GLint>(std::lround(value)));
+        else
+          glProgramUniform1f(program, loc, value);
       }
     }
     const glm::mat3 normal_matrix = glm::inverseTranspose(glm::mat3(mesh.transform));

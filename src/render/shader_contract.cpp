@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <set>
+#include <stdexcept>
 
 #include "core/gpu_contract.hpp"
 #include "core/pixel_filter_width.hpp"
 #include "scene/lights/light_kind.hpp"
 #include "scene/materials/material_kind.hpp"
+#include "shading/registry.hpp"
 #include "tables/registry.hpp"
 
 namespace glintlab {
@@ -212,7 +215,9 @@ std::string gpu_structs_glsl() {
 
 std::string contract_glsl() {
   std::string out = kHeader;
-  out += "// The C++/GLSL contract (src/core/gpu_contract.hpp) and the light kinds' codes (src/scene/lights/light_kinds.cpp).\n";
+  out += "// The C++/GLSL contract (src/core/gpu_contract.hpp), the light and material kinds' codes\n"
+         "// (src/scene/lights/, src/scene/materials/), the tables' units and constants (src/tables/) and\n"
+         "// the methods' enumerations, <PARAM>_<CHOICE> = the choice's index (src/shading/methods/).\n";
   for (const auto& [name, value] : contract_defines()) out += "#define " + name + " " + value + "\n";
   return out;
 }
@@ -256,7 +261,13 @@ ShaderDefines contract_defines() {
   for (const LightKind& k : all_light_kinds()) d.emplace_back(code_name(k), std::to_string(k.code()));
   d.emplace_back("LIGHT_KIND_COUNT", std::to_string(all_light_kinds().size()));
   for (const MaterialKind& k : all_material_kinds()) d.emplace_back(k.define(), std::to_string(k.code()));
-  for (auto& unit : table_defines()) d.push_back(std::move(unit));  // TABLE_UNIT_<ID>
+  for (auto& define : table_defines()) d.push_back(std::move(define));  // TABLE_UNIT_<ID>, the tables' constants
+  for (auto& define : enumeration_defines(all_methods())) d.push_back(std::move(define));  // <PARAM>_<CHOICE>
+  std::set<std::string> names;
+  for (const auto& [name, value] : d)
+    if (!names.insert(name).second)
+      throw std::logic_error("the GLSL contract defines " + name +
+                             " twice (a method's choice, a table's constant or a kind's code); rename one");
   return d;
 }
 

@@ -1,11 +1,12 @@
 #pragma once
 // GLSL generated from the C++ side, so that the shaders never restate a constant, a layout or the
 // list of light or material kinds: generated/gpu_contract.glsl (src/core/gpu_contract.hpp's
-// constants and the kinds' codes as defines), generated/gpu_structs.glsl (its std140 records),
-// generated/material_params.glsl (each material kind's parameters), generated/materials/<kind>.glsl
-// (a kind behind the material interface), generated/light_kinds.glsl (each kind's file and the dispatch
-// of the light interface, shaders/lights/lights.glsl) and generated/shade_all_lights.glsl (the
-// light loop's call per kind, shaders/lights/light_loop.glsl).
+// constants, the kinds' codes, the tables' units and constants and the methods' choices as
+// defines), generated/gpu_structs.glsl (its std140 records), generated/material_params.glsl (each
+// material kind's parameters), generated/materials/<kind>.glsl (a kind behind the material
+// interface), generated/light_kinds.glsl (each kind's file and the dispatch of the light interface,
+// shaders/lights/lights.glsl) and generated/shade_all_lights.glsl (the light loop's call per kind,
+// shaders/lights/light_loop.glsl).
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,7 +22,8 @@ std::vector<std::pair<std::string, std::string>> generated_shader_sources();
 /// Renderer does it for its own).
 void add_contract_sources(ShaderLibrary& shaders);
 
-/// The defines of generated/gpu_contract.glsl, (name, value) in order.
+/// The defines of generated/gpu_contract.glsl, (name, value) in order. Throws std::logic_error
+/// if two of them have one name.
 ShaderDefines contract_defines();
 
 struct MaterialKind;

@@ -1,5 +1,6 @@
 #include "scene/scene.hpp"
 
+#include <optional>
 #include <span>
 
 #include "core/hash.hpp"
@@ -17,6 +18,30 @@ void hash_texture(Hasher& h, const TextureSlot& slot) {
   h.value(slot.texture->height);
   h.value(slot.texture->srgb);
   h.span(std::span<const std::uint8_t>(slot.texture->rgba));
+}
+
+void hash_mesh(Hasher& h, const Mesh& mesh) {
+  h.span(std::span<const glm::vec3>(mesh.positions));
+  h.span(std::span<const glm::vec3>(mesh.normals));
+  h.span(std::span<const glm::vec4>(mesh.tangents));
+  h.span(std::span<const glm::vec2>(mesh.uvs));
+  h.span(std::span<const std::uint32_t>(mesh.indices));
+}
+
+/// A light as images see it: its kind, the record its GLSL reads, and the emitter drawn for it
+/// (mesh, placement, radiance; none when it is not visible). Both come from the kind's own pack and
+/// emitter, so a field the kind reads changes the key exactly when it changes what is rendered.
+void hash_light(Hasher& h, const Light& light) {
+  h.text(light.kind->id);
+  h.value(light.kind->pack(light));
+  const std::optional<LightEmitter> emitter =
+      light.kind->emitter ? light.kind->emitter(light) : std::optional<LightEmitter>{};
+  h.value(emitter.has_value());
+  if (!emitter) return;
+  hash_mesh(h, emitter->mesh);
+  h.value(emitter->transform);
+  h.value(emitter->radiance);
+  h.value(emitter->two_sided);
 }
 
 }  // namespace
@@ -59,16 +84,9 @@ std::uint64_t Scene::content_hash() const {
   for (const auto& s : shapes) {
     h.value(s.transform);
     h.value(s.material);
-    h.span(std::span<const glm::vec3>(s.mesh->positions));
-    h.span(std::span<const glm::vec3>(s.mesh->normals));
-    h.span(std::span<const glm::vec4>(s.mesh->tangents));
-    h.span(std::span<const glm::vec2>(s.mesh->uvs));
-    h.span(std::span<const std::uint32_t>(s.mesh->indices));
+    hash_mesh(h, *s.mesh);
   }
-  for (const auto& l : lights) {
-    h.text(l.kind->id);
-    l.kind->hash(h, l);
-  }
+  for (const Light& l : lights) hash_light(h, l);
   return h.digest();
 }
 

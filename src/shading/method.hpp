@@ -7,10 +7,12 @@
 
 namespace glintlab {
 
-/// A float parameter of a method; the module reads it as the uniform `param_<name>`, declared for
-/// it from this declaration (shading/method_module.hpp). A parameter with
-/// `choices` is an enumeration: it takes a choice's name (or its index), and the shader sees the
-/// index; min and max are then 0 and choices.size() - 1.
+/// A parameter of a method; the module reads it as `param_<name>`, declared for it from this
+/// declaration (shading/method_module.hpp): a `uniform float`, or for an enumeration (a parameter
+/// with `choices`) a `uniform int` holding the choice's index. An enumeration takes a choice's name
+/// (or its index), and min and max are then 0 and choices.size() - 1. GLSL compares it only with
+/// the generated defines <NAME>_<CHOICE> (choice_define(); generated/gpu_contract.glsl), which
+/// every shader sees, so that code shared by several methods can test a choice without naming one.
 struct ParamDecl {
   std::string name;
   float default_value;
@@ -19,7 +21,7 @@ struct ParamDecl {
   std::string description;
   std::vector<std::string> choices = {};
   /// An enumeration that selects code rather than a value: the module sees `param_<name>` as a
-  /// constant and each choice is its own program, so no driver pays for the code of the choices
+  /// `const int` and each choice is its own program, so no driver pays for the code of the choices
   /// not taken (Mesa's llvmpipe runs both sides of every branch).
   bool compile_time = false;
   /// The precomputed tables each choice needs besides the method's own (indexed like `choices`;
@@ -29,6 +31,7 @@ struct ParamDecl {
   /// the host and never by the module: no uniform is generated for it.
   bool host_only = false;
 
+  [[nodiscard]] bool is_enumeration() const { return !choices.empty(); }
   /// "0 .. 1", or "a|b|c" for an enumeration.
   [[nodiscard]] std::string allowed() const;
   /// The default as a user writes it: the number, or the choice's name.
@@ -53,8 +56,14 @@ struct MethodDescriptor {
   [[nodiscard]] const ParamDecl* find_param(const std::string& name) const;
 };
 
-/// Parameter values by name, every declared parameter present.
+/// Parameter values by name, every declared parameter present (an enumeration's as its choice's
+/// index, a whole number).
 using ParamValues = std::map<std::string, float>;
+
+/// The GLSL define of an enumeration's choice, <NAME>_<CHOICE> in upper snake case:
+/// ("area_lights", "representative-point") -> "AREA_LIGHTS_REPRESENTATIVE_POINT",
+/// ("subdivision", "2x2") -> "SUBDIVISION_2X2". Its value is the choice's index.
+std::string choice_define(const std::string& param, const std::string& choice);
 
 /// The tables rendering `method` with `values` needs: its own, then those of the chosen choices.
 std::vector<std::string> required_tables(const MethodDescriptor& method, const ParamValues& values);

@@ -101,13 +101,15 @@ std::string generated_module_source(const MethodDescriptor& method, const std::s
   std::string out = "// Generated from the descriptor of method '" + method.id +
                     "' (shading/method_module.hpp): its parameters, then its module.\n";
   for (const ParamDecl& p : method.params) {
+    const std::string name = kParamPrefix + p.name;
     if (p.host_only) continue;
-    if (p.compile_time)
-      out += "const float " + std::string(kParamPrefix) + p.name + " = " +
-             std::to_string(compile_time_choice(p, values)) + ".0;  // " + p.choices[compile_time_choice(p, values)] +
-             "\n";
-    else
-      out += "uniform float " + std::string(kParamPrefix) + p.name + ";\n";
+    if (p.compile_time) {
+      const std::size_t choice = compile_time_choice(p, values);
+      out += "const int " + name + " = " + std::to_string(choice) + ";  // " +
+             choice_define(p.name, p.choices[choice]) + "\n";
+    } else {
+      out += std::string(p.is_enumeration() ? "uniform int " : "uniform float ") + name + ";\n";
+    }
   }
   return out + "#include \"" + method.module_path() + "\"\n";
 }

@@ -1,7 +1,8 @@
 #pragma once
 // A method's parameter uniforms, generated from its descriptor: the forward program includes
-// generated/methods/<id>.glsl, which declares `uniform float param_<name>;` for every ParamDecl
-// and then includes the module, shaders/methods/<id>.glsl. Modules never declare them.
+// generated/methods/<id>.glsl, which declares each ParamDecl's `param_<name>` (`uniform float`, or
+// `uniform int` for an enumeration) and then includes the module, shaders/methods/<id>.glsl.
+// Modules never declare them.
 #include <cctype>
 #include <string>
 
@@ -19,13 +20,14 @@ std::string generated_module_path(const MethodDescriptor& method, const ParamVal
 /// The index of the choice a compile-time parameter takes in `values` (its default if absent).
 std::size_t compile_time_choice(const ParamDecl& param, const ParamValues& values);
 
-/// The generated source: one `uniform float param_<name>;` per declared parameter, then
+/// The generated source: one `uniform float param_<name>;` per declared parameter (`uniform int`
+/// for an enumeration, the choice's index), then
 /// `#include` of the module. `module_source` is the module's own text (not its includes), checked
 /// first; throws RuntimeFailure naming the method, the parameter and the module's file when the
 /// module never reads a declared parameter (whatever the optimiser keeps of it in a variant),
 /// reads a `param_` identifier its descriptor does not declare, or declares one itself.
-/// Compile-time parameters (ParamDecl::compile_time) become `const float param_<name>` of their
-/// value in `values` (the default where absent).
+/// Compile-time parameters (ParamDecl::compile_time) become `const int param_<name>` of their
+/// choice's index in `values` (the default where absent).
 std::string generated_module_source(const MethodDescriptor& method, const std::string& module_source,
                                     const ParamValues& values = {});
 

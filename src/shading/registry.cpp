@@ -4,6 +4,8 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -53,7 +55,55 @@ void check_declaration(const MethodDescriptor& m, const char* file) {
     if (!p.choice_tables.empty() && p.choice_tables.size() != p.choices.size())
       throw std::logic_error(where + ": parameter '" + p.name + "' has " + std::to_string(p.choice_tables.size()) +
                              " choice_tables for " + std::to_string(p.choices.size()) + " choices");
+    for (std::size_t c = 0; c < p.choices.size(); ++c) {
+      const std::string& choice = p.choices[c];
+      if (choice.empty() || !std::all_of(choice.begin(), choice.end(), id_char))
+        throw std::logic_error(where + ": parameter '" + p.name + "' has the choice '" + choice +
+                               "'; a choice is one or more of a-z, 0-9, '-' and '_'");
+      for (std::size_t d = 0; d < c; ++d)
+        if (choice_define(p.name, p.choices[d]) == choice_define(p.name, choice))
+          throw std::logic_error(where + ": parameter '" + p.name + "' has the choices '" + p.choices[d] + "' and '" +
+                                 choice + "', which are one GLSL define, " + choice_define(p.name, choice));
+    }
   }
+}
+
+/// An enumeration's name is one meaning in GLSL (its defines <NAME>_<CHOICE> are shared by every
+/// method), so every method that declares a parameter of that name declares the same choices;
+/// and no two enumerations' choices make the same define. Host-only parameters never reach GLSL.
+void check_enumerations_agree(const std::vector<MethodDescriptor>& methods,
+                              const std::vector<MethodRegistration>& registrations) {
+  struct Seen {
+    const ParamDecl* param;
+    std::size_t method;
+  };
+  std::vector<Seen> seen;
+  std::map<std::string, Seen> defines;  // choice define -> the enumeration that makes it
+  const auto where = [&](std::size_t m) {
+    return "'" + methods[m].id + "' (" + file_name(registrations[m].source_file) + ")";
+  };
+  for (std::size_t m = 0; m < methods.size(); ++m)
+    for (const ParamDecl& p : methods[m].params) {
+      if (p.host_only) continue;
+      for (const Seen& s : seen) {
+        if (s.param->name != p.name || (!p.is_enumeration() && !s.param->is_enumeration())) continue;
+        if (s.param->choices != p.choices)
+          throw std::logic_error("methods " + where(s.method) + " and " + where(m) + " both declare the parameter '" +
+                                 p.name + "' but with other choices (" + s.param->allowed() + " and " + p.allowed() +
+                                 "); an enumeration's name has one set of choices in every method (its GLSL "
+                                 "defines are shared): use the same choices or another name");
+      }
+      seen.push_back({&p, m});
+      for (const std::string& choice : p.choices) {
+        const std::string define = choice_define(p.name, choice);
+        const auto [it, added] = defines.try_emplace(define, Seen{&p, m});
+        if (!added && it->second.param->name != p.name)
+          throw std::logic_error("the choice '" + choice + "' of parameter '" + p.name + "' of method " + where(m) +
+                                 " and a choice of parameter '" + it->second.param->name + "' of method " +
+                                 where(it->second.method) + " are both the GLSL define " + define +
+                                 "; rename one of them");
+      }
+    }
 }
 
 }  // namespace
@@ -83,7 +133,20 @@ std::vector<MethodDescriptor> ordered_methods(const std::vector<MethodRegistrati
                                std::to_string(sorted[i].listing_key) + " (" + both + "); give each its own");
     }
   }
+  check_enumerations_agree(methods, sorted);
   return methods;
+}
+
+std::vector<std::pair<std::string, std::string>> enumeration_defines(const std::vector<MethodDescriptor>& methods) {
+  std::vector<std::pair<std::string, std::string>> defines;
+  std::set<std::string> done;  // parameter names (ordered_methods checked that they agree)
+  for (const MethodDescriptor& m : methods)
+    for (const ParamDecl& p : m.params) {
+      if (p.host_only || !p.is_enumeration() || !done.insert(p.name).second) continue;
+      for (std::size_t c = 0; c < p.choices.size(); ++c)
+        defines.emplace_back(choice_define(p.name, p.choices[c]), std::to_string(c));
+    }
+  return defines;
 }
 
 const std::vector<MethodDescriptor>& all_methods() {
@@ -92,6 +155,15 @@ const std::vector<MethodDescriptor>& all_methods() {
     return ordered_methods(registrations());
   }();
   return methods;
+}
+
+std::string choice_define(const std::string& param, const std::string& choice) {
+  std::string define;
+  for (const char c : param + "_" + choice) {
+    const auto u = static_cast<unsigned char>(c);
+    define += std::isalnum(u) ? static_cast<char>(std::toupper(u)) : '_';
+  }
+  return define;
 }
 
 std::string ParamDecl::allowed() const {

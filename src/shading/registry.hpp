@@ -3,9 +3,10 @@
 //   shaders/methods/<id>.glsl        prepareSurface and shadeLight, reading its `param_<name>`s;
 //   src/shading/methods/<id>.cpp     the MethodDescriptor, ending in GLINTLAB_REGISTER_METHOD.
 // CMake collects src/shading/methods/*.cpp and links them whole (nothing else refers to them);
-// the `uniform float param_<name>;` lines are generated from the descriptor's ParamDecls when the
-// method's program is built (shading/method_module.hpp). How-to: docs/extending.md.
+// the `param_<name>` uniforms are generated from the descriptor's ParamDecls when the method's
+// program is built (shading/method_module.hpp). How-to: docs/extending.md.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "shading/method.hpp"
@@ -28,8 +29,16 @@ bool register_method(const MethodRegistration& registration);
 /// The descriptors of `registrations` by ascending listing key. Throws std::logic_error naming
 /// both files for a repeated id or listing key, and naming the method for an invalid declaration:
 /// an id other than a-z, 0-9, '-' and '_'; a parameter name that is not a GLSL identifier, is
-/// repeated, or whose default is outside its range.
+/// repeated, or whose default is outside its range; a choice other than a-z, 0-9, '-' and '_'.
+/// Throws naming both methods and files for an enumeration declared by two methods with other
+/// choices, or two enumerations whose choices make the same GLSL define (choice_define()).
 std::vector<MethodDescriptor> ordered_methods(const std::vector<MethodRegistration>& registrations);
+
+/// (<NAME>_<CHOICE>, the choice's index) for every choice of every enumeration `methods` declare,
+/// each parameter name once (ordered_methods() checked that its choices agree), in listing order:
+/// part of the GLSL contract (generated/gpu_contract.glsl), so that code several methods share
+/// tests a choice by its name.
+std::vector<std::pair<std::string, std::string>> enumeration_defines(const std::vector<MethodDescriptor>& methods);
 
 /// All methods, in the order they are listed and compared (by listing key).
 const std::vector<MethodDescriptor>& all_methods();

@@ -19,7 +19,7 @@
 namespace glintlab {
 namespace {
 
-// The defaults are the paper's dictionary; shaders/glints/chermain/dictionary.glsl assumes them.
+// The defaults are the paper's dictionary; its GLSL reads them as the constants below.
 const GlintDictionarySettings kSettings{};
 constexpr std::size_t kTexelBytes = 6;  // RGB16F
 
@@ -97,6 +97,12 @@ Table glint_dictionary_table() {
       .upload = [](std::span<const float> values) {
         return upload(GlintDictionary::from_data(kSettings, std::vector<float>(values.begin(), values.end())));
       },
+      // The layout shaders/glints/chermain/dictionary.glsl addresses and the distribution
+      // glints/chermain/ndf.glsl scales to the material's roughness.
+      .glsl_constants = {TableConstant::of_int("GLINT_MARGINALS", kSettings.marginals),
+                         TableConstant::of_int("GLINT_LEVELS", kSettings.levels),
+                         TableConstant::of_float("GLINT_DICT_SIGMA", kSettings.sigma()),
+                         TableConstant::of_float("GLINT_SLOPE_RANGE", kSettings.slope_range())},
   };
 }
 

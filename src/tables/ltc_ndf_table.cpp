@@ -21,6 +21,7 @@ Table ltc_ndf_table() {
       .sampler = "uLtcNdf",
       .gpu_bytes = ltc_table_gpu_bytes(),
       .upload = upload_ltc_table,
+      .glsl_constants = ltc_table_glsl_constants(),
   };
 }
 

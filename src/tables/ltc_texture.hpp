@@ -5,6 +5,7 @@
 #include <cmath>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "gl/context.hpp"
 #include "tables/ltc/ltc_table.hpp"
@@ -30,6 +31,11 @@ inline gl::Texture upload_ltc_table(std::span<const float> values) {
   glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   check_gl("uploading an LTC table");
   return texture;
+}
+
+/// The layout shaders/ltc/ltc_tables.glsl addresses, the same for both tables.
+inline std::vector<TableConstant> ltc_table_glsl_constants() {
+  return {TableConstant::of_float("LTC_TABLE_SIZE", static_cast<float>(kLtcTableSize))};
 }
 
 /// Why values read back from the cache cannot be an LTC table, or "".

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <stdexcept>
 
 #include "core/error.hpp"
 
@@ -19,6 +20,14 @@ const std::vector<Table>& all_tables() {
         ltc_ndf_table(),
     };
     for (std::size_t i = 0; i < list.size(); ++i) list[i].unit = kFirstTableUnit + static_cast<int>(i);
+    for (std::size_t i = 0; i < list.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        for (const TableConstant& a : list[i].glsl_constants)
+          for (const TableConstant& b : list[j].glsl_constants)
+            if (a.name == b.name && a.glsl_value() != b.glsl_value())
+              throw std::logic_error("tables '" + list[j].source.id + "' and '" + list[i].source.id +
+                                     "' both declare the GLSL constant " + a.name + ", as " + b.glsl_value() + " and " +
+                                     a.glsl_value() + "; one name, one value");
     return list;
   }();
   return tables;
@@ -41,6 +50,11 @@ std::string table_define(const std::string& id) {
 ShaderDefines table_defines() {
   ShaderDefines defines;
   for (const auto& t : all_tables()) defines.emplace_back(table_define(t.source.id), std::to_string(t.unit));
+  for (const auto& t : all_tables())
+    for (const TableConstant& c : t.glsl_constants) {
+      const std::pair<std::string, std::string> define{c.name, c.glsl_value()};
+      if (std::find(defines.begin(), defines.end(), define) == defines.end()) defines.push_back(define);
+    }
   return defines;
 }
 

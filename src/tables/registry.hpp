@@ -16,7 +16,8 @@ const std::vector<Table>& all_tables();
 const Table& find_table(const std::string& id);
 /// "TABLE_UNIT_GLINT_DICTIONARY" for "glint-dictionary": the GLSL name of a table's unit.
 std::string table_define(const std::string& id);
-/// TABLE_UNIT_<ID> = unit for every table: part of every program that may read a table.
+/// TABLE_UNIT_<ID> = unit for every table, then every table's GLSL constants (each name once):
+/// part of every program that may read a table (generated/gpu_contract.glsl).
 ShaderDefines table_defines();
 
 }  // namespace glintlab

@@ -1,6 +1,17 @@
 #include "tables/table.hpp"
 
+#include <cstdio>
+
 namespace glintlab {
+
+std::string TableConstant::glsl_value() const {
+  if (integer) return std::to_string(static_cast<long long>(value));
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", static_cast<double>(static_cast<float>(value)));  // round-trips a float
+  std::string out = text;
+  if (out.find_first_of(".e") == std::string::npos) out += ".0";
+  return out;
+}
 
 TableBytes mip_chain_bytes_1d(int texels, int layers, std::size_t texel_bytes) {
   TableBytes bytes;

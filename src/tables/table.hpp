@@ -7,6 +7,8 @@
 #include <functional>
 #include <span>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "gl/objects.hpp"
 #include "tables/table_source.hpp"
@@ -19,6 +21,20 @@ struct TableBytes {
   std::size_t with_mips = 0;  ///< with its whole mip chain (= base without one)
 };
 
+/// A constant of the table's layout that its GLSL reads (GLINT_LEVELS, LTC_TABLE_SIZE), taken
+/// from the generator's own settings and emitted into generated/gpu_contract.glsl as
+/// `#define <name> <value>`, so that no shader restates it.
+struct TableConstant {
+  std::string name;  ///< upper snake case, prefixed by the table's family (GLINT_, LTC_)
+  double value;
+  bool integer;  ///< an int in GLSL; else a float
+
+  static TableConstant of_int(std::string name, int value) { return {std::move(name), double(value), true}; }
+  static TableConstant of_float(std::string name, float value) { return {std::move(name), double(value), false}; }
+  /// The GLSL literal: "192", or the float in full precision with a point or exponent ("64.0", "0.353553385").
+  [[nodiscard]] std::string glsl_value() const;
+};
+
 struct Table {
   TableSource source;
   /// The GLSL sampler that reads it, declared `layout(binding = TABLE_UNIT_<ID>)` (table_define()).
@@ -27,6 +43,9 @@ struct Table {
   TableBytes gpu_bytes;
   /// Makes the texture from the values (a current GL context is needed).
   std::function<gl::Texture(std::span<const float>)> upload;
+  /// The GLSL constants of its layout (tables/registry.cpp's table_defines() emits them; two
+  /// tables may declare one name only with one value, e.g. the two LTC tables' size).
+  std::vector<TableConstant> glsl_constants = {};
   /// The texture unit it is bound to: set by the registry (tables/registry.cpp).
   int unit = -1;
 };

@@ -64,11 +64,11 @@ TEST(BinomialCounting, ExpectedCountIsContinuousAtOneExpectedFacet) {
 vec4 evaluate(vec4 a, vec4 b) {
   float p = a.x, n = a.y;
   float p1 = probabilityAnyReflects(p, n);
-  vec2 law = remainingLaw(p, n, p1, REMAINING_LOGNORMAL);
+  vec2 law = remainingLaw(p, n, p1, REMAINING_COUNT_LOGNORMAL);
   // E[k | k >= 1] by midpoint quadrature of the normal numbers' CDF, through Box-Muller.
   float sum = 0.0;
   for (int i = 0; i < 256; ++i)
-    for (int j = 0; j < 16; ++j) sum += countGivenAny(law, n, binomialGaussian(vec2((float(i) + 0.5) / 256.0, (float(j) + 0.5) / 16.0)), REMAINING_LOGNORMAL);
+    for (int j = 0; j < 16; ++j) sum += countGivenAny(law, n, binomialGaussian(vec2((float(i) + 0.5) / 256.0, (float(j) + 0.5) / 16.0)), REMAINING_COUNT_LOGNORMAL);
   return vec4(p1, p1 * sum / 4096.0, 0.0, 0.0);
 })", a, std::vector<glm::vec4>(a.size()));
   for (std::size_t i = 0; i < r.size(); i += 2) {
@@ -239,8 +239,8 @@ vec4 evaluate(vec4 a, vec4 b) {
                                       50.0 * rand(i, 11.0), 10.0 * rand(i, 12.0), pow(10.0, -4.0 * rand(i, 13.0)),
                                       0.1 + 999.9 * rand(i, 14.0));
   vec3 f0 = vec3(rand(i, 18.0));
-  vec3 l = binomialSpecularCos(s, a.xyz, b.xyz, f0, alpha, REMAINING_LOGNORMAL);
-  vec3 g = binomialSpecularCos(s, a.xyz, b.xyz, f0, alpha, REMAINING_GAUSSIAN);
+  vec3 l = binomialSpecularCos(s, a.xyz, b.xyz, f0, alpha, REMAINING_COUNT_LOGNORMAL);
+  vec3 g = binomialSpecularCos(s, a.xyz, b.xyz, f0, alpha, REMAINING_COUNT_GAUSSIAN);
   bool below = a.z <= 0.0 || b.z <= 0.0;
   return vec4(l.x, g.x, below ? max(l.x, g.x) : 0.0, 0.0);
 })",

@@ -35,15 +35,16 @@ void bind_dictionary() {
   tables.bind();
 }
 
-TEST(Glints, ShaderConstantsMirrorTheGeneratorsDefaults) {
+TEST(Glints, ShaderConstantsAreTheGeneratorsDefaults) {
+  // The table declares them from its settings (the defaults, the paper's dictionary).
   const auto r = evaluate_glsl(kIncludes, R"(
-vec4 evaluate(vec4 a, vec4 b) { return vec4(GLINT_MARGINALS, GLINT_LEVELS, GLINT_DICT_ALPHA, GLINT_DICT_SIGMA); })",
+vec4 evaluate(vec4 a, vec4 b) { return vec4(GLINT_MARGINALS, GLINT_LEVELS, GLINT_DICT_SIGMA, GLINT_SLOPE_RANGE); })",
                                {glm::vec4(0)}, {glm::vec4(0)});
   const GlintDictionarySettings st;
   EXPECT_EQ(r[0].x, static_cast<float>(st.marginals));
   EXPECT_EQ(r[0].y, static_cast<float>(st.levels));
-  EXPECT_FLOAT_EQ(r[0].z, st.alpha);
-  EXPECT_NEAR(r[0].w, st.sigma(), 1e-7f);
+  EXPECT_EQ(r[0].z, st.sigma());
+  EXPECT_EQ(r[0].w, st.slope_range());
 }
 
 TEST(Glints, TextureLookupsIntegrateToOneUnfilteredAndFiltered) {

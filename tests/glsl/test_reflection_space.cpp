@@ -138,7 +138,7 @@ TEST(ReflectionSpace, HullOfFoldedAndDartQuadsMatchesMonotoneChain) {
 TEST(ReflectionSpace, ExactCoverageMatchesPolygonClipping) {
   // Quads from 1/50 to 4 disk radii, inside, outside, across the rim and around the whole disk.
   const auto cases = random_quads(300, 5);
-  const auto gpu = run(cases, "return vec4(unitDiskIntersectionArea(q, COVERAGE_EXACT) / quadArea(q), 0.0, 0.0, 0.0);");
+  const auto gpu = run(cases, "return vec4(unitDiskIntersectionArea(q, AREA_EXACT) / quadArea(q), 0.0, 0.0, 0.0);");
   int partial = 0;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const Poly h = hull(cases[i].points());
@@ -160,7 +160,7 @@ TEST(ReflectionSpace, IntersectionAreaKeepsItsPrecisionWithACornerFarAway) {
     c.b.z = static_cast<float>(far * std::cos(phi));
     c.b.w = static_cast<float>(far * std::sin(phi));
   }
-  const auto gpu = run(cases, "return vec4(unitDiskIntersectionArea(q, COVERAGE_EXACT), 0.0, 0.0, 0.0);");
+  const auto gpu = run(cases, "return vec4(unitDiskIntersectionArea(q, AREA_EXACT), 0.0, 0.0, 0.0);");
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const double expected = disk_intersection(hull(cases[i].points()));
     EXPECT_NEAR(gpu[i].x, expected, 1e-4 * M_PI) << "case " << i << ": " << cases[i].a.x << "," << cases[i].a.y << " " << cases[i].a.z << "," << cases[i].a.w << " " << cases[i].b.x << "," << cases[i].b.y << " " << cases[i].b.z << "," << cases[i].b.w;
@@ -226,7 +226,7 @@ TEST(ReflectionSpace, DegenerateQuadsGiveFiniteFractions) {
   }
   const auto gpu = run(cases, R"(
   vec2 c = closestPointInConvexQuad(q, vec2(0.0));
-  return vec4(unitDiskIntersectionArea(q, COVERAGE_EXACT), unitDiskIntersectionArea(q, COVERAGE_LENS), c);)");
+  return vec4(unitDiskIntersectionArea(q, AREA_EXACT), unitDiskIntersectionArea(q, AREA_LENS), c);)");
   for (std::size_t i = 0; i < cases.size(); ++i) {
     for (int k = 0; k < 4; ++k) ASSERT_TRUE(std::isfinite(gpu[i][k])) << "case " << i << " component " << k;
     // No larger than the disk or the quad (up to the float rounding of the quad's area).
@@ -298,7 +298,8 @@ vec4 evaluate(vec4 a, vec4 b) {
   float below = -dot(toLight, s.vertexNormal);
   bool behind = kind == 2 ? below > sqrt(1.0 - L.direction_cos.w * L.direction_cos.w)
                           : dist * below > L.position_radius.w || (kind == 0 && dot(facing, toLight) >= 0.0);
-  ReflectionSpaceOptions options = ReflectionSpaceOptions(int(i % 3u), i % 4u != 0u);
+  const int areas[3] = int[](AREA_EXACT, AREA_CIRCLE, AREA_LENS);
+  ReflectionSpaceOptions options = ReflectionSpaceOptions(areas[i % 3u], i % 4u != 0u);
   Radiance result = shadeReflectionSpace(s, L, corners, materialLobe(s), options);
   float sum = result.specular.r + result.specular.g + result.specular.b + result.diffuse.r;
   return vec4(sum, behind ? 1.0 : 0.0, min(min(result.specular.r, result.diffuse.r), 0.0), 0.0);

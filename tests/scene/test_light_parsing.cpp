@@ -38,7 +38,7 @@ TEST(LightKinds, RegistryHoldsEachKindOnceWithItsCode) {
     EXPECT_EQ(&all_light_kinds()[static_cast<std::size_t>(k.code())], &k);
     // The id names the GLSL file and prefixes its functions: a GLSL identifier in lower case.
     for (char c : k.id) EXPECT_TRUE(c >= 'a' && c <= 'z') << k.id;
-    EXPECT_TRUE(k.parse && k.hash && k.pack) << k.id;
+    EXPECT_TRUE(k.parse && k.pack) << k.id;
     EXPECT_EQ(k.has_extent, k.form != LightForm::None) << k.id << ": delta lights have no form, others one";
   }
   EXPECT_EQ(&find_light_kind("sun"), &all_light_kinds()[static_cast<std::size_t>(find_light_kind("sun").code())]);

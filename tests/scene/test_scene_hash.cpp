@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstring>
 #include <functional>
 #include <string>
 #include <vector>
@@ -55,7 +56,8 @@ struct FieldChange {
 };
 
 /// A scene in which every field is in use: two materials (one glinty with a normal map), two shapes,
-/// and lights of the kinds that read every Light field (a kind hashes only what it reads).
+/// and lights of the kinds that read every Light field (a light is hashed by what it renders: its
+/// packed record and its emitter).
 Scene base_scene() {
   Scene s = TestScene()
                 .film(32, 24)
@@ -181,6 +183,8 @@ const std::vector<FieldChange> kHashed = {
     {"light.size", [](Scene& s) { s.lights[0].size.x += 0.1f; }},
     {"light.angular_radius_degrees", [](Scene& s) { s.lights[2].angular_radius_degrees += 1; }},
     {"light.visible", [](Scene& s) { s.lights[0].visible = !s.lights[0].visible; }},
+    // A disk's up is in no record: it turns only its emitter's mesh about the normal.
+    {"light.up (a disk's)", [](Scene& s) { s.lights[1].up = {1, 0, 0}; }},
     {"light.inner_angle_degrees", [](Scene& s) { s.lights[3].inner_angle_degrees += 1; }},
     {"light.outer_angle_degrees", [](Scene& s) { s.lights[3].outer_angle_degrees += 1; }},
     {"a material more", [](Scene& s) { s.materials.push_back(s.materials[0]); }},
@@ -273,4 +277,68 @@ TEST(SceneHash, EveryMaterialKindParameterChangesTheKey) {
         EXPECT_EQ(s.content_hash(), key) << kind.id << ": unused slot " << i;
     }
   }
+}
+
+namespace {
+
+/// What images see of a light: its record and its emitter (none when not drawn).
+struct Rendered {
+  LightGpu record;
+  std::optional<LightEmitter> emitter;
+};
+
+Rendered rendered(const Light& l) {
+  return {l.kind->pack(l), l.kind->emitter ? l.kind->emitter(l) : std::optional<LightEmitter>{}};
+}
+
+bool same_bytes(const auto& a, const auto& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+bool same(const Rendered& a, const Rendered& b) {
+  if (!same_bytes(a.record, b.record) || a.emitter.has_value() != b.emitter.has_value()) return false;
+  if (!a.emitter) return true;
+  const LightEmitter &x = *a.emitter, &y = *b.emitter;
+  return same_bytes(x.transform, y.transform) && same_bytes(x.radiance, y.radiance) && x.two_sided == y.two_sided &&
+         x.mesh.positions == y.mesh.positions && x.mesh.normals == y.mesh.normals && x.mesh.indices == y.mesh.indices;
+}
+
+}  // namespace
+
+TEST(SceneHash, ALightChangesTheKeyExactlyWhenWhatItRendersChanges) {
+  // Every kind, every Light field: the key follows the record the kind packs and the emitter it
+  // draws, so a kind never lists its fields a third time (after parse and pack) for the hash.
+  const std::vector<std::pair<std::string, std::function<void(Light&)>>> changes = {
+      {"colour", [](Light& l) { l.colour.g += 0.25f; }},
+      {"position", [](Light& l) { l.position.x += 0.25f; }},
+      {"direction", [](Light& l) { l.direction = glm::normalize(glm::vec3(0.2f, -1, 0.1f)); }},
+      {"up", [](Light& l) { l.up = {1, 0, 0}; }},
+      {"radius", [](Light& l) { l.radius += 0.25f; }},
+      {"size", [](Light& l) { l.size.y += 0.25f; }},
+      {"angular_radius_degrees", [](Light& l) { l.angular_radius_degrees += 0.5f; }},
+      {"inner_angle_degrees", [](Light& l) { l.inner_angle_degrees += 5; }},
+      {"outer_angle_degrees", [](Light& l) { l.outer_angle_degrees += 5; }},
+      {"visible", [](Light& l) { l.visible = !l.visible; }},
+  };
+  static_assert(field_count<Light>() == 11, "kind + the fields above");
+  int changed = 0, kept = 0;
+  for (const LightKind& kind : all_light_kinds()) {
+    Scene base = base_scene();
+    Light light;
+    light.kind = &kind;
+    light.radius = 0.5f;
+    light.angular_radius_degrees = 1.0f;
+    light.inner_angle_degrees = 10.0f;
+    base.lights = {light};
+    const std::uint64_t key = base.content_hash();
+    for (const auto& [field, change] : changes) {
+      Scene s = base;
+      change(s.lights[0]);
+      const bool renders_otherwise = !same(rendered(s.lights[0]), rendered(base.lights[0]));
+      EXPECT_EQ(s.content_hash() != key, renders_otherwise)
+          << kind.id << "." << field
+          << (renders_otherwise ? " changes the image but not the key" : " changes the key only");
+      ++(renders_otherwise ? changed : kept);
+    }
+  }
+  EXPECT_GT(changed, 20);
+  EXPECT_GT(kept, 20) << "e.g. a point light's radius, a spot's visible";
 }

@@ -3,6 +3,7 @@
 // contributor adds a method; it is listed, renders, and its parameter reaches the shader.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -10,6 +11,7 @@
 #include "core/error.hpp"
 #include "gl_fixture.hpp"
 #include "shading/method_module.hpp"
+#include "shading/registry.hpp"
 
 using namespace glintlab;
 using namespace glintlab::test;
@@ -116,6 +118,12 @@ TEST(MethodRegistry, ParameterValuesReachTheShader) {
   expect_scaled(doubled.total, conventional.total, 2.0f);
   expect_scaled(doubled.specular, conventional.specular, 2.0f);
   EXPECT_EQ(sum_of(f.method("test-gain", {{"gain", "0"}}).total), 0.0);
+  // An enumeration: a `uniform int` set to the choice's index, equal to its generated define.
+  const Frame specular_only = f.method("test-gain", {{"gain", "2"}, {"terms", "specular"}});
+  expect_scaled(specular_only.specular, conventional.specular, 2.0f);
+  const double diffuse = sum_of(conventional.total) - sum_of(conventional.specular);
+  EXPECT_NEAR(sum_of(specular_only.total) - sum_of(specular_only.specular), diffuse, 1e-4 * diffuse);
+  EXPECT_GT(diffuse, 0.1 * sum_of(conventional.total));
 }
 
 TEST(MethodRegistry, ADeclaredParameterTheModuleNeverReadsIsAnErrorNamingIt) {
@@ -157,6 +165,37 @@ TEST(MethodModule, DeclaresEachParameterThenIncludesTheModule) {
   EXPECT_EQ(generated_module_path(descriptor("m", {})), "generated/methods/m.glsl");
 }
 
+TEST(MethodModule, EnumerationsAreIntsTheirChoicesIndices) {
+  ParamDecl picked{"picked", 0, 0, 2, "", {"first", "second-one", "third"}};
+  ParamDecl fixed = picked;
+  fixed.name = "fixed";
+  fixed.compile_time = true;
+  const MethodDescriptor m = descriptor("m", {picked, fixed});
+  const std::string source = generated_module_source(m, "x = param_picked == param_fixed;", {{"fixed", 1.0f}});
+  EXPECT_TRUE(contains(source, "uniform int param_picked;\n")) << source;
+  EXPECT_TRUE(contains(source, "const int param_fixed = 1;  // FIXED_SECOND_ONE\n")) << source;
+  EXPECT_EQ(generated_module_path(m, {{"fixed", 2.0f}}), "generated/methods/m.fixed-third.glsl");
+}
+
+TEST(MethodRegistry, ChoiceDefinesAreTheParameterAndChoiceInUpperSnakeCase) {
+  EXPECT_EQ(choice_define("area_lights", "representative-point"), "AREA_LIGHTS_REPRESENTATIVE_POINT");
+  EXPECT_EQ(choice_define("remaining_count", "lognormal"), "REMAINING_COUNT_LOGNORMAL");
+  EXPECT_EQ(choice_define("lean", "on"), "LEAN_ON");
+  EXPECT_EQ(choice_define("subdivision", "2x2"), "SUBDIVISION_2X2");
+  EXPECT_EQ(choice_define("elements_per_texel", "1"), "ELEMENTS_PER_TEXEL_1");
+  // The registered methods' choices, each name once, valued by their index.
+  const auto defines = enumeration_defines(all_methods());
+  const auto value = [&](const std::string& name) {
+    const auto it = std::find_if(defines.begin(), defines.end(), [&](const auto& d) { return d.first == name; });
+    return it == defines.end() ? std::string("absent") : it->second;
+  };
+  EXPECT_EQ(value("AREA_LIGHTS_REPRESENTATIVE_POINT"), "0");
+  EXPECT_EQ(value("AREA_LIGHTS_LTC"), "1");
+  EXPECT_EQ(value("TERMS_SPECULAR"), "1") << "test-gain's, registered in this binary";
+  EXPECT_EQ(std::count_if(defines.begin(), defines.end(), [](const auto& d) { return d.first == "AREA_LIGHTS_LTC"; }),
+            1);
+}
+
 TEST(MethodModule, AModuleDeclaringItsOwnParameterUniformIsAnError) {
   try {
     generated_module_source(descriptor("m", {{"a", 0, 0, 1, ""}}),
@@ -181,6 +220,14 @@ MethodDescriptor second() { return descriptor("second", {}); }
 MethodDescriptor first_again() { return descriptor("first", {}); }
 MethodDescriptor bad_param() { return descriptor("bad", {{"not an identifier", 0, 0, 1, ""}}); }
 MethodDescriptor bad_default() { return descriptor("bad", {{"p", 2, 0, 1, ""}}); }
+MethodDescriptor bad_choice() { return descriptor("bad", {{"p", 0, 0, 1, "", {"ok", "Not OK"}}}); }
+MethodDescriptor one_define() { return descriptor("bad", {{"p", 0, 0, 1, "", {"a-b", "a_b"}}}); }
+MethodDescriptor lean_on_off() { return descriptor("first", {{"lean", 0, 0, 1, "", {"off", "on"}}}); }
+MethodDescriptor lean_other() { return descriptor("second", {{"lean", 0, 0, 2, "", {"off", "on", "more"}}}); }
+MethodDescriptor lean_number() { return descriptor("second", {{"lean", 0, 0, 1, ""}}); }
+MethodDescriptor lean_same() { return descriptor("second", {{"lean", 1, 0, 1, "", {"off", "on"}}}); }
+MethodDescriptor lean_x() { return descriptor("second", {{"lean_x", 0, 0, 1, "", {"y", "z"}}}); }
+MethodDescriptor lean_collides() { return descriptor("third", {{"lean", 0, 0, 1, "", {"x_y", "w"}}}); }
 
 std::string ordering_failure(const std::vector<MethodRegistration>& registrations) {
   try {
@@ -210,4 +257,20 @@ TEST(MethodRegistry, AnInvalidDeclarationIsAnErrorNamingTheMethod) {
   EXPECT_TRUE(
       contains(ordering_failure({{&bad_param, 1, "bad.cpp"}}), "'not an identifier' is not a GLSL identifier"));
   EXPECT_TRUE(contains(ordering_failure({{&bad_default, 1, "bad.cpp"}}), "method 'bad' (bad.cpp)"));
+  EXPECT_TRUE(contains(ordering_failure({{&bad_choice, 1, "bad.cpp"}}), "has the choice 'Not OK'"));
+  EXPECT_TRUE(contains(ordering_failure({{&one_define, 1, "bad.cpp"}}), "which are one GLSL define, P_A_B"));
+}
+
+TEST(MethodRegistry, AnEnumerationHasTheSameChoicesInEveryMethod) {
+  // Its GLSL defines are shared, so that code several methods use can test a choice.
+  for (auto other : {&lean_other, &lean_number}) {
+    const std::string message = ordering_failure({{&lean_on_off, 10, "src/a.cpp"}, {other, 20, "src/b.cpp"}});
+    EXPECT_TRUE(contains(message, "methods 'first' (a.cpp) and 'second' (b.cpp) both declare the parameter 'lean'"))
+        << message;
+  }
+  EXPECT_EQ(ordering_failure({{&lean_on_off, 10, "a.cpp"}, {&lean_same, 20, "b.cpp"}}), "") << "defaults may differ";
+  // lean_x = y and lean = x_y are both LEAN_X_Y.
+  const std::string collision = ordering_failure({{&lean_x, 10, "a.cpp"}, {&lean_collides, 20, "c.cpp"}});
+  EXPECT_TRUE(contains(collision, "are both the GLSL define LEAN_X_Y")) << collision;
+  EXPECT_TRUE(contains(collision, "'third' (c.cpp)") && contains(collision, "'second' (a.cpp)")) << collision;
 }

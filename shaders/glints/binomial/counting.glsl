@@ -3,9 +3,11 @@
 // count is drawn as a gate (at least one facet reflects, probability P1) times one plus the
 // others that reflect, so that E[count] = n p: what makes E[D_glint] = D(h).
 
-// The models of the others' count given the first (the method's `remaining_count`).
-const int REMAINING_LOGNORMAL = 0;  // glintlab: the exact conditional mean and variance
-const int REMAINING_GAUSSIAN = 1;   // the paper: binomial(n - 1, p) as a Gaussian, clamped
+// The models of the others' count given the first are the methods' enumeration `remaining_count`
+// (src/shading/methods/shared_params.hpp), REMAINING_COUNT_LOGNORMAL (glintlab: the exact
+// conditional mean and variance) and REMAINING_COUNT_GAUSSIAN (the paper: binomial(n - 1, p) as a
+// Gaussian, clamped), from the generated contract.
+#include "generated/gpu_contract.glsl"
 
 // ln(1 - p) for p in [0, 1): its series below 0.01, where fp32 would round 1 - p (to 1 below
 // p ~ 6e-8: the paper's pow(1 - p, n) then loses every facet of a dense surface).
@@ -40,15 +42,15 @@ float reflectionGate(float p1, float u) {
 // The law of the facets that reflect besides the first, for n facets of probability p with
 // P1 = probabilityAnyReflects(p, n): (the Gaussian's mean, deviation) or (the lognormal's mean,
 // the deviation of its logarithm).
-//  - REMAINING_GAUSSIAN (the paper, with Kneiphof & Klein's fixes): the other n - 1 facets as
+//  - REMAINING_COUNT_GAUSSIAN (the paper, with Kneiphof & Klein's fixes): the other n - 1 facets as
 //    binomial(n - 1, p) ~ N((n - 1) p, (n - 1) p (1 - p)), clamped to [0, n - 1], not floored.
 //    E[count] = P1 (1 + (n - 1) p) + the clamp's bias: 26% over n p at n p = 1.
-//  - REMAINING_LOGNORMAL: the count given k >= 1 has mean r = n p / P1 and variance
+//  - REMAINING_COUNT_LOGNORMAL: the count given k >= 1 has mean r = n p / P1 and variance
 //    r (1 + (n - 1) p - r) (from E[k] = n p, E[k^2] = n p (1 - p) + n^2 p^2); the others, k - 1,
 //    as a lognormal of that mean and variance: never negative, so no clamp at 0 biases it.
 vec2 remainingLaw(float p, float n, float p1, int model) {
   float others = max(n - 1.0, 0.0);
-  if (model == REMAINING_GAUSSIAN) return vec2(others * p, sqrt(others * p * (1.0 - p)));
+  if (model == REMAINING_COUNT_GAUSSIAN) return vec2(others * p, sqrt(others * p * (1.0 - p)));
   float r = n * p / max(p1, 1e-37);
   float mean = max(r - 1.0, 0.0);
   float variance = max(r * (1.0 + others * p - r), 0.0);
@@ -61,6 +63,6 @@ vec2 remainingLaw(float p, float n, float p1, int model) {
 // at most n in all.
 float countGivenAny(vec2 law, float n, float g, int model) {
   float others = max(n - 1.0, 0.0);
-  float k = model == REMAINING_GAUSSIAN ? law.x + law.y * g : law.x * exp(law.y * g - 0.5 * law.y * law.y);
+  float k = model == REMAINING_COUNT_GAUSSIAN ? law.x + law.y * g : law.x * exp(law.y * g - 0.5 * law.y * law.y);
   return 1.0 + clamp(k, 0.0, others);
 }

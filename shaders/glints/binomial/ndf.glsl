@@ -91,7 +91,7 @@ float binomialReflectingShare(BinomialSurface b, vec2 slope, float p, int model)
   return sum;
 }
 
-// D_glint(h) for the GGX NDF of roughness alpha with REMAINING_* model `model`. A facet reflects
+// D_glint(h) for the GGX NDF of roughness alpha with REMAINING_COUNT_* model `model`. A facet reflects
 // with probability p = R D(h) / D(0) = R / e^2 (GGX: D = 1 / (pi ax ay e^2), e = 1 at h = n), so
 // E[D_glint] = E[share] D(0) / R = D(h).
 float binomialNdf(BinomialSurface b, vec3 h, vec2 alpha, int model) {

@@ -48,6 +48,6 @@ float binomialRealisationNdf(BinomialSurface b, vec3 h, vec2 alpha, int model) {
 vec3 binomialRealisationSpecularCos(BinomialSurface b, vec3 wo, vec3 wi, vec3 f0, vec2 alpha) {
   if (wo.z <= 0.0 || wi.z <= 0.0) return vec3(0.0);
   vec3 h = normalize(wo + wi);
-  float d = binomialRealisationNdf(b, h, alpha, REMAINING_LOGNORMAL);
+  float d = binomialRealisationNdf(b, h, alpha, REMAINING_COUNT_LOGNORMAL);
   return fresnelSchlick(f0, dot(wo, h)) * (0.25 * d * smithG2OverCos(NDF_GGX, wo, wi, alpha));
 }

@@ -3,14 +3,10 @@
 // comes from the table registry): marginal k of level l lives in channel k % 3 of layer
 // l * GLINT_MARGINALS / 3 + k / 3; texel x holds the density at |slope| = (x + 1/2) / texels *
 // GLINT_SLOPE_RANGE, so the texture coordinate of a slope s is |s| / GLINT_SLOPE_RANGE. The
-// constants mirror GlintDictionarySettings' defaults (checked by tests/glsl/test_glints.cpp).
+// constants GLINT_MARGINALS, GLINT_LEVELS, GLINT_DICT_SIGMA (sigma_dict = alpha_dict / sqrt 2) and
+// GLINT_SLOPE_RANGE (4 sigma_dict) are the generator's settings, declared by the table
+// (src/tables/glint_dictionary_table.cpp) and defined in the generated contract.
 #include "generated/gpu_contract.glsl"
-
-const int GLINT_MARGINALS = 192;
-const int GLINT_LEVELS = 16;
-const float GLINT_DICT_ALPHA = 0.5;
-const float GLINT_DICT_SIGMA = 0.35355339;  // alpha_dict / sqrt(2)
-const float GLINT_SLOPE_RANGE = 4.0 * GLINT_DICT_SIGMA;
 
 layout(binding = TABLE_UNIT_GLINT_DICTIONARY) uniform sampler1DArray uGlintDictionary;
 

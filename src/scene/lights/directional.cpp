@@ -21,11 +21,6 @@ LightKind directional_light_kind() {
             if (l.angular_radius_degrees > 0.0f) l.kind = &find_light_kind("sun");
             return l;
           },
-      .hash =
-          [](Hasher& h, const Light& l) {
-            h.value(l.colour);
-            h.value(l.direction);
-          },
       .pack =
           [](const Light& l) {
             LightGpu g{};

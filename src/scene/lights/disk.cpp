@@ -19,14 +19,6 @@ LightKind disk_light_kind() {
             l.direction = light_keys::require_direction(r, "direction");
             return l;
           },
-      .hash =
-          [](Hasher& h, const Light& l) {
-            h.value(l.colour);
-            h.value(l.position);
-            h.value(l.direction);
-            h.value(l.radius);
-            h.value(l.visible);
-          },
       .pack =
           [](const Light& l) {
             LightGpu g{};

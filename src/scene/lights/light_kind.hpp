@@ -11,7 +11,6 @@
 #include <vector>
 
 #include "core/gpu_contract.hpp"
-#include "core/hash.hpp"
 #include "scene/lights/light.hpp"
 #include "scene/mesh.hpp"
 
@@ -40,9 +39,9 @@ struct LightKind {
   /// Reads the kind's keys (after `type`) into a Light whose kind is set; validates them. May
   /// return another kind (a directional light with an angular radius is a sun).
   Light (*parse)(TomlReader& reader) = nullptr;
-  /// Hashes every parameter the kind reads (Scene::content_hash).
-  void (*hash)(Hasher& hasher, const Light& light) = nullptr;
-  /// The GPU record; colour_type.w (the code) is set by the caller.
+  /// The GPU record; colour_type.w (the code) is set by the caller. It and the emitter are all
+  /// that images see of a light, so they are what Scene::content_hash hashes (with the kind's id):
+  /// a kind has no hash of its own to keep in step with its fields.
   LightGpu (*pack)(const Light& light) = nullptr;
   /// The emitter mesh of a visible light with extent; nullopt when it is not drawn.
   std::optional<LightEmitter> (*emitter)(const Light& light) = nullptr;

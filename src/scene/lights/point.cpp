@@ -17,11 +17,6 @@ LightKind point_light_kind() {
             l.colour = r.get_colour("intensity", glm::vec3(1.0f), 0.0, light_keys::kMaxPower);
             return l;
           },
-      .hash =
-          [](Hasher& h, const Light& l) {
-            h.value(l.colour);
-            h.value(l.position);
-          },
       .pack =
           [](const Light& l) {
             LightGpu g{};

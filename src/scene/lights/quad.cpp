@@ -22,15 +22,6 @@ LightKind quad_light_kind() {
               r.fail("up", "is parallel to direction or zero; it must orient the quad");
             return l;
           },
-      .hash =
-          [](Hasher& h, const Light& l) {
-            h.value(l.colour);
-            h.value(l.position);
-            h.value(l.direction);
-            h.value(l.up);
-            h.value(l.size);
-            h.value(l.visible);
-          },
       .pack =
           [](const Light& l) {
             // Half edges: u = up x normal, v = normal x u (docs/scene-format.md).

@@ -18,13 +18,6 @@ LightKind sphere_light_kind() {
             l.radius = static_cast<float>(r.require_number("radius", 1e-6, light_keys::kMaxLength));
             return l;
           },
-      .hash =
-          [](Hasher& h, const Light& l) {
-            h.value(l.colour);
-            h.value(l.position);
-            h.value(l.radius);
-            h.value(l.visible);
-          },
       .pack =
           [](const Light& l) {
             LightGpu g{};

@@ -44,14 +44,6 @@ LightKind spot_light_kind() {
             l.outer_angle_degrees = static_cast<float>(outer);
             return l;
           },
-      .hash =
-          [](Hasher& h, const Light& l) {
-            h.value(l.colour);
-            h.value(l.position);
-            h.value(l.direction);
-            h.value(l.inner_angle_degrees);
-            h.value(l.outer_angle_degrees);
-          },
       .pack =
           [](const Light& l) {
             // The cones' cosines in double; the shader evaluates (cos - cos outer) * scale, so that

@@ -21,12 +21,6 @@ LightKind sun_light_kind() {
             l.angular_radius_degrees = static_cast<float>(r.get_number("angular_radius", 0.27, 1e-6, 45.0));
             return l;
           },
-      .hash =
-          [](Hasher& h, const Light& l) {
-            h.value(l.colour);
-            h.value(l.direction);
-            h.value(l.angular_radius_degrees);
-          },
       .pack =
           [](const Light& l) {
             // The cone in double: 1 - cos = 2 sin^2(theta / 2) keeps its precision at small angles,

@@ -30,7 +30,7 @@ class GpuTables {
   void bind() const;
   /// The texture of a resident table, or 0.
   [[nodiscard]] GLuint texture(const std::string& id) const;
-  /// Where tables are cached (also where prefiltered NDF pyramids are: src/render/prefiltered_ndfs.hpp).
+  /// Where tables are cached (also where prefiltered NDF pyramids are: src/render/resources/prefiltered_ndf_resource.cpp).
   [[nodiscard]] const TableCache& cache() const { return cache_; }
   /// One per resident table, in the order they were required.
   [[nodiscard]] std::vector<TableReport> reports() const;

@@ -6,8 +6,8 @@
 namespace glintlab {
 
 namespace {
-constexpr float kDefaultAlpha = 0.2f;
-constexpr double kMinAlpha = 0.01, kMaxAlpha = 1.0;
+constexpr float kBinomialDefaultAlpha = 0.2f;
+constexpr double kBinomialMinAlpha = 0.01, kBinomialMaxAlpha = 1.0;
 }  // namespace
 
 MaterialKind binomial_glints_material_kind() {
@@ -33,14 +33,14 @@ MaterialKind binomial_glints_material_kind() {
                  {"slope_grid_scale", 16.0f, 0.1, 1000.0,
                   "cells of the slope grid per unit of the projected half vector h.xy: how far the half vector turns "
                   "before a glint changes (Kneiphof & Klein's `HalfwaySlopeScale`; the paper used 1/R)"}},
-      .lobe_keys = {{"alpha", "number or [ax, ay]", number_text(kDefaultAlpha), range_text(kMinAlpha, kMaxAlpha),
+      .lobe_keys = {{"alpha", "number or [ax, ay]", number_text(kBinomialDefaultAlpha), range_text(kBinomialMinAlpha, kBinomialMaxAlpha),
                      "GGX roughness of the smooth NDF the glints have as expectation"}},
       .parse_lobe =
           [](TomlReader& r, Material& m) {
             if (r.has("ndf"))
               r.fail("ndf", "is not a key of a binomial-glints material; its NDF is GGX (of roughness alpha)");
             m.ndf = Ndf::GGX;
-            m.alpha = r.get_vec2("alpha", glm::vec2(kDefaultAlpha), kMinAlpha, kMaxAlpha);
+            m.alpha = r.get_vec2("alpha", glm::vec2(kBinomialDefaultAlpha), kBinomialMinAlpha, kBinomialMaxAlpha);
           },
   };
 }

@@ -6,8 +6,8 @@
 namespace glintlab {
 
 namespace {
-constexpr float kDefaultAlpha = 0.1f;
-constexpr double kMinAlpha = 0.0, kMaxAlpha = 1.0;
+constexpr float kMicrofacetDefaultAlpha = 0.1f;
+constexpr double kMicrofacetMinAlpha = 0.0, kMicrofacetMaxAlpha = 1.0;
 }  // namespace
 
 MaterialKind microfacet_material_kind() {
@@ -21,12 +21,12 @@ MaterialKind microfacet_material_kind() {
                  "plus a Lambert term. What every method is built for; every other kind's smooth limit is one.",
       .params = {},
       .lobe_keys = {{"ndf", "string", "\"ggx\"", "ggx, beckmann", "microfacet distribution"},
-                    {"alpha", "number or [ax, ay]", number_text(kDefaultAlpha), range_text(kMinAlpha, kMaxAlpha),
+                    {"alpha", "number or [ax, ay]", number_text(kMicrofacetDefaultAlpha), range_text(kMicrofacetMinAlpha, kMicrofacetMaxAlpha),
                      "roughness alpha (anisotropic: along +u and +v, or the anisotropy direction of glTF materials)"}},
       .parse_lobe =
           [](TomlReader& r, Material& m) {
             m.ndf = r.get_string("ndf", "ggx", {"ggx", "beckmann"}) == "ggx" ? Ndf::GGX : Ndf::Beckmann;
-            m.alpha = r.get_vec2("alpha", glm::vec2(kDefaultAlpha), kMinAlpha, kMaxAlpha);
+            m.alpha = r.get_vec2("alpha", glm::vec2(kMicrofacetDefaultAlpha), kMicrofacetMinAlpha, kMicrofacetMaxAlpha);
           },
   };
 }

@@ -57,7 +57,7 @@ class Renderer {
   [[nodiscard]] Frame read_frame() const;
   /// The same with any shading module in the method slot (e.g. passes/unshaded.glsl).
   void draw_module(const std::string& module, const ParamValues& params, const Camera& camera, int width, int height);
-  /// draw_module, read back (e.g. the diagnostics of passes/glint_cells.glsl).
+  /// draw_module, read back (e.g. the diagnostics of glints/chermain/glint_cells.glsl).
   Frame render_module(const std::string& module, const ParamValues& params, const Camera& camera, int width,
                       int height);
 

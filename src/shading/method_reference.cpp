@@ -1,22 +1,17 @@
 #include "shading/method_reference.hpp"
 
+#include "core/markdown_cell.hpp"
+
 namespace glintlab {
 
 namespace {
-
-/// A table cell: '|' would end it.
-std::string cell(const std::string& text) {
-  std::string out;
-  for (char c : text) out += c == '|' ? std::string("\\|") : std::string(1, c);
-  return out;
-}
 
 std::string parameters_markdown(const MethodDescriptor& m) {
   if (m.params.empty()) return "Parameters: none.\n";
   std::string out = "| parameter | default | allowed | description |\n| --- | --- | --- | --- |\n";
   for (const ParamDecl& p : m.params)
-    out += "| `" + p.name + "` | `" + cell(p.default_text()) + "` | `" + cell(p.allowed()) + "` | " +
-           cell(p.description) + " |\n";
+    out += "| `" + p.name + "` | `" + markdown_cell(p.default_text()) + "` | `" + markdown_cell(p.allowed()) + "` | " +
+           markdown_cell(p.description) + " |\n";
   return out;
 }
 

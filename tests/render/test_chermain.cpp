@@ -100,11 +100,11 @@ TEST(Chermain, GlintsAreAttachedToTheSurfaceAndDeterministic) {
 }
 
 TEST(Chermain, TheCellGuardNeverTruncatesOnTheBuiltInScenesAt1080p) {
-  // passes/glint_cells.glsl: cells inside each pixel's footprint at its two levels, unguarded.
+  // glints/chermain/glint_cells.glsl: cells inside each pixel's footprint at its two levels, unguarded.
   for (const std::string name : {"glint-tubes", "glint-sphere", "glint-terrain"}) {
     SceneFixture f(load_scene("builtin:" + name));
     for (int frame : {0, f.scene.path.frames - 1}) {
-      const Frame cells = f.renderer->render_module("passes/glint_cells.glsl", {}, f.scene.path.at(f.scene.camera, frame),
+      const Frame cells = f.renderer->render_module("glints/chermain/glint_cells.glsl", {}, f.scene.path.at(f.scene.camera, frame),
                                                     1920, 1080);
       float most = 0;
       std::size_t glinty = 0, over = 0;

@@ -9,7 +9,7 @@
 
 // Cells inside the footprint evaluated per level at most: glintlab's guard (the authors' shaders
 // stop after 101 cells of the bounding box; docs/methods.md, "Departures from the authors'
-// shaders"). passes/glint_cells.glsl counts how many a footprint holds.
+// shaders"). glint_cells.glsl counts how many a footprint holds.
 const int GLINT_MAX_CELLS = 100;
 // Standard deviation of the per-cell jitter of the dictionary level (2020, sec. 4.3: zeta = 2).
 const float GLINT_LEVEL_JITTER = 2.0;

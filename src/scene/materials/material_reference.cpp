@@ -1,17 +1,12 @@
 #include "scene/materials/material_reference.hpp"
 
+#include "core/markdown_cell.hpp"
+
 #include "scene/toml_reader.hpp"
 
 namespace glintlab {
 
 namespace {
-
-/// A table cell: '|' would end it.
-std::string cell(const std::string& text) {
-  std::string out;
-  for (char c : text) out += c == '|' ? std::string("\\|") : std::string(1, c);
-  return out;
-}
 
 std::string source_file(const MaterialKind& k) {
   std::string name = k.id;
@@ -38,12 +33,12 @@ std::string material_reference_markdown(const std::vector<MaterialKind>& kinds) 
       out += "| `normal_map` | table | required | a file or a generator (below) | the microsurface itself; missing is "
              "exit 2 naming the material |\n";
     for (const MaterialKeyDoc& d : k.lobe_keys)
-      out += "| `" + d.key + "` | " + d.type + " | " + cell(d.default_text) + " | " + cell(d.allowed) + " | " +
-             cell(d.meaning) + " |\n";
+      out += "| `" + d.key + "` | " + d.type + " | " + markdown_cell(d.default_text) + " | " + markdown_cell(d.allowed) + " | " +
+             markdown_cell(d.meaning) + " |\n";
     for (const MaterialParamDecl& p : k.params)
       if (!p.derived)
         out += "| `" + p.key + "` | number | " + number_text(p.default_value) + " | " + range_text(p.min, p.max) +
-               " | " + cell(p.description) + " |\n";
+               " | " + markdown_cell(p.description) + " |\n";
     for (const MaterialParamDecl& p : k.params)
       if (p.derived) out += "\nDerived (not a key): `" + p.key + "`, " + p.description + ".\n";
     out += "\n";

@@ -10,6 +10,7 @@
 // (measured in docs/results.md, "Speed").
 #include "lights/lights.glsl"
 #include "core/surface.glsl"
+#include "lobe/environment_shading.glsl"
 
 const ivec2 kLightRange[LIGHT_KIND_COUNT] = LIGHT_RANGES;
 
@@ -18,12 +19,25 @@ void addRadiance(inout Radiance sum, Radiance r) {
   sum.specular += r.specular;
 }
 
+// A light that is not compact (an environment): a module that shades it itself says so with
+// `#define METHOD_SHADES_ENVIRONMENT` (the lobe methods, with their own lobe; the reference); any
+// other shades it as its material's smooth limit by the split sum (the glint methods and podee for
+// now: docs/methods.md, "Environment lights").
+Radiance shadeEnvironmentLight(Surface s, LightData L) {
+#ifdef METHOD_SHADES_ENVIRONMENT
+  return shadeLight(s, L);
+#else
+  return shadeLobeEnvironment(s, L, materialSmoothLobe(s));
+#endif
+}
+
 Radiance shadeLightsOfKind(Surface s, const int kind) {
   Radiance sum = Radiance(vec3(0.0), vec3(0.0));
   for (int i = kLightRange[kind].x; i < kLightRange[kind].y; ++i) {
     LightData L = lights[i];
     L.colour_type.a = float(kind);  // a constant: lightType(L) folds to this kind
-    addRadiance(sum, shadeLight(s, L));
+    if (lightIsCompact(L)) addRadiance(sum, shadeLight(s, L));
+    else addRadiance(sum, shadeEnvironmentLight(s, L));
   }
   return sum;
 }

@@ -5,11 +5,13 @@
 // kind, as in the light loop (lights/light_loop.glsl), it folds to the kind's own function.
 //
 // Every kind:
+//   bool lightHasExtent(L), lightIsDistant(L), lightIsCompact(L)  declared by the kind;
+//                                              int lightForm(L): LIGHT_FORM_*
+// Compact kinds (one radiance over a bounded extent; not an environment):
 //   vec3 lightCentreDirection(L, p)            unit direction from p to the light's centre
-//   bool lightHasExtent(L), lightIsDistant(L)  declared by the kind; int lightForm(L): LIGHT_FORM_*
 // Delta lights (no extent):
 //   void deltaLightIncidence(L, p, out l, out irradiance)  direction and irradiance at normal incidence
-// Lights with extent:
+// Compact lights with extent:
 //   vec3 lightRadiance(L)                      radiance (delta lights: intensity or irradiance)
 //   float lightSolidAngle(L, p, centreDir)     projected solid angle about centreDir (0 from behind):
 //                                              the irradiance at normal incidence over the radiance
@@ -17,6 +19,9 @@
 //                                              to r (Karis 2013); sinHalf: of the cone of equal solid angle
 //   void lightOutline(L, p, centreDir, sinHalf, out dl1, out dl2)   the outline seen from p as an
 //                                              ellipse of conjugate semi-axes, changes of centreDir
+// Every light with extent:
+//   vec3 lightRadianceFrom(L, dir)             the radiance arriving from direction dir (compact
+//                                              kinds: lightRadiance; an environment: its map)
 //   bool lightHit(L, origin, dir, out dist)    does the ray reach the emitting side, and where
 //   bool sampleLightDirection(L, p, u, out dir, out dist, out pdf)  a direction towards the light
 //   float lightPdf(L, p, dir, dist)            the solid-angle density of sampleLightDirection

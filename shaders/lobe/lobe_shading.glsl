@@ -4,6 +4,7 @@
 #include "generated/gpu_contract.glsl"
 #include "core/brdf.glsl"
 #include "lobe/delta_lights.glsl"
+#include "lobe/environment_shading.glsl"
 #include "lights/lights.glsl"
 #include "lobe/light_image.glsl"
 #include "lobe/lobe.glsl"
@@ -62,11 +63,25 @@ Radiance shadeLobe(Surface s, LightData L, Lobe lobe) {
   return result;
 }
 
+// The direction a method filters its lobe towards (its half vector's screen-space derivatives):
+// the light's centre. For a light that is not compact (an environment), the view mirrored about
+// the triangle's face normal: a direction held fixed across the pixel (within a triangle), so that
+// the half vector seen from the turning shading frame spreads by the surface's curvature and its
+// normal map, as a distant light's would (the mirror direction itself has h = n: no spread).
+vec3 lobeLightDirection(Surface s, LightData L) {
+  if (lightIsCompact(L)) return lightCentreDirection(L, s.position);
+  vec3 face = cross(s.footprint.dPdx, s.footprint.dPdy);
+  vec3 n = dot(face, face) > 0.0 ? normalize(dot(face, s.vertexNormal) < 0.0 ? -face : face) : s.vertexNormal;
+  return reflect(-s.view, n);
+}
+
 // The area-light integration a lobe method chose (its compile-time enumeration `area_lights`,
 // src/shading/methods/shared_params.hpp; the AREA_LIGHTS_* choices come from the generated
 // contract): AREA_LIGHTS_LTC integrates GGX lobes' linearly transformed cosines over the light
-// (ltc/ltc_shading.glsl); AREA_LIGHTS_REPRESENTATIVE_POINT is shadeLobe above.
+// (ltc/ltc_shading.glsl); AREA_LIGHTS_REPRESENTATIVE_POINT is shadeLobe above. An environment
+// takes the split sum (lobe/environment_shading.glsl) at the same lobe.
 Radiance shadeLobe(Surface s, LightData L, Lobe lobe, int areaLights) {
+  if (!lightIsCompact(L)) return shadeLobeEnvironment(s, L, lobe);
   if (areaLights == AREA_LIGHTS_LTC && lightHasExtent(L) && lobe.ndf == NDF_GGX) {
     vec3 wo = toLocal(s, s.view);
     if (wo.z <= 0.0) return Radiance(vec3(0.0), vec3(0.0));

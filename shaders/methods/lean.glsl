@@ -1,6 +1,7 @@
 // Method `lean`: LEAN mapping (Olano & Baker 2010): the normal map's slope moments, filtered by
 // the texture hardware, give the mean normal and the slope covariance inside the pixel's
 // texture footprint. Descriptor: src/shading/methods/lean.cpp; docs/methods.md#lean.
+#define METHOD_SHADES_ENVIRONMENT  // through shadeLobe, at its own lobe
 #include "lobe/lobe_shading.glsl"
 #include "lobe/slope_moments.glsl"
 

@@ -1,5 +1,6 @@
 // Method `toksvig`: Toksvig's (2005) roughness from the length of the mip-filtered normal-map
 // normal. Descriptor: src/shading/methods/toksvig.cpp; docs/methods.md#toksvig.
+#define METHOD_SHADES_ENVIRONMENT  // through shadeLobe, at its own lobe
 #include "lobe/lobe_shading.glsl"
 #include "lobe/roughness_filtering.glsl"
 

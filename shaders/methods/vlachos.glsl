@@ -1,5 +1,6 @@
 // Method `vlachos`: roughness clamped from below by the screen-space change of the vertex normal
 // (Vlachos 2015). Descriptor: src/shading/methods/vlachos.cpp; docs/methods.md#vlachos.
+#define METHOD_SHADES_ENVIRONMENT  // through shadeLobe, at its own lobe
 #include "lobe/lobe_shading.glsl"
 #include "lobe/roughness_filtering.glsl"
 

@@ -3,7 +3,10 @@
 // Veach 1997) with low-discrepancy samples stratified over the pixel's k x k sub-pixels.
 // Never uses the approximations of any method. Included in place of a method module; the material
 // is its kind's, through the material interface (the forward pass's $MATERIAL: materialPrepare,
-// materialSpecularCos, ...; src/render/shader_contract.cpp), so this file names no kind.
+// materialSpecularCos, ...; src/render/shader_contract.cpp), so this file names no kind. Lights
+// that are not compact (an environment) are integrated here too: their radiance is read per
+// direction (lightRadianceFrom), sampled by the light's own density.
+#define METHOD_SHADES_ENVIRONMENT
 #include "core/brdf.glsl"
 #include "core/frame.glsl"
 #include "lights/lights.glsl"
@@ -41,7 +44,6 @@ Radiance shadeLight(Surface s, LightData L) {
   uint seed = hash3(uvec3(uvec2(pixel), lightIndex * 9781u + uint(frame.tile.w)));
   vec2 rotLight = hashToUnit2(seed);
   vec2 rotBrdf = hashToUnit2(pcgHash(seed + 1u));
-  vec3 radiance = lightRadiance(L);
   bool mirror = max(s.alpha.x, s.alpha.y) < REFERENCE_MIRROR_ALPHA;  // no glinty kind allows it
 
   for (uint j = 0u; j < n; ++j) {
@@ -50,6 +52,7 @@ Radiance shadeLight(Surface s, LightData L) {
     if (sampleLightDirection(L, s.position, r2Point(first + j, rotLight), dir, dist, pdfLight) && pdfLight > 0.0) {
       vec3 wi = toLocal(s, dir);
       if (wi.z > 0.0) {
+        vec3 radiance = lightRadianceFrom(L, dir);
         result.diffuse += materialDiffuseCos(s, wi) * radiance / pdfLight;
         if (!mirror) {
           float w = powerHeuristic(pdfLight, materialSamplePdf(s, wo, wi));
@@ -65,17 +68,20 @@ Radiance shadeLight(Surface s, LightData L) {
         float pdfBrdf = materialSamplePdf(s, wo, wi);
         float pdfL = lightPdf(L, s.position, dirWorld, dist);
         if (pdfBrdf > 0.0)
-          result.specular += materialLightIntegrand(s, wo, wi) * radiance * (powerHeuristic(pdfBrdf, pdfL) / pdfBrdf);
+          result.specular += materialLightIntegrand(s, wo, wi) * lightRadianceFrom(L, dirWorld) *
+                             (powerHeuristic(pdfBrdf, pdfL) / pdfBrdf);
       }
     }
   }
   result.diffuse /= float(n);
   result.specular /= float(n);
-  result.specular *= materialLightFactor(s, L, wo, uint(sub.y * k + sub.x), rotLight, rotBrdf);
+  // A kind's per-light factor (binomial glints' count of facets towards a compact light); under an
+  // environment the material's BRDF as evaluated (docs/methods.md, "Environment lights").
+  if (lightIsCompact(L)) result.specular *= materialLightFactor(s, L, wo, uint(sub.y * k + sub.x), rotLight, rotBrdf);
   if (mirror) {
     float dist;
     vec3 r = reflect(-s.view, s.normal);
-    if (lightHit(L, s.position, r, dist)) result.specular = fresnelSchlick(s.f0, wo.z) * radiance;
+    if (lightHit(L, s.position, r, dist)) result.specular = fresnelSchlick(s.f0, wo.z) * lightRadianceFrom(L, r);
   }
   return result;
 }

@@ -32,6 +32,14 @@ inline constexpr int kSlopeCrossMomentUnit = 2;
 inline constexpr int kBaseColorUnit = 3;
 inline constexpr int kMetallicRoughnessUnit = 4;
 inline constexpr int kEmissiveUnit = 5;
+/// Texture units of the scene's environment light (its `environment-map` resource,
+/// src/render/resources/environment_map_resource.cpp; shaders/lights/environment.glsl and
+/// shaders/lobe/environment_shading.glsl): its radiance map, the CDFs that sample it, the
+/// GGX-prefiltered mip chain and the irradiance map of the split sum.
+inline constexpr int kEnvironmentRadianceUnit = 6;
+inline constexpr int kEnvironmentCdfUnit = 7;
+inline constexpr int kEnvironmentSpecularUnit = 8;
+inline constexpr int kEnvironmentIrradianceUnit = 9;
 /// Per-draw texture transforms (uTextureTransforms in shaders/core/material.glsl), by slot.
 inline constexpr int kTextureSlotNormalMap = 0;
 inline constexpr int kTextureSlotBaseColor = 1;
@@ -40,7 +48,7 @@ inline constexpr int kTextureSlotEmissive = 3;
 inline constexpr int kTextureSlots = 4;
 /// Units from here on hold the precomputed tables, in their registry's order
 /// (src/tables/registry.cpp); GLSL sees each as TABLE_UNIT_<ID>.
-inline constexpr int kFirstTableUnit = 6;
+inline constexpr int kFirstTableUnit = 10;
 
 /// MaterialGpu::f0_ndf.w: the microfacet distribution.
 inline constexpr int kNdfGgx = 0;

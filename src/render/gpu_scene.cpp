@@ -180,7 +180,10 @@ GpuScene::GpuScene(const Scene& scene, TableCache tables)
   for (const LightKind& kind : all_light_kinds()) {
     const int begin = static_cast<int>(lights.size());
     for (const auto& l : scene.lights)
-      if (l.kind == &kind) lights.push_back(to_gpu(l));
+      if (l.kind == &kind) {
+        if (!kind.compact && l.visible) background_light_ = static_cast<int>(lights.size());
+        lights.push_back(to_gpu(l));
+      }
     light_ranges_.emplace_back(begin, static_cast<int>(lights.size()));
   }
   for (const auto& l : scene.lights) {

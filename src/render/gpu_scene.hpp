@@ -73,6 +73,9 @@ class GpuScene {
     static const ParamValues none;
     return none;
   }
+  /// The light-buffer index of the visible light that camera rays which miss the scene see (an
+  /// environment: shaders/passes/background.frag), or -1.
+  [[nodiscard]] int background_light() const { return background_light_; }
   /// The light buffer is sorted by kind; [x, y) is the index range of each kind.
   [[nodiscard]] const LightRanges& light_ranges() const { return light_ranges_; }
   /// Binds the material and light uniform buffers (kMaterialBlockBinding, kLightBlockBinding).
@@ -107,6 +110,7 @@ class GpuScene {
   gl::Buffer materials_;
   gl::Buffer lights_;
   LightRanges light_ranges_;
+  int background_light_ = -1;
 };
 
 }  // namespace glintlab

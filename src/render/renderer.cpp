@@ -16,6 +16,7 @@ namespace glintlab {
 Renderer::Renderer(ShaderLibrary& shaders, const GpuScene& scene) : shaders_(shaders), scene_(scene) {
   add_contract_sources(shaders_);
   frame_ubo_ = gl::make_buffer(sizeof(FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  empty_vertex_array_ = gl::make_vertex_array();
 }
 
 RenderTarget& Renderer::target(int width, int height) {
@@ -120,6 +121,18 @@ void Renderer::draw_scene(const std::string& module, const ParamValues& params, 
     glProgramUniform1i(emitter, glGetUniformLocation(emitter, "uTwoSided"), e.two_sided ? 1 : 0);
     glBindVertexArray(e.mesh.vao.id());
     glDrawElements(GL_TRIANGLES, e.mesh.index_count, GL_UNSIGNED_INT, nullptr);
+  }
+  if (scene_.background_light() >= 0) {
+    // Where nothing was drawn (depth still 1), the environment (shaders/passes/background.frag).
+    const GLuint background = shaders_.graphics("passes/background.vert", "passes/background.frag");
+    glUseProgram(background);
+    glProgramUniform1i(background, glGetUniformLocation(background, "uLight"), scene_.background_light());
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_FALSE);
+    glBindVertexArray(empty_vertex_array_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
   }
   glBindVertexArray(0);
   check_gl("drawing the scene");

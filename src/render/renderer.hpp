@@ -85,6 +85,7 @@ class Renderer {
   ShaderLibrary& shaders_;
   const GpuScene& scene_;
   gl::Buffer frame_ubo_;
+  gl::VertexArray empty_vertex_array_;  ///< the background pass's triangle has no vertex attributes
   std::unique_ptr<RenderTarget> target_;
   std::map<std::pair<std::string, MaterialVariant>, GLuint> forward_programs_;
   std::vector<std::string> method_resources_;  ///< what the method of the last prepare() reads

@@ -46,8 +46,10 @@ struct Dispatch {
   std::string fallback;   // the body's last statements
 };
 
-bool every_kind(const LightKind&) { return true; }
+bool compact(const LightKind& k) { return k.compact; }
 bool with_extent(const LightKind& k) { return k.has_extent; }
+bool compact_with_extent(const LightKind& k) { return k.has_extent && k.compact; }
+bool not_compact(const LightKind& k) { return !k.compact; }
 bool delta(const LightKind& k) { return !k.has_extent; }
 bool disk_form(const LightKind& k) { return k.form == LightForm::Disk; }
 bool polygon_form(const LightKind& k) { return k.form == LightForm::Polygon; }
@@ -79,23 +81,27 @@ std::string light_kinds_glsl() {
   out += "\n";
   out += property("lightHasExtent", with_extent);
   out += property("lightIsDistant", [](const LightKind& k) { return k.distant; });
+  out += property("lightIsCompact", compact);
   out += "int lightForm(LightData L) {\n  int kind = lightType(L);\n";
   for (const LightKind& k : all_light_kinds())
     if (k.form != LightForm::None) out += "  if (kind == " + code_name(k) + ") return " + form_name(k.form) + ";\n";
   out += "  return LIGHT_FORM_NONE;\n}\n\n";
 
   const std::vector<Dispatch> functions = {
-      {"vec3 lightCentreDirection(LightData L, vec3 p)", "CentreDirection", "L, p", true, every_kind,
+      {"vec3 lightCentreDirection(LightData L, vec3 p)", "CentreDirection", "L, p", true, compact,
        "return vec3(0.0, 0.0, 1.0);"},
       {"void deltaLightIncidence(LightData L, vec3 p, out vec3 l, out vec3 irradiance)", "Incidence",
        "L, p, l, irradiance", false, delta, "l = vec3(0.0, 0.0, 1.0);\n  irradiance = vec3(0.0);"},
-      {"vec3 lightRadiance(LightData L)", "Radiance", "L", true, with_extent, "return L.colour_type.rgb;"},
+      {"vec3 lightRadiance(LightData L)", "Radiance", "L", true, compact_with_extent, "return L.colour_type.rgb;"},
       {"float lightSolidAngle(LightData L, vec3 p, vec3 centreDir)", "SolidAngle", "L, p, centreDir", true,
-       with_extent, "return 0.0;"},
+       compact_with_extent, "return 0.0;"},
       {"vec3 lightRepresentativeDirection(LightData L, vec3 p, vec3 r, vec3 centreDir, float sinHalf)",
-       "RepresentativeDirection", "L, p, r, centreDir, sinHalf", true, with_extent, "return centreDir;"},
+       "RepresentativeDirection", "L, p, r, centreDir, sinHalf", true, compact_with_extent, "return centreDir;"},
       {"void lightOutline(LightData L, vec3 p, vec3 centreDir, float sinHalf, out vec3 dl1, out vec3 dl2)", "Outline",
-       "L, p, centreDir, sinHalf, dl1, dl2", false, with_extent, "dl1 = vec3(0.0);\n  dl2 = vec3(0.0);"},
+       "L, p, centreDir, sinHalf, dl1, dl2", false, compact_with_extent, "dl1 = vec3(0.0);\n  dl2 = vec3(0.0);"},
+      // Compact kinds: one radiance over the light.
+      {"vec3 lightRadianceFrom(LightData L, vec3 dir)", "RadianceFrom", "L, dir", true, not_compact,
+       "return lightRadiance(L);"},
       {"bool lightHit(LightData L, vec3 origin, vec3 dir, out float dist)", "Hit", "L, origin, dir, dist", true,
        with_extent, "dist = FAR_AWAY;\n  return false;"},
       {"float lightPdf(LightData L, vec3 p, vec3 dir, float dist)", "Pdf", "L, p, dir, dist", true, with_extent,
@@ -245,6 +251,10 @@ ShaderDefines contract_defines() {
       {"BASE_COLOR_UNIT", std::to_string(kBaseColorUnit)},
       {"METALLIC_ROUGHNESS_UNIT", std::to_string(kMetallicRoughnessUnit)},
       {"EMISSIVE_UNIT", std::to_string(kEmissiveUnit)},
+      {"ENVIRONMENT_RADIANCE_UNIT", std::to_string(kEnvironmentRadianceUnit)},
+      {"ENVIRONMENT_CDF_UNIT", std::to_string(kEnvironmentCdfUnit)},
+      {"ENVIRONMENT_SPECULAR_UNIT", std::to_string(kEnvironmentSpecularUnit)},
+      {"ENVIRONMENT_IRRADIANCE_UNIT", std::to_string(kEnvironmentIrradianceUnit)},
       {"TEXTURE_SLOT_NORMAL_MAP", std::to_string(kTextureSlotNormalMap)},
       {"TEXTURE_SLOT_BASE_COLOR", std::to_string(kTextureSlotBaseColor)},
       {"TEXTURE_SLOT_METALLIC_ROUGHNESS", std::to_string(kTextureSlotMetallicRoughness)},

@@ -4,6 +4,7 @@
 #include <span>
 
 #include "core/hash.hpp"
+#include "scene/lights/environment_map.hpp"
 #include "scene/lights/light_kind.hpp"
 
 namespace glintlab {
@@ -34,6 +35,10 @@ void hash_mesh(Hasher& h, const Mesh& mesh) {
 void hash_light(Hasher& h, const Light& light) {
   h.text(light.kind->id);
   h.value(light.kind->pack(light));
+  // An environment's map is seen in full (its resource uploads it), not through its record.
+  const bool map = !light.kind->compact && light.environment;
+  h.value(map);
+  if (map) h.span(std::span<const glm::vec3>(light.environment->radiance.pixels()));
   const std::optional<LightEmitter> emitter =
       light.kind->emitter ? light.kind->emitter(light) : std::optional<LightEmitter>{};
   h.value(emitter.has_value());

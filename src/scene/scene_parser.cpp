@@ -181,9 +181,9 @@ void parse_shape(TomlReader r, const std::map<std::string, int>& materials, cons
 }
 
 // The light's kind from `type` (the registered kinds), which reads its own keys.
-Light parse_light(TomlReader r) {
+Light parse_light(TomlReader r, const std::filesystem::path& base_dir) {
   const LightKind& kind = find_light_kind(r.require_string("type", light_kind_ids()));
-  Light l = kind.parse(r);
+  Light l = kind.parse(r, base_dir);
   if (!l.kind) l.kind = &kind;
   r.finish();
   return l;
@@ -223,7 +223,8 @@ Scene parse_scene(std::string_view text, const std::string& file, const std::fil
   const std::size_t gltf_lights = scene.lights.size();
   for (const toml::table* t : r.get_table_array("light"))
     scene.lights.push_back(
-        parse_light(TomlReader(*t, file, "[[light]] #" + std::to_string(scene.lights.size() - gltf_lights + 1))));
+        parse_light(TomlReader(*t, file, "[[light]] #" + std::to_string(scene.lights.size() - gltf_lights + 1)),
+                    base_dir));
   // The camera: the [camera] table (which may start from a glTF camera), else the first camera of
   // the glTF files, else the default.
   if (const toml::table* cam = r.get_table("camera"))
@@ -234,6 +235,9 @@ Scene parse_scene(std::string_view text, const std::string& file, const std::fil
   if (scene.shapes.empty()) throw InputError(file + ": the scene has no [[shape]]; at least one is required");
   if (scene.lights.empty())
     throw InputError(file + ": the scene has no light ([[light]] or a glTF file's); at least one is required");
+  // The environment's maps are bound once (its resource), not per light.
+  if (std::count_if(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return !l.kind->compact; }) > 1)
+    throw InputError(file + ": more than one light of type \"environment\"; allowed: at most one");
   if (scene.lights.size() > static_cast<std::size_t>(kMaxLights))
     throw InputError(file + ": " + std::to_string(scene.lights.size()) + " lights (" + std::to_string(gltf_lights) +
                      " from glTF files); allowed: at most " + std::to_string(kMaxLights));

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -294,4 +295,36 @@ TEST_F(Cli, ARunTooLargeForTheMemoryIsExit2BeforeRendering) {
   EXPECT_EQ(fits.code, 0) << fits.err;
   env = "GLINTLAB_MEMORY_MIB=lots";
   expect_bad_input("render --scene '" + scene.string() + "'", {"GLINTLAB_MEMORY_MIB=lots", "allowed"});
+}
+
+TEST_F(Cli, BadEnvironmentMapsExitWith2AndWriteNothing) {
+  // An environment light's map: missing, not lat-long (2:1), a NaN texel; each names the file.
+  const auto scene_with_map = [&](const std::string& name, const std::string& map) {
+    return write(name, TestScene().film(16, 16).material("m").sphere("m").light("environment", {{"file", map}}).toml());
+  };
+  Image square(16, 16, glm::vec3(1.0f)), with_nan(16, 8, glm::vec3(1.0f));
+  with_nan.at(3, 2).g = std::nanf("");
+  write_exr(scratch / "square.exr", {{"", &square}});
+  write_exr(scratch / "nan.exr", {{"", &with_nan}});
+  expect_bad_input("render --scene '" + scene_with_map("missing.toml", "missing.exr").string() + "'",
+                   {"missing.toml", "missing.exr"});
+  expect_bad_input("render --scene '" + scene_with_map("square.toml", "square.exr").string() + "'",
+                   {"square.exr", "16 x 16", "twice as wide"});
+  expect_bad_input("render --scene '" + scene_with_map("nan.toml", "nan.exr").string() + "'", {"nan.exr", "3, 2"});
+  // One light needs one source, and a scene at most one environment.
+  expect_bad_input("render --scene '" +
+                       write("two-sources.toml", TestScene().film(16, 16).material("m").sphere("m")
+                                                     .light("environment", {{"radiance", 1.0}, {"generator", "studio"}})
+                                                     .toml())
+                           .string() +
+                       "'",
+                   {"two-sources.toml", "exactly one of"});
+  expect_bad_input("render --scene '" +
+                       write("two-environments.toml", TestScene().film(16, 16).material("m").sphere("m")
+                                                          .light("environment", {{"radiance", 1.0}})
+                                                          .light("environment", {{"radiance", 2.0}})
+                                                          .toml())
+                           .string() +
+                       "'",
+                   {"two-environments.toml", "at most one"});
 }

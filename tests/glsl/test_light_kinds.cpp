@@ -44,6 +44,7 @@ const std::map<std::string, Example>& examples() {
        {"type = \"quad\"\nposition = [0, 0, 0]\ndirection = [0.0, 0.1, 1.0]\nsize = [1.0, 0.6]\nup = [0.3, 1, 0]\n",
         {-0.5f, 0.4f, 5.5f},
         0.02}},
+      {"environment", {"type = \"environment\"\ngenerator = \"studio\"\nrotation = 30\n", {0.2f, -0.1f, 0.3f}}},
   };
   return e;
 }
@@ -77,13 +78,14 @@ TEST(LightKinds, DeclaredPropertiesReachTheShaders) {
     const auto r = on_example(f, R"(
 vec4 evaluate(vec4 a, vec4 b) {
   LightData L = lights[0];
-  return vec4(lightHasExtent(L) ? 1.0 : 0.0, lightIsDistant(L) ? 1.0 : 0.0, float(lightForm(L)), float(lightType(L)));
+  return vec4(lightHasExtent(L) ? 1.0 : 0.0, lightIsDistant(L) ? 1.0 : 0.0, float(lightForm(L)),
+              float(lightType(L)) + (lightIsCompact(L) ? 0.5 : 0.0));
 })",
                               {glm::vec4(0)}, {glm::vec4(0)});
     EXPECT_EQ(r[0].x, kind.has_extent ? 1.0f : 0.0f) << kind.id;
     EXPECT_EQ(r[0].y, kind.distant ? 1.0f : 0.0f) << kind.id;
     EXPECT_EQ(r[0].z, static_cast<float>(static_cast<int>(kind.form))) << kind.id;
-    EXPECT_EQ(r[0].w, static_cast<float>(kind.code())) << kind.id;
+    EXPECT_EQ(r[0].w, static_cast<float>(kind.code()) + (kind.compact ? 0.5f : 0.0f)) << kind.id;
   }
 }
 
@@ -115,7 +117,7 @@ TEST(LightKinds, SamplesHaveLightPdfsDensityAndHitTheLight) {
   // distance for planar lights: 1% at these distances).
   const int n = 1 << 16;
   for (const auto& kind : all_light_kinds()) {
-    if (!kind.has_extent) continue;
+    if (!kind.has_extent || !kind.compact) continue;  // an environment: its own test below
     SCOPED_TRACE(kind.id);
     const Example& e = examples().at(kind.id);
     SceneFixture f(light_scene(e.toml));
@@ -168,7 +170,7 @@ TEST(LightKinds, PdfAndSolidAngleIntegrateOverTheDirectionsThatHit) {
   // projected solid angle (to second order for planar lights).
   const int n = 1 << 20;
   for (const auto& kind : all_light_kinds()) {
-    if (!kind.has_extent) continue;
+    if (!kind.has_extent || !kind.compact) continue;  // an environment: its own test below
     SCOPED_TRACE(kind.id);
     const Example& e = examples().at(kind.id);
     SceneFixture f(light_scene(e.toml));
@@ -221,7 +223,7 @@ TEST(LightKinds, RepresentativeDirectionLiesOnTheLight) {
   // direction on the light's edge (nudged towards the centre, it hits).
   const int n = 4096;
   for (const auto& kind : all_light_kinds()) {
-    if (!kind.has_extent) continue;
+    if (!kind.has_extent || !kind.compact) continue;  // an environment: its own test below
     SCOPED_TRACE(kind.id);
     const Example& e = examples().at(kind.id);
     SceneFixture f(light_scene(e.toml));
@@ -264,7 +266,7 @@ TEST(LightKinds, OutlineHasTheLightsSolidAngle) {
   // the cone of equal solid angle for spheres and suns, the light projected along the centre
   // direction for planar lights (a quad as its ellipse of equal area) - lightSolidAngle each time.
   for (const auto& kind : all_light_kinds()) {
-    if (!kind.has_extent) continue;
+    if (!kind.has_extent || !kind.compact) continue;  // an environment: its own test below
     SCOPED_TRACE(kind.id);
     const Example& e = examples().at(kind.id);
     SceneFixture f(light_scene(e.toml));
@@ -333,4 +335,54 @@ vec4 evaluate(vec4 a, vec4 b) {
       EXPECT_NEAR(r[0].y, 1.0, std::max(e.solid_angle_error, 2e-3)) << "the disk form's cone against the solid angle";
     }
   }
+}
+
+TEST(LightKinds, EnvironmentSamplesAndPdfCoverTheSphere) {
+  // A light around the whole sphere (not compact): every sample hits it at infinity with
+  // lightPdf's density, E[1 / pdf] over its samples is the sphere's 4 pi, and lightPdf over
+  // uniformly drawn directions integrates to 1 (the studio map has no black texel).
+  const int n = 1 << 18;
+  const Example& e = examples().at("environment");
+  SceneFixture f(light_scene(e.toml));
+  f.gpu->resources().bind(f.gpu->scene_resource_ids(), f.gpu->resource_context());
+  std::mt19937 rng(17);
+  std::vector<glm::vec4> a(n), b(n, glm::vec4(e.p, 0.0f));
+  for (auto& v : a) v = glm::vec4(unit(rng), unit(rng), unit(rng), unit(rng));
+  const auto r = on_example(f, R"(
+vec4 evaluate(vec4 a, vec4 b) {
+  LightData L = lights[0];
+  vec3 dir;
+  float dist, pdf;
+  if (!sampleLightDirection(L, b.xyz, a.xy, dir, dist, pdf)) return vec4(-1.0);
+  float hitDist;
+  bool hit = lightHit(L, b.xyz, dir, hitDist) && hitDist >= FAR_AWAY;
+  // A uniform direction on the sphere from a.zw, and the density there.
+  float z = 1.0 - 2.0 * a.z, s = sqrt(max(0.0, 1.0 - z * z));
+  vec3 u = vec3(s * cos(TWO_PI * a.w), z, s * sin(TWO_PI * a.w));
+  return vec4(1.0 / pdf, lightPdf(L, b.xyz, dir, dist) / pdf, hit ? 1.0 : 0.0, lightPdf(L, b.xyz, u, FAR_AWAY));
+})",
+                            a, b);
+  double inverse = 0, inverse2 = 0, uniform = 0, uniform2 = 0, worst_pdf = 0;
+  int rejected = 0, missed = 0;
+  for (const auto& v : r) {
+    if (v.x < 0) {
+      ++rejected;
+      continue;
+    }
+    inverse += v.x;
+    inverse2 += double(v.x) * v.x;
+    const double w = 4 * kPi * v.w;
+    uniform += w;
+    uniform2 += w * w;
+    missed += v.z == 0.0f;
+    worst_pdf = std::max(worst_pdf, std::abs(double(v.y) - 1));
+  }
+  EXPECT_EQ(rejected, 0);
+  EXPECT_EQ(missed, 0) << "every direction reaches an environment";
+  EXPECT_LT(worst_pdf, 1e-3) << "lightPdf against the sample's pdf";
+  const double mi = inverse / n, si = std::sqrt((inverse2 / n - mi * mi) / n);
+  const double mu = uniform / n, su = std::sqrt((uniform2 / n - mu * mu) / n);
+  EXPECT_NEAR(mi, 4 * kPi, 4 * si) << "E[1 / pdf]: the sphere's solid angle";
+  EXPECT_NEAR(mu, 1.0, 4 * su) << "lightPdf integrates to 1";
+  std::printf("environment: E[1/pdf] %.5f +- %.2g (4 pi = %.5f); pdf integral %.4f +- %.4f\n", mi, si, 4 * kPi, mu, su);
 }

@@ -13,6 +13,9 @@
 #include <random>
 
 #include "core/image.hpp"
+#include "core/image_io.hpp"
+#include "scene/lights/environment_map.hpp"
+#include "scratch_directory.hpp"
 #include "gl_fixture.hpp"
 #include "scene/scene_loader.hpp"
 #include "shading/registry.hpp"
@@ -29,7 +32,7 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr int kSamples = 1 << 21;
 // Chi-square tests in this file; each runs at significance 1 - (1 - 0.01)^(1 / kChiSquareTests)
 // (Sidak), so that a correct suite fails with probability 1%.
-constexpr int kChiSquareTests = 39;
+constexpr int kChiSquareTests = 40;
 
 float unit(std::mt19937& rng) { return static_cast<float>(rng() >> 8) * (1.0f / 16777216.0f); }
 
@@ -446,6 +449,53 @@ TEST(SamplingChiSquare, SphereLightCones) {
                   s.c.y, s.c.z, s.r);
     check_cone({light, {0, 0, 0}, s.c, sin2 / (1 + std::sqrt(1 - sin2))}, seed++);
   }
+}
+
+// The environment light's sampler (shaders/lights/environment.glsl): texels in proportion to
+// luminance x sin(theta), uniform in (u, v) within each (2 x 2 sub-bins per texel), on a map with
+// a gradient and a hot spot, turned by 30 degrees; its pdf against the same density at each sample.
+TEST(SamplingChiSquare, EnvironmentByLuminanceAndSinTheta) {
+  ScratchDirectory scratch;
+  constexpr int kW = 32, kH = 16;
+  Image map(kW, kH);
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) map.at(x, y) = glm::vec3(0.2f + 0.05f * x, 0.1f + 0.1f * y, 0.3f);
+  map.at(20, 5) = glm::vec3(60.0f, 50.0f, 40.0f);  // the hot spot
+  map.at(3, 12) = glm::vec3(0.0f);                 // a black texel: never sampled
+  const auto file = scratch.path() / "map.exr";
+  write_exr(file, {{"", &map}});
+  SceneFixture f(light_scene("type = \"environment\"\nfile = \"" + file.string() + "\"\nrotation = 30\n"));
+  f.gpu->resources().bind(f.gpu->scene_resource_ids(), f.gpu->resource_context());
+  const auto s = light_samples(f, {0, 0, 0}, 300);
+  // Texel probabilities from the map itself: f = luminance sin(theta at the row's centre).
+  std::vector<double> weight(kW * kH);
+  double total = 0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x)
+      total += weight[y * kW + x] = luminance(map.at(x, y)) * std::sin(kPi * (y + 0.5) / kH);
+  const double turn = 30 * kPi / 180;
+  std::vector<double> observed(4 * kW * kH, 0.0), expected(observed.size(), 0.0);
+  double worst_pdf = 0, rejected = 0;
+  for (const auto& v : s) {
+    if (v.w < 0) {
+      rejected += 1;
+      continue;
+    }
+    const glm::dvec3 d = dir3(v);
+    const glm::dvec3 m(std::cos(turn) * d.x - std::sin(turn) * d.z, d.y, std::sin(turn) * d.x + std::cos(turn) * d.z);
+    const glm::dvec2 uv = environment_uv(m);
+    const int x = std::min(kW - 1, int(uv.x * kW)), y = std::min(kH - 1, int(uv.y * kH));
+    const int sx = std::min(1, int((uv.x * kW - x) * 2)), sy = std::min(1, int((uv.y * kH - y) * 2));
+    observed[4 * (y * kW + x) + 2 * sy + sx] += 1;
+    const double pdf = weight[y * kW + x] / total * kW * kH / (2 * kPi * kPi * std::sin(kPi * uv.y));
+    worst_pdf = std::max(worst_pdf, std::abs(v.w / pdf - 1));
+  }
+  for (std::size_t i = 0; i < expected.size(); ++i) expected[i] = kSamples * weight[i / 4] / total / 4;
+  EXPECT_EQ(rejected, 0.0);
+  EXPECT_EQ(observed[4 * (12 * kW + 3)], 0.0) << "the black texel";
+  EXPECT_LT(worst_pdf, 2e-3) << "lightPdf against luminance sin(theta) / (I 2 pi^2 sin(theta))";
+  const ChiSquare chi = chi_square(observed, expected);
+  EXPECT_TRUE(chi.passes()) << chi;
 }
 
 namespace {

@@ -39,7 +39,9 @@ TEST(LightKinds, RegistryHoldsEachKindOnceWithItsCode) {
     // The id names the GLSL file and prefixes its functions: a GLSL identifier in lower case.
     for (char c : k.id) EXPECT_TRUE(c >= 'a' && c <= 'z') << k.id;
     EXPECT_TRUE(k.parse && k.pack) << k.id;
-    EXPECT_EQ(k.has_extent, k.form != LightForm::None) << k.id << ": delta lights have no form, others one";
+    EXPECT_EQ(k.has_extent && k.compact, k.form != LightForm::None)
+        << k.id << ": delta lights and lights that are not compact have no form, the others one";
+    EXPECT_TRUE(k.compact || (k.has_extent && k.distant)) << k.id << ": a light that is not compact surrounds the scene";
   }
   EXPECT_EQ(&find_light_kind("sun"), &all_light_kinds()[static_cast<std::size_t>(find_light_kind("sun").code())]);
 }

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/lights/environment_map.hpp"
 #include "scene/lights/light_kind.hpp"
 #include "test_scenes.hpp"
 
@@ -47,7 +48,7 @@ static_assert(field_count<MaterialTexture>() == 5);
 static_assert(field_count<NormalMap>() == 4);
 static_assert(field_count<Mesh>() == 5);
 static_assert(field_count<Shape>() == 4);
-static_assert(field_count<Light>() == 11);
+static_assert(field_count<Light>() == 13);
 static_assert(field_count<Scene>() == 10);
 
 struct FieldChange {
@@ -74,6 +75,7 @@ Scene base_scene() {
                 .disk_light({1, 2, 0}, {0, -1, 0}, 0.5, 1)
                 .light("sun", {{"direction", {0, -1, 0}}, {"irradiance", 1}, {"angular_radius", 1}})
                 .light("spot", {{"position", {0, 2, 1}}, {"direction", {0, -1, 0}}, {"inner_angle", 10}})
+                .light("environment", {{"radiance", 0.5}, {"rotation", 10}})
                 .scene();
   EXPECT_TRUE(s.materials[1].is("glinty"));
   EXPECT_NE(s.materials[1].normal_map, nullptr);
@@ -187,6 +189,9 @@ const std::vector<FieldChange> kHashed = {
     {"light.up (a disk's)", [](Scene& s) { s.lights[1].up = {1, 0, 0}; }},
     {"light.inner_angle_degrees", [](Scene& s) { s.lights[3].inner_angle_degrees += 1; }},
     {"light.outer_angle_degrees", [](Scene& s) { s.lights[3].outer_angle_degrees += 1; }},
+    {"light.rotation_degrees", [](Scene& s) { s.lights[4].rotation_degrees += 5; }},
+    {"light.environment",
+     [](Scene& s) { s.lights[4].environment = std::make_shared<EnvironmentMap>(uniform_environment_map(glm::vec3(0.7f))); }},
     {"a material more", [](Scene& s) { s.materials.push_back(s.materials[0]); }},
     {"a shape more", [](Scene& s) { s.shapes.push_back(s.shapes[0]); }},
     {"a light more", [](Scene& s) { s.lights.push_back(s.lights[0]); }},
@@ -281,20 +286,23 @@ TEST(SceneHash, EveryMaterialKindParameterChangesTheKey) {
 
 namespace {
 
-/// What images see of a light: its record and its emitter (none when not drawn).
+/// What images see of a light: its record, its emitter (none when not drawn) and, for a light
+/// that is not compact, its map.
 struct Rendered {
   LightGpu record;
   std::optional<LightEmitter> emitter;
+  std::vector<glm::vec3> map;
 };
 
 Rendered rendered(const Light& l) {
-  return {l.kind->pack(l), l.kind->emitter ? l.kind->emitter(l) : std::optional<LightEmitter>{}};
+  return {l.kind->pack(l), l.kind->emitter ? l.kind->emitter(l) : std::optional<LightEmitter>{},
+          !l.kind->compact && l.environment ? l.environment->radiance.pixels() : std::vector<glm::vec3>{}};
 }
 
 bool same_bytes(const auto& a, const auto& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 bool same(const Rendered& a, const Rendered& b) {
-  if (!same_bytes(a.record, b.record) || a.emitter.has_value() != b.emitter.has_value()) return false;
+  if (!same_bytes(a.record, b.record) || a.emitter.has_value() != b.emitter.has_value() || a.map != b.map) return false;
   if (!a.emitter) return true;
   const LightEmitter &x = *a.emitter, &y = *b.emitter;
   return same_bytes(x.transform, y.transform) && same_bytes(x.radiance, y.radiance) && x.two_sided == y.two_sided &&
@@ -317,8 +325,11 @@ TEST(SceneHash, ALightChangesTheKeyExactlyWhenWhatItRendersChanges) {
       {"inner_angle_degrees", [](Light& l) { l.inner_angle_degrees += 5; }},
       {"outer_angle_degrees", [](Light& l) { l.outer_angle_degrees += 5; }},
       {"visible", [](Light& l) { l.visible = !l.visible; }},
+      {"rotation_degrees", [](Light& l) { l.rotation_degrees += 10; }},
+      {"environment",
+       [](Light& l) { l.environment = std::make_shared<EnvironmentMap>(uniform_environment_map(glm::vec3(0.3f))); }},
   };
-  static_assert(field_count<Light>() == 11, "kind + the fields above");
+  static_assert(field_count<Light>() == 13, "kind + the fields above");
   int changed = 0, kept = 0;
   for (const LightKind& kind : all_light_kinds()) {
     Scene base = base_scene();
@@ -327,6 +338,7 @@ TEST(SceneHash, ALightChangesTheKeyExactlyWhenWhatItRendersChanges) {
     light.radius = 0.5f;
     light.angular_radius_degrees = 1.0f;
     light.inner_angle_degrees = 10.0f;
+    light.environment = std::make_shared<EnvironmentMap>(uniform_environment_map(glm::vec3(1.0f)));
     base.lights = {light};
     const std::uint64_t key = base.content_hash();
     for (const auto& [field, change] : changes) {

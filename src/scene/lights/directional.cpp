@@ -13,7 +13,7 @@ LightKind directional_light_kind() {
       .distant = true,
       .form = LightForm::None,
       .parse =
-          [](TomlReader& r) {
+          [](TomlReader& r, const std::filesystem::path&) {
             Light l;
             l.direction = light_keys::require_direction(r, "direction");
             l.colour = r.get_colour("irradiance", glm::vec3(1.0f), 0.0, light_keys::kMaxPower);

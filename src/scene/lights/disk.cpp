@@ -13,7 +13,7 @@ LightKind disk_light_kind() {
       .distant = false,
       .form = LightForm::Disk,
       .parse =
-          [](TomlReader& r) {
+          [](TomlReader& r, const std::filesystem::path&) {
             Light l = light_keys::parse_area_light(r);
             l.radius = static_cast<float>(r.require_number("radius", 1e-6, light_keys::kMaxLength));
             l.direction = light_keys::require_direction(r, "direction");

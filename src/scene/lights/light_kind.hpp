@@ -5,6 +5,7 @@
 // the kinds' codes on the GPU and the order in which the light loop shades them. The GLSL
 // dispatch (lightHit, lightPdf, ...) and the light loop's call list are generated from the
 // registry (src/render/shader_contract.cpp); docs/extending.md says how to add a kind.
+#include <filesystem>
 #include <glm/mat4x4.hpp>
 #include <optional>
 #include <string>
@@ -36,9 +37,15 @@ struct LightKind {
   bool has_extent = false;  ///< integrated over a solid angle; false: a delta light (incidence only)
   bool distant = false;     ///< at infinity: the same directions from every point
   LightForm form = LightForm::None;
-  /// Reads the kind's keys (after `type`) into a Light whose kind is set; validates them. May
-  /// return another kind (a directional light with an angular radius is a sun).
-  Light (*parse)(TomlReader& reader) = nullptr;
+  /// A compact emitter: one radiance over a bounded extent with a centre, an outline and a
+  /// representative point (shaders/lights/lights.glsl). False for a light around the whole
+  /// sphere whose radiance varies with direction (an environment): methods then shade it through
+  /// lightRadianceFrom and their own resources, never through the compact interface.
+  bool compact = true;
+  /// Reads the kind's keys (after `type`) into a Light whose kind is set; validates them. Files a
+  /// kind reads are relative to `base_dir` (the scene file's folder). May return another kind (a
+  /// directional light with an angular radius is a sun).
+  Light (*parse)(TomlReader& reader, const std::filesystem::path& base_dir) = nullptr;
   /// The GPU record; colour_type.w (the code) is set by the caller. It and the emitter are all
   /// that images see of a light, so they are what Scene::content_hash hashes (with the kind's id):
   /// a kind has no hash of its own to keep in step with its fields.

@@ -14,11 +14,12 @@ LightKind sphere_light_kind();
 LightKind quad_light_kind();
 LightKind sun_light_kind();
 LightKind spot_light_kind();
+LightKind environment_light_kind();
 
 const std::vector<LightKind>& all_light_kinds() {
   static const std::vector<LightKind> kinds = {point_light_kind(),  directional_light_kind(), disk_light_kind(),
                                                sphere_light_kind(), quad_light_kind(),        sun_light_kind(),
-                                               spot_light_kind()};
+                                               spot_light_kind(),  environment_light_kind()};
   return kinds;
 }
 

@@ -11,7 +11,7 @@ LightKind point_light_kind() {
       .distant = false,
       .form = LightForm::None,
       .parse =
-          [](TomlReader& r) {
+          [](TomlReader& r, const std::filesystem::path&) {
             Light l;
             l.position = r.require_vec3("position");
             l.colour = r.get_colour("intensity", glm::vec3(1.0f), 0.0, light_keys::kMaxPower);

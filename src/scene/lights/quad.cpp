@@ -13,7 +13,7 @@ LightKind quad_light_kind() {
       .distant = false,
       .form = LightForm::Polygon,
       .parse =
-          [](TomlReader& r) {
+          [](TomlReader& r, const std::filesystem::path&) {
             Light l = light_keys::parse_area_light(r);
             l.size = r.get_vec2("size", glm::vec2(1.0f), 1e-6, light_keys::kMaxLength);
             l.up = r.get_vec3("up", glm::vec3(0, 0, 1));

@@ -27,7 +27,7 @@ LightKind spot_light_kind() {
       .distant = false,
       .form = LightForm::None,
       .parse =
-          [](TomlReader& r) {
+          [](TomlReader& r, const std::filesystem::path&) {
             Light l;
             l.position = r.require_vec3("position");
             l.direction = light_keys::require_direction(r, "direction");

@@ -11,6 +11,7 @@ namespace glintlab {
 Table glint_dictionary_table();
 Table ltc_ggx_table();
 Table ltc_ndf_table();
+Table dfg_table();
 
 const std::vector<Table>& all_tables() {
   static const std::vector<Table> tables = [] {
@@ -18,6 +19,7 @@ const std::vector<Table>& all_tables() {
         glint_dictionary_table(),
         ltc_ggx_table(),
         ltc_ndf_table(),
+        dfg_table(),  // last: the tables above keep their units
     };
     for (std::size_t i = 0; i < list.size(); ++i) list[i].unit = kFirstTableUnit + static_cast<int>(i);
     for (std::size_t i = 0; i < list.size(); ++i)

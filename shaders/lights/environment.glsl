@@ -95,9 +95,9 @@ bool environmentLightSample(LightData L, vec3 p, vec2 u, out vec3 dir, out float
   int x = environmentCdfInterval(y, size.x, u.x);
   float x0 = environmentCdf(x, y), x1 = environmentCdf(x + 1, y);
   float uu = (float(x) + clamp((u.x - x0) / max(x1 - x0, 1e-30), 0.0, 1.0)) / float(size.x);
-  float sinT = sin(PI * v);
-  if (sinT <= 0.0) return false;
   dir = environmentDirection(L, vec2(uu, v));
-  pdf = (y1 - y0) * float(size.y) * (x1 - x0) * float(size.x) / (2.0 * PI * PI * sinT);
+  // The density lightPdf gives this direction, not the sampled piece's: the two differ only where
+  // rounding puts the direction in a neighbouring texel, and MIS needs the one lightPdf returns.
+  pdf = environmentLightPdf(L, p, dir, dist);
   return pdf > 0.0;
 }

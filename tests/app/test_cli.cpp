@@ -302,10 +302,10 @@ TEST_F(Cli, BadEnvironmentMapsExitWith2AndWriteNothing) {
   const auto scene_with_map = [&](const std::string& name, const std::string& map) {
     return write(name, TestScene().film(16, 16).material("m").sphere("m").light("environment", {{"file", map}}).toml());
   };
-  Image square(16, 16, glm::vec3(1.0f)), with_nan(16, 8, glm::vec3(1.0f));
+  glintlab::Image square(16, 16, glm::vec3(1.0f)), with_nan(16, 8, glm::vec3(1.0f));
   with_nan.at(3, 2).g = std::nanf("");
-  write_exr(scratch / "square.exr", {{"", &square}});
-  write_exr(scratch / "nan.exr", {{"", &with_nan}});
+  glintlab::write_exr(scratch / "square.exr", {{"", &square}});
+  glintlab::write_exr(scratch / "nan.exr", {{"", &with_nan}});
   expect_bad_input("render --scene '" + scene_with_map("missing.toml", "missing.exr").string() + "'",
                    {"missing.toml", "missing.exr"});
   expect_bad_input("render --scene '" + scene_with_map("square.toml", "square.exr").string() + "'",

@@ -13,15 +13,12 @@ set(glintlab_test_costs
   "^Shaders[./]EveryMethodAndPassCompiles" 35
   "^Chermain\\.GeometricGlintAntiAliasing" 40
   "^Images/EveryMethodOnBuiltinScene\\." 5
-  "^SpotLight\\.EveryMethodShades" 25
   "^SpecularAA\\.FilteringBeatsConventionalOnThinTubes$" 20
   "^Podee\\.BeatsConventionalOnTheNearMirrorScenes$" 20
   "^Reference\\.SubPixelHighlightOfAMirrorSphere" 15
   "^Cli\\.SameCommandWritesIdenticalFiles$" 15
   "^Report\\.ChromiumLoadsEveryImageAndVideoAndTheSliderMoves$" 12
   "^SpecularAA\\." 12
-  "^QuadLight\\.EveryMethodRendersItFinite$" 12
-  "^SpotLight\\.HemisphereConeIsThePointLight$" 12
   "^Shaders\\.EveryChoiceOfACompileTimeParameterCompiles$" 10)
 
 # Tests that compile the same forward programs (the same methods, material variants and light
@@ -30,12 +27,15 @@ set(glintlab_test_costs
 # tests that start together would both compile them, a minute of llvmpipe each).
 set(glintlab_test_locks
   # a directional, a point and a spot light; textured and plain materials (two_quads in
-  # tests/render/test_gltf_materials.cpp has the showcase's lights for this).
-  "^(Images/EveryMethodOnBuiltinScene\\.IsFinite/gltf_showcase|GltfMaterials\\.TexturedMaterialEqualsTheMaterialOfItsTexels.*)( |$)" programs_showcase
+  # tests/render/test_gltf_materials.cpp has the showcase's lights for this, and plane_under in
+  # tests/render/test_spot_light.cpp dark lights of the other two kinds: every method in
+  # EveryMethodShades on the plain material GltfMaterials' textured test draws).
+  "^(Images/EveryMethodOnBuiltinScene\\.IsFinite/gltf_showcase|GltfMaterials\\.(TexturedMaterialEqualsTheMaterialOfItsTexels|EmissionAddsToTheTotal).*|SpotLight\\..*)( |$)" programs_showcase
   # two point lights, the plain backdrop.
   "^Images/EveryMethodOnBuiltinScene\\.IsFinite/glint_(sphere|tubes)( |$)" programs_two_points
-  # one spot light (and a point light), a plain material: every method in EveryMethodShades.
-  "^SpotLight\\." programs_spot)
+  # a quad, a disk and a sphere light, a plain binomial-glints material (QuadLight's dark disk
+  # and sphere light in tests/glsl/test_sampling.cpp).
+  "^(Images/EveryMethodOnBuiltinScene\\.IsFinite/glint_area_lights|QuadLight\\.EveryMethodRendersItFinite)( |$)" programs_area_lights)
 
 get_cmake_property(glintlab_variables VARIABLES)
 foreach(list IN LISTS glintlab_variables)

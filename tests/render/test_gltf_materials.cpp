@@ -155,7 +155,7 @@ TEST(GltfMaterials, EmissionAddsToTheTotalAndNotToTheSpecularImage) {
   glowing.emissive_strength = 4.0f;
   glowing.emissive_texture.image = 0;  // white: the factor alone, through the textured variant
   doc.materials = {glowing, plain};
-  SceneFixture f(two_quads(dir, doc));
+  SceneFixture f(two_quads(dir, doc, true));  // the textured test's programs (test_costs.cmake)
   for (const std::string id : {"conventional", "lean", "podee"}) {
     const Frame img = f.method(id);
     EXPECT_NEAR(half_mean(img.total, false) - half_mean(img.total, true), 1.0, 1e-4) << id << ": 0.25 x 4";

@@ -13,6 +13,8 @@ set(glintlab_test_costs
   "^Shaders[./]EveryMethodAndPassCompiles" 35
   "^Chermain\\.GeometricGlintAntiAliasing" 40
   "^Images/EveryMethodOnBuiltinScene\\." 5
+  # Every method under an environment (the furnace and the hot spot share its programs).
+  "^EnvironmentLight\\.MethodsInTheFurnace" 40
   "^SpecularAA\\.FilteringBeatsConventionalOnThinTubes$" 20
   "^Podee\\.BeatsConventionalOnTheNearMirrorScenes$" 20
   "^Reference\\.SubPixelHighlightOfAMirrorSphere" 15

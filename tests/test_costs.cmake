@@ -10,7 +10,6 @@ set(glintlab_test_costs
   "^Images/EveryMethodOnBuiltinScene\\.IsFinite/glint_sphere( |$)" 45
   # The default scene: conventional and the reference in its five material variants.
   "^Images/EveryMethodOnBuiltinScene\\.IsFinite/every_family( |$)" 45
-  "^Shaders[./]EveryMethodAndPassCompiles" 35
   "^Chermain\\.GeometricGlintAntiAliasing" 40
   "^Images/EveryMethodOnBuiltinScene\\." 5
   # Every method under an environment (the furnace and the hot spot share its programs).
@@ -21,7 +20,7 @@ set(glintlab_test_costs
   "^Cli\\.SameCommandWritesIdenticalFiles$" 15
   "^Report\\.ChromiumLoadsEveryImageAndVideoAndTheSliderMoves$" 12
   "^SpecularAA\\." 12
-  "^Shaders\\.EveryChoiceOfACompileTimeParameterCompiles$" 10)
+)
 
 # Tests that compile the same forward programs (the same methods, material variants and light
 # layout): each group shares a RESOURCE_LOCK, so that its tests run one after another and all but

@@ -23,6 +23,7 @@ demo_packages=(
 )
 packages=("${demo_packages[@]}"
   libgtest-dev libgmock-dev libbenchmark-dev
+  glslang-tools
   clang libclang-rt-dev
   ffmpeg
   xvfb xauth chromium

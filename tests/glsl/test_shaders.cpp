@@ -1,5 +1,6 @@
 // GL device tests: the context, every shader module compiles, and the GLSL BRDF agrees with
 // independent closed forms and integrals computed here in C++.
+#include <gtest/gtest-spi.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,6 +10,7 @@
 #include "builtin_scene_programs.hpp"
 #include "core/error.hpp"
 #include "gl_fixture.hpp"
+#include "glsl/glslang_validator.hpp"
 #include "render/renderer.hpp"
 
 using namespace glintlab;
@@ -56,19 +58,23 @@ std::string kind_names(const LightRanges& ranges) {
   return names;
 }
 
-void expect_compiles(const std::string& module, MaterialVariant v, const LightRanges& lights) {
-  EXPECT_NO_THROW(shaders().graphics("passes/forward.vert", "passes/forward.frag", forward_variant(module, lights, v)))
-      << module << ", " << all_material_kinds()[static_cast<std::size_t>(v.kind)].id << " material"
-      << (v.normal_map ? " with a normal map" : "") << (v.textures ? ", textured" : "") << "; lights "
-      << kind_names(lights);
+std::string variant_label(const std::string& module, MaterialVariant v, const LightRanges& lights) {
+  return module + ", " + all_material_kinds()[static_cast<std::size_t>(v.kind)].id + " material" +
+         (v.normal_map ? " with a normal map" : "") + (v.textures ? ", textured" : "") + "; lights " + kind_names(lights);
 }
 
-/// Compiles every module in variant `v` (and its normal-mapped twin) with two lights of each kind
-/// that Images/EveryMethodOnBuiltinScene does not compile it with (all of them for a variant no
-/// built-in scene has): together the two compile each module with every light kind in every
-/// variant. Returns the number of programs compiled here.
+/// The forward program of `module` in variant `v` with `lights`: its fragment stage valid GLSL
+/// (glslang; the vertex stage does not depend on the variant: checked once, below).
+void expect_compiles(GlslangValidator& glslang, const std::string& module, MaterialVariant v, const LightRanges& lights) {
+  glslang.expect_valid(shaders(), "passes/forward.frag", forward_variant(module, lights, v), variant_label(module, v, lights));
+}
+
+/// Checks every module in variant `v` (and its normal-mapped twin) with two lights of each kind
+/// that Images/EveryMethodOnBuiltinScene does not draw it with (all of them for a variant no
+/// built-in scene has): together the two cover each module with every light kind in every
+/// variant, the drawn ones compiled by the driver, these by glslang. Returns the number checked.
 int expect_every_module_compiles_in(MaterialVariant v) {
-  int compiled = 0;
+  GlslangValidator glslang;
   for (const auto& module : every_shading_module())
     for (bool normal_map : {false, true}) {
       if (all_material_kinds()[static_cast<std::size_t>(v.kind)].requires_normal_map && !normal_map) continue;
@@ -77,25 +83,30 @@ int expect_every_module_compiles_in(MaterialVariant v) {
       if (module.rendered_on_builtin_scenes)
         if (const auto& kinds = builtin_scene_light_kinds(); kinds.contains(v)) on_builtin_scenes = kinds.at(v);
       if (on_builtin_scenes.size() == all_light_kinds().size()) continue;
-      expect_compiles(module.path, v, two_lights_of_every_kind_but(on_builtin_scenes));
-      ++compiled;
+      expect_compiles(glslang, module.path, v, two_lights_of_every_kind_but(on_builtin_scenes));
     }
-  return compiled;
+  return glslang.count();
 }
 
 }  // namespace
 
-// Every module in every material variant with every light kind, one material kind per test (all
-// in one test would outlast ctest's timeout on llvmpipe under load), less what the built-in scene
-// tests compile (builtin_scene_programs.hpp). Each test compiles at least the unshaded pass.
+// Every module in every material variant with every light kind, one material kind per test, less
+// what the built-in scene tests draw (builtin_scene_programs.hpp), validated by glslang
+// (glsl/glslang_validator.hpp). Each test checks at least the unshaded pass.
 class EveryMethodAndPassCompiles : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(EveryMethodAndPassCompiles, ForMaterialKind) {
+  ASSERT_TRUE(GlslangValidator::available()) << "glslangValidator (Debian's glslang-tools; tools/install-deps.sh)";
   const MaterialKind& kind = find_material_kind(GetParam());
   EXPECT_GT(expect_every_module_compiles_in({kind.code(), false, false}), 0);
   if (&kind != &default_material_kind()) return;
+  // The passes that take no module, by the driver (they are small).
   EXPECT_NO_THROW(shaders().graphics("passes/forward.vert", "passes/emitter.frag"));
+  EXPECT_NO_THROW(shaders().graphics("passes/background.vert", "passes/background.frag"));
   EXPECT_NO_THROW(shaders().compute("passes/downsample.comp"));
+  GlslangValidator glslang;
+  glslang.expect_valid(shaders(), "passes/forward.vert", forward_variant(kReferenceModule, two_lights_of_every_kind_but({}), {}),
+                       "the forward pass's vertex stage");
 }
 
 INSTANTIATE_TEST_SUITE_P(Shaders, EveryMethodAndPassCompiles, ::testing::ValuesIn(material_kind_ids()),
@@ -115,16 +126,25 @@ TEST(Shaders, EveryMethodAndPassCompilesForTextures) {
 // others at their defaults, in the plain material variant: the choices select code that does not
 // depend on the material's variant, which EveryMethodAndPassCompiles covers at the defaults.
 TEST(Shaders, EveryChoiceOfACompileTimeParameterCompiles) {
-  int compiled = 0;
+  ASSERT_TRUE(GlslangValidator::available()) << "glslangValidator (Debian's glslang-tools; tools/install-deps.sh)";
+  GlslangValidator glslang;
   for (const auto& m : all_methods())
     for (const auto& p : m.params)
       for (std::size_t c = 0; p.compile_time && c < p.choices.size(); ++c) {
         if (c == static_cast<std::size_t>(p.default_value)) continue;
-        expect_compiles(method_program_module(shaders(), m, {{p.name, static_cast<float>(c)}}), {},
+        expect_compiles(glslang, method_program_module(shaders(), m, {{p.name, static_cast<float>(c)}}), {},
                         two_lights_of_every_kind_but({}));
-        ++compiled;
       }
-  EXPECT_GT(compiled, 0);
+  EXPECT_GT(glslang.count(), 0);
+}
+
+// The validator can fail: a program that calls what no file defines.
+TEST(Shaders, GlslangRejectsAnUndefinedFunction) {
+  ASSERT_TRUE(GlslangValidator::available());
+  shaders().add_source("test/broken-for-glslang.comp", "layout(local_size_x = 1) in;\nvoid main() { undefined_call(); }\n");
+  GlslangValidator glslang;
+  EXPECT_NONFATAL_FAILURE(glslang.expect_valid(shaders(), "test/broken-for-glslang.comp", {}, "broken"),
+                          "undefined_call");
 }
 
 TEST(Shaders, CompileErrorsNameTheFile) {

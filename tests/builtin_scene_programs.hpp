@@ -32,35 +32,40 @@ inline const std::map<std::string, ProgramPairs>& builtin_scene_program_pairs() 
   return pairs;
 }
 
+/// A material kind, textured or not: what the scenes every method renders on must hold between
+/// them. A kind's normal-mapped twin need not be drawn by every method: the lobe methods draw it in
+/// their own tests, and every module is validated in it (Shaders.EveryMethodAndPassCompiles*).
+inline std::pair<int, bool> kind_and_textures(const MaterialVariant& v) { return {v.kind, v.textures}; }
+
 /// The built-in scenes Images/EveryMethodOnBuiltinScene renders every method on: few whose
-/// material variants cover every built-in scene's (greedy: each step the scene adding the most
-/// variants, then with the most (variant, light kind) pairs, the first in builtin_scenes() order
-/// on ties). Drawing is what makes llvmpipe build a program's machine code, several seconds a
-/// program, most of the suite's time: so each method renders finite in every material variant,
-/// the other scenes render `conventional` and the reference, and Shaders.EveryMethodAndPassCompiles*
-/// compile the light kinds these scenes leave out. The default scene is never chosen: it holds
-/// every material kind, so every method on it is one test of about 80 programs, longer than
-/// ctest's timeout on llvmpipe under load (`make demo` draws them all; the others hold its
-/// variants between them).
+/// materials hold every material kind (textured or not) of the built-in scenes (greedy: each step
+/// the scene adding the most, then with the most (variant, light kind) pairs, the first in
+/// builtin_scenes() order on ties). Drawing is what makes llvmpipe build a program's machine code,
+/// seconds a program, most of the suite's time: so each method renders finite on every material
+/// kind, the other scenes render `conventional` and the reference, and
+/// Shaders.EveryMethodAndPassCompiles* validate (glslang) the variants and light kinds these scenes
+/// leave out. The default scene is never chosen: it holds every material kind, so every method on
+/// it is one test of about 80 programs, longer than ctest's timeout on llvmpipe under load (`make
+/// demo` draws them all).
 inline const std::set<std::string>& every_method_scenes() {
   static const std::set<std::string> chosen = [] {
-    std::set<MaterialVariant> missing;
+    std::set<std::pair<int, bool>> missing;
     for (const auto& [scene, pairs] : builtin_scene_program_pairs())
-      for (const auto& p : pairs) missing.insert(p.first);
+      for (const auto& p : pairs) missing.insert(kind_and_textures(p.first));
     std::set<std::string> out;
     while (!missing.empty()) {
       std::string best;
-      std::pair<std::size_t, std::size_t> best_gain{0, 0};  // variants added, then pairs
+      std::pair<std::size_t, std::size_t> best_gain{0, 0};  // kinds added, then pairs
       for (const auto& b : builtin_scenes()) {
         if ("builtin:" + b.name == kDefaultScene) continue;
-        std::set<MaterialVariant> variants;
+        std::set<std::pair<int, bool>> added;
         for (const auto& p : builtin_scene_program_pairs().at(b.name))
-          if (missing.contains(p.first)) variants.insert(p.first);
-        const std::pair<std::size_t, std::size_t> gain{variants.size(), builtin_scene_program_pairs().at(b.name).size()};
+          if (missing.contains(kind_and_textures(p.first))) added.insert(kind_and_textures(p.first));
+        const std::pair<std::size_t, std::size_t> gain{added.size(), builtin_scene_program_pairs().at(b.name).size()};
         if (gain.first > 0 && gain > best_gain) best = b.name, best_gain = gain;
       }
       out.insert(best);
-      for (const auto& p : builtin_scene_program_pairs().at(best)) missing.erase(p.first);
+      for (const auto& p : builtin_scene_program_pairs().at(best)) missing.erase(kind_and_textures(p.first));
     }
     return out;
   }();

@@ -5,9 +5,8 @@
 # idle; once a run has measured them, ctest orders by its own measurements instead.
 set(glintlab_test_costs
   # The scenes every method renders on (every_method_scenes(), tests/builtin_scene_programs.hpp).
-  "^Images/EveryMethodOnBuiltinScene\\.IsFinite/(gltf_showcase|glint_area_lights|glint_tubes|normal_glints_noise)( |$)" 60
+  "^Images/EveryMethodOnBuiltinScene\\.IsFinite/(gltf_showcase|glint_area_lights|glint_area_lights_glinty|normal_glints_noise)( |$)" 60
   "^GltfMaterials\\.TexturedMaterialEqualsTheMaterialOfItsTexels" 20
-  "^Images/EveryMethodOnBuiltinScene\\.IsFinite/glint_sphere( |$)" 45
   # The default scene: conventional and the reference in its five material variants.
   "^Images/EveryMethodOnBuiltinScene\\.IsFinite/every_family( |$)" 45
   "^Chermain\\.GeometricGlintAntiAliasing" 40
@@ -32,11 +31,9 @@ set(glintlab_test_locks
   # tests/render/test_spot_light.cpp dark lights of the other two kinds: every method in
   # EveryMethodShades on the plain material GltfMaterials' textured test draws).
   "^(Images/EveryMethodOnBuiltinScene\\.IsFinite/gltf_showcase|GltfMaterials\\.(TexturedMaterialEqualsTheMaterialOfItsTexels|EmissionAddsToTheTotal).*|SpotLight\\..*)( |$)" programs_showcase
-  # two point lights, the plain backdrop.
-  "^Images/EveryMethodOnBuiltinScene\\.IsFinite/glint_(sphere|tubes)( |$)" programs_two_points
   # a quad, a disk and a sphere light, a plain binomial-glints material (QuadLight's dark disk
   # and sphere light in tests/glsl/test_sampling.cpp).
-  "^(Images/EveryMethodOnBuiltinScene\\.IsFinite/glint_area_lights|QuadLight\\.EveryMethodRendersItFinite)( |$)" programs_area_lights)
+  "^(Images/EveryMethodOnBuiltinScene\\.IsFinite/glint_area_lights(_glinty)?|QuadLight\\.EveryMethodRendersItFinite)( |$)" programs_area_lights)
 
 get_cmake_property(glintlab_variables VARIABLES)
 foreach(list IN LISTS glintlab_variables)

@@ -15,7 +15,7 @@
 namespace glintlab {
 namespace {
 
-constexpr std::size_t kTexelBytes = 16;  // RGBA32F
+constexpr std::size_t kDfgTexelBytes = 16;  // RGBA32F
 
 gl::Texture upload(std::span<const float> values) {
   gl::Texture texture = gl::make_texture(GL_TEXTURE_2D);
@@ -44,7 +44,7 @@ std::string check(std::span<const float> values) {
 }  // namespace
 
 Table dfg_table() {
-  constexpr std::size_t bytes = dfg_table_value_count() / 4 * kTexelBytes;
+  constexpr std::size_t bytes = dfg_table_value_count() / 4 * kDfgTexelBytes;
   return {
       .source =
           {

@@ -5,7 +5,8 @@
 #include "core/frame.glsl"
 #include "lights/lights.glsl"
 
-uniform int uLight;  // the environment's index in the light block
+uniform int uLight;        // the environment's index in the light block
+uniform mat4 uClipToWorld;  // inverse(frame.view_proj), once per draw on the CPU
 
 in vec2 vNdc;
 
@@ -13,8 +14,7 @@ layout(location = 0) out vec4 outTotal;
 layout(location = 1) out vec4 outSpecular;
 
 void main() {
-  mat4 toWorld = inverse(frame.view_proj);
-  vec4 near = toWorld * vec4(vNdc, -1.0, 1.0), far = toWorld * vec4(vNdc, 1.0, 1.0);
+  vec4 near = uClipToWorld * vec4(vNdc, -1.0, 1.0), far = uClipToWorld * vec4(vNdc, 1.0, 1.0);
   vec3 dir = normalize(far.xyz / far.w - near.xyz / near.w);
   outTotal = vec4(lightRadianceFrom(lights[uLight], dir), 1.0);
   outSpecular = vec4(0.0, 0.0, 0.0, 1.0);

@@ -127,6 +127,9 @@ void Renderer::draw_scene(const std::string& module, const ParamValues& params, 
     const GLuint background = shaders_.graphics("passes/background.vert", "passes/background.frag");
     glUseProgram(background);
     glProgramUniform1i(background, glGetUniformLocation(background, "uLight"), scene_.background_light());
+    const glm::mat4 clip_to_world = glm::inverse(frame.view_proj);
+    glProgramUniformMatrix4fv(background, glGetUniformLocation(background, "uClipToWorld"), 1, GL_FALSE,
+                              &clip_to_world[0][0]);
     glDepthFunc(GL_LEQUAL);
     glDepthMask(GL_FALSE);
     glBindVertexArray(empty_vertex_array_.id());

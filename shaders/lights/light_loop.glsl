@@ -1,13 +1,13 @@
 // The sum of a shading module's shadeLight over every light of the scene, specialised on the
 // scene's lights. The light buffer is sorted by kind (src/render/gpu_scene.cpp) and the program
-// variant defines LIGHT_RANGES, the constant initialiser of each kind's index range [x, y).
-// shadeAllLights (generated from the kinds' registry) calls shadeLightsOfKind once per kind with
-// the kind's code as a constant: with constant ranges every loop has a constant trip count and a
-// constant kind, so the compiler drops absent kinds, unrolls short loops, folds the dispatch of
-// lights/lights.glsl to the kind's functions and loads each light from a constant offset. This
-// matters on SIMD CPU drivers: Mesa's llvmpipe runs both sides of every branch and each loop
-// iteration is costly, so an unspecialised loop costs the code of every kind for every light
-// (measured in docs/results.md, "Speed").
+// variant defines LIGHT_RANGES, the constant initialiser of each kind's index range [x, y), and
+// LIGHT_<ID>_COUNT. shadeAllLights (generated from the kinds' registry) calls one loop per kind the
+// scene has, with the kind's code as a constant: every loop has a constant trip count and a
+// constant kind, so the compiler unrolls short loops, folds the dispatch of lights/lights.glsl to
+// the kind's functions and loads each light from a constant offset, and the kinds the scene lacks
+// are not compiled at all (generated/light_kinds.glsl). This matters on SIMD CPU drivers: Mesa's
+// llvmpipe runs both sides of every branch and each loop iteration is costly, so an unspecialised
+// loop costs the code of every kind for every light (measured in docs/results.md, "Speed").
 #include "lights/lights.glsl"
 #include "core/surface.glsl"
 #include "lobe/environment_shading.glsl"
@@ -31,13 +31,24 @@ Radiance shadeEnvironmentLight(Surface s, LightData L) {
 #endif
 }
 
-Radiance shadeLightsOfKind(Surface s, const int kind) {
+// The lights of a compact kind.
+Radiance shadeCompactLights(Surface s, const int kind) {
   Radiance sum = Radiance(vec3(0.0), vec3(0.0));
   for (int i = kLightRange[kind].x; i < kLightRange[kind].y; ++i) {
     LightData L = lights[i];
     L.colour_type.a = float(kind);  // a constant: lightType(L) folds to this kind
-    if (lightIsCompact(L)) addRadiance(sum, shadeLight(s, L));
-    else addRadiance(sum, shadeEnvironmentLight(s, L));
+    addRadiance(sum, shadeLight(s, L));
+  }
+  return sum;
+}
+
+// The lights of a kind that is not compact.
+Radiance shadeEnvironmentLights(Surface s, const int kind) {
+  Radiance sum = Radiance(vec3(0.0), vec3(0.0));
+  for (int i = kLightRange[kind].x; i < kLightRange[kind].y; ++i) {
+    LightData L = lights[i];
+    L.colour_type.a = float(kind);
+    addRadiance(sum, shadeEnvironmentLight(s, L));
   }
   return sum;
 }

@@ -2,10 +2,13 @@
 // shaders/lights/<kind>.glsl, with functions <kind>Light<Function> and the exact geometry of its
 // light; approximations of a light belong to the methods. The dispatch below is generated from
 // the kinds' registry (src/scene/lights/light_kinds.cpp, src/render/shader_contract.cpp): with a constant
-// kind, as in the light loop (lights/light_loop.glsl), it folds to the kind's own function.
+// kind, as in the light loop (lights/light_loop.glsl), it folds to the kind's own function; kinds
+// the scene lacks (LIGHT_<ID>_COUNT 0) are not compiled, and a property that every kind of the
+// scene answers alike is a literal, so test a property rather than compare lightForm(L).
 //
 // Every kind:
 //   bool lightHasExtent(L), lightIsDistant(L), lightIsCompact(L)  declared by the kind;
+//   bool lightHasDiskForm(L), lightHasPolygonForm(L)
 //                                              int lightForm(L): LIGHT_FORM_*
 // Compact kinds (one radiance over a bounded extent; not an environment):
 //   vec3 lightCentreDirection(L, p)            unit direction from p to the light's centre

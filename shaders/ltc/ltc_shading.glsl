@@ -38,7 +38,7 @@ mat3 ltcViewFrame(vec3 wo) {
 // identity, so a polygon needs one clip and a disk form facing the point (spheres, suns) is a
 // circular cone, whose vector form factor is sin^2 of its half-angle along its axis.
 float ltcLightIntegral(Surface s, LightData L, mat3 Minv, const bool lambert) {
-  if (lightForm(L) == LIGHT_FORM_POLYGON) {
+  if (lightHasPolygonForm(L)) {
     vec3 vertex[LIGHT_POLYGON_MAX_VERTICES];
     int count = lightPolygonForm(L, vertex);
     for (int i = 0; i < LIGHT_POLYGON_MAX_VERTICES; ++i) vertex[i] = toLocal(s, vertex[i] - s.position);

@@ -33,7 +33,7 @@ Radiance shadeLight(Surface s, LightData L) {
   if (wo.z <= 0.0 || solidAngle <= 0.0) return result;
   vec3 radiance = lightRadiance(L);
   result.diffuse = s.diffuse * ltcLightIntegral(s, L, mat3(1.0), true) * radiance;
-  if (LIGHT_CELLS > 1 && lightForm(L) == LIGHT_FORM_POLYGON) {
+  if (LIGHT_CELLS > 1 && lightHasPolygonForm(L)) {
     result.specular = subdividedGlintSpecular(s, gLtc, gBinomial, L, wo, model) * radiance;
   } else {
     GlintLightIntegral g = glintLightIntegral(s, gLtc, L, wo, centreDir, solidAngle);

@@ -28,7 +28,7 @@ void prepareSurface(inout Surface s) {
 
 Radiance shadeLight(Surface s, LightData L) {
   // The reflection space is measured against the light's disk form (disks, spheres, suns).
-  if (lightForm(L) == LIGHT_FORM_DISK)
+  if (lightHasDiskForm(L))
     return shadeReflectionSpace(s, L, gCorners, gLobe, ReflectionSpaceOptions(param_area, param_glossy == GLOSSY_ON));
   return shadeLobe(s, L, gLobe);  // delta lights and polygons: the baseline
 }

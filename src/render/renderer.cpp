@@ -8,8 +8,10 @@
 #include "core/error.hpp"
 #include "gl/context.hpp"
 #include "render/shader_contract.hpp"
+#include "scene/lights/light_kind.hpp"
 #include "tables/registry.hpp"
 #include "shading/method_module.hpp"
+#include "shading/registry.hpp"
 
 namespace glintlab {
 
@@ -30,7 +32,7 @@ ShaderDefines forward_variant(const std::string& module, const LightRanges& ligh
   for (std::size_t k = 0; k < light_ranges.size(); ++k)
     ranges += (k ? ", ivec2(" : "ivec2(") + std::to_string(light_ranges[k].x) + ", " + std::to_string(light_ranges[k].y) + ")";
   const MaterialKind& kind = all_material_kinds().at(static_cast<std::size_t>(material.kind));
-  return {{"$METHOD", module},
+  ShaderDefines defines = {{"$METHOD", module},
           {"$MATERIAL", material_kind_module(kind)},
           {"LIGHT_RANGES", ranges + ")"},
           {"MATERIAL_KIND", std::to_string(kind.code())},  // compare with MATERIAL_KIND_<ID> (the contract)
@@ -38,6 +40,19 @@ ShaderDefines forward_variant(const std::string& module, const LightRanges& ligh
           {"MATERIAL_TEXTURES", material.textures ? "1" : "0"},
           {"REFERENCE_PASS", is_reference_module(module) ? "1" : "0"},
           {"REFERENCE_BINOMIAL_REALISATION", module == kRealisationReferenceModule ? "1" : "0"}};
+  for (std::size_t k = 0; k < light_ranges.size(); ++k)
+    defines.emplace_back(light_count_define(all_light_kinds().at(k)), std::to_string(light_ranges[k].y - light_ranges[k].x));
+  for (const std::string& id : light_kinds_built_by(module)) defines.emplace_back(light_built_define(find_light_kind(id)), "1");
+  return defines;
+}
+
+std::vector<std::string> light_kinds_built_by(const std::string& module) {
+  const std::string prefix = "generated/methods/";  // generated_module_path: <prefix><id>[.<choice>...].glsl
+  if (!module.starts_with(prefix)) return {};
+  const std::string id = module.substr(prefix.size(), module.find('.', prefix.size()) - prefix.size());
+  for (const MethodDescriptor& m : all_methods())
+    if (m.id == id) return m.light_kinds_built;
+  return {};
 }
 
 MaterialVariant material_variant(const GpuScene& scene, int material) {

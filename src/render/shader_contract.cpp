@@ -54,23 +54,50 @@ bool delta(const LightKind& k) { return !k.has_extent; }
 bool disk_form(const LightKind& k) { return k.form == LightForm::Disk; }
 bool polygon_form(const LightKind& k) { return k.form == LightForm::Polygon; }
 
+// Scene specialisation. The forward variant defines LIGHT_<ID>_COUNT, how many lights of each kind
+// the scene has (src/render/renderer.cpp), and the generated dispatch and properties compile only
+// the kinds it has: a kind the scene lacks is removed by the preprocessor, and a property every
+// kind it has answers alike is a literal. The light loop's kind is a constant too, but Mesa's GLSL
+// front end inlines and optimises every branch before its back end folds that constant (most of a
+// program's compile time on llvmpipe, docs/methods.md, "Compile time").
+
+/// LIGHT_<ID>_COMPILED: 1 when the program shades lights of the kind (the scene has some, or the
+/// module builds them), else 0.
+std::string compiled_define(const LightKind& kind) { return code_name(kind) + "_COMPILED"; }
+
+/// The preprocessor's count of the compiled kinds among those `has` selects (`selected`) or not.
+std::string count_of(bool (*has)(const LightKind&), bool selected) {
+  std::string sum = "(0";
+  for (const LightKind& k : all_light_kinds())
+    if (has(k) == selected) sum += " + " + compiled_define(k);
+  return sum + ")";
+}
+
+/// `line` compiled only when the program shades lights of kind `k`.
+std::string if_present(const LightKind& k, const std::string& line) {
+  return "#if " + compiled_define(k) + "\n" + line + "#endif\n";
+}
+
 std::string dispatch(const Dispatch& d) {
   std::string out = d.signature + " {\n  int kind = lightType(L);\n";
   for (const LightKind& k : all_light_kinds()) {
     if (!d.applies(k)) continue;
     const std::string call = k.glsl_prefix() + d.suffix + "(" + d.arguments + ")";
-    out += "  if (kind == " + code_name(k) + ") " + (d.returns_value ? "return " + call + ";\n" : "{ " + call + "; return; }\n");
+    out += if_present(k, "  if (kind == " + code_name(k) + ") " +
+                             (d.returns_value ? "return " + call + ";\n" : "{ " + call + "; return; }\n"));
   }
   return out + "  " + d.fallback + "\n}\n\n";
 }
 
-/// A boolean property of the kinds, true for those `has` selects.
+/// A boolean property of the kinds, true for those `has` selects: a literal when the scene's kinds
+/// all have it or all lack it.
 std::string property(const std::string& name, bool (*has)(const LightKind&)) {
   std::string terms;
   for (const LightKind& k : all_light_kinds())
     if (has(k)) terms += (terms.empty() ? "" : " || ") + std::string("kind == ") + code_name(k);
-  return "bool " + name + "(LightData L) {\n  int kind = lightType(L);\n  return " + (terms.empty() ? "false" : terms) +
-         ";\n}\n\n";
+  return "bool " + name + "(LightData L) {\n#if " + count_of(has, false) + " == 0\n  return true;\n#elif " +
+         count_of(has, true) + " == 0\n  return false;\n#else\n  int kind = lightType(L);\n  return " +
+         (terms.empty() ? "false" : terms) + ";\n#endif\n}\n\n";
 }
 
 std::string light_kinds_glsl() {
@@ -78,13 +105,23 @@ std::string light_kinds_glsl() {
   out += "// The light interface (shaders/lights/lights.glsl) dispatched to each kind's functions\n"
          "// (shaders/lights/<kind>.glsl); with a constant kind (the light loop's) the dispatch folds away.\n";
   for (const LightKind& k : all_light_kinds()) out += "#include \"" + k.glsl_file() + "\"\n";
+  out += "\n// How many lights of each kind the scene has (the forward variant's defines); a program without\n"
+         "// them (a test's harness) compiles every kind.\n";
+  for (const LightKind& k : all_light_kinds()) {
+    const std::string count = light_count_define(k), compiled = compiled_define(k);
+    out += "#ifndef " + count + "\n#define " + count + " 1\n#endif\n#if " + count + " > 0 || defined(" +
+           light_built_define(k) + ")\n#define " + compiled + " 1\n#else\n#define " + compiled + " 0\n#endif\n";
+  }
   out += "\n";
   out += property("lightHasExtent", with_extent);
   out += property("lightIsDistant", [](const LightKind& k) { return k.distant; });
   out += property("lightIsCompact", compact);
+  out += property("lightHasDiskForm", disk_form);
+  out += property("lightHasPolygonForm", polygon_form);
   out += "int lightForm(LightData L) {\n  int kind = lightType(L);\n";
   for (const LightKind& k : all_light_kinds())
-    if (k.form != LightForm::None) out += "  if (kind == " + code_name(k) + ") return " + form_name(k.form) + ";\n";
+    if (k.form != LightForm::None)
+      out += if_present(k, "  if (kind == " + code_name(k) + ") return " + form_name(k.form) + ";\n");
   out += "  return LIGHT_FORM_NONE;\n}\n\n";
 
   const std::vector<Dispatch> functions = {
@@ -121,9 +158,12 @@ std::string light_kinds_glsl() {
 
 std::string shade_all_lights_glsl() {
   std::string out = kHeader;
-  out += "// One loop per kind, each with a constant kind and constant range (shaders/lights/light_loop.glsl).\n"
+  out += "// One loop per kind the scene has, each with a constant kind and constant range\n"
+         "// (shaders/lights/light_loop.glsl).\n"
          "Radiance shadeAllLights(Surface s) {\n  Radiance sum = Radiance(vec3(0.0), vec3(0.0));\n";
-  for (const LightKind& k : all_light_kinds()) out += "  addRadiance(sum, shadeLightsOfKind(s, " + code_name(k) + "));\n";
+  for (const LightKind& k : all_light_kinds())
+    out += "#if " + light_count_define(k) + " > 0\n  addRadiance(sum, " +
+           (k.compact ? "shadeCompactLights" : "shadeEnvironmentLights") + "(s, " + code_name(k) + "));\n#endif\n";
   return out + "  return sum;\n}\n";
 }
 
@@ -235,6 +275,9 @@ std::string glsl_float(float v) {
 }
 
 }  // namespace
+
+std::string light_count_define(const LightKind& kind) { return code_name(kind) + "_COUNT"; }
+std::string light_built_define(const LightKind& kind) { return code_name(kind) + "_BUILT"; }
 
 ShaderDefines contract_defines() {
   ShaderDefines d = {

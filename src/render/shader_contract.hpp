@@ -26,6 +26,14 @@ void add_contract_sources(ShaderLibrary& shaders);
 /// if two of them have one name.
 ShaderDefines contract_defines();
 
+struct LightKind;
+/// LIGHT_<ID>_COUNT: the forward variant's define of how many lights of the kind the scene has;
+/// the generated light dispatch and light loop compile only the kinds a scene has.
+std::string light_count_define(const LightKind& kind);
+/// LIGHT_<ID>_BUILT: defined by the forward variant of a module that builds lights of the kind
+/// itself (MethodDescriptor::light_kinds_built), so that the kind is compiled without scene lights.
+std::string light_built_define(const LightKind& kind);
+
 struct MaterialKind;
 /// The generated module of a material kind for the forward pass's $MATERIAL slot: the kind's
 /// shaders/materials/<id>.glsl behind the material interface (materialSpecularCos, ...).

@@ -51,6 +51,9 @@ struct MethodDescriptor {
   /// "prefiltered-ndf"): made for the scene and the parameters' values, resident and bound before
   /// the renderer draws with it.
   std::vector<std::string> resources = {};
+  /// Ids of the light kinds the module builds lights of itself (podee's widened quad): compiled
+  /// into its programs whatever kinds the scene has (src/render/renderer.cpp, forward_variant).
+  std::vector<std::string> light_kinds_built = {};
 
   [[nodiscard]] std::string module_path() const { return "methods/" + id + ".glsl"; }
   [[nodiscard]] const ParamDecl* find_param(const std::string& name) const;

@@ -12,6 +12,7 @@
 #include <random>
 
 #include "gl_fixture.hpp"
+#include "render/shader_contract.hpp"
 #include "scene/lights/light_kind.hpp"
 
 using namespace glintlab;
@@ -71,21 +72,33 @@ TEST(LightKinds, EveryRegisteredKindHasAnExampleHere) {
   for (const auto& k : all_light_kinds()) EXPECT_TRUE(examples().contains(k.id)) << "add an example of " << k.id;
 }
 
+// Both as a test harness compiles the dispatch (every kind) and as a scene of only this kind does
+// (the forward variant's LIGHT_<ID>_COUNT: the other kinds removed, properties that are literals).
 TEST(LightKinds, DeclaredPropertiesReachTheShaders) {
   for (const auto& kind : all_light_kinds()) {
     SceneFixture f(light_scene(examples().at(kind.id).toml));
     ASSERT_EQ(f.scene.lights[0].kind, &kind);
-    const auto r = on_example(f, R"(
+    std::string only_this_kind;
+    for (const auto& k : all_light_kinds())
+      only_this_kind += "#define " + light_count_define(k) + (&k == &kind ? " 1\n" : " 0\n");
+    for (const std::string& specialisation : {std::string(), only_this_kind}) {
+      f.gpu->bind_buffers();
+      const auto r = evaluate_glsl(specialisation + kIncludes, R"(
 vec4 evaluate(vec4 a, vec4 b) {
   LightData L = lights[0];
-  return vec4(lightHasExtent(L) ? 1.0 : 0.0, lightIsDistant(L) ? 1.0 : 0.0, float(lightForm(L)),
+  return vec4(lightHasExtent(L) ? 1.0 : 0.0, lightIsDistant(L) ? 1.0 : 0.0,
+              float(lightForm(L)) + (lightHasDiskForm(L) ? 10.0 : 0.0) + (lightHasPolygonForm(L) ? 20.0 : 0.0),
               float(lightType(L)) + (lightIsCompact(L) ? 0.5 : 0.0));
 })",
-                              {glm::vec4(0)}, {glm::vec4(0)});
-    EXPECT_EQ(r[0].x, kind.has_extent ? 1.0f : 0.0f) << kind.id;
-    EXPECT_EQ(r[0].y, kind.distant ? 1.0f : 0.0f) << kind.id;
-    EXPECT_EQ(r[0].z, static_cast<float>(static_cast<int>(kind.form))) << kind.id;
-    EXPECT_EQ(r[0].w, static_cast<float>(kind.code()) + (kind.compact ? 0.5f : 0.0f)) << kind.id;
+                                   {glm::vec4(0)}, {glm::vec4(0)});
+      const std::string what = kind.id + (specialisation.empty() ? " (every kind compiled)" : " (only its kind compiled)");
+      EXPECT_EQ(r[0].x, kind.has_extent ? 1.0f : 0.0f) << what;
+      EXPECT_EQ(r[0].y, kind.distant ? 1.0f : 0.0f) << what;
+      EXPECT_EQ(r[0].z, static_cast<float>(static_cast<int>(kind.form)) + (kind.form == LightForm::Disk ? 10.0f : 0.0f) +
+                            (kind.form == LightForm::Polygon ? 20.0f : 0.0f))
+          << what;
+      EXPECT_EQ(r[0].w, static_cast<float>(kind.code()) + (kind.compact ? 0.5f : 0.0f)) << what;
+    }
   }
 }
 

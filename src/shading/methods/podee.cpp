@@ -44,6 +44,7 @@ MethodDescriptor podee_method() {
                   "the centre's footprint (bumps smaller than the pixel are averaged away), -1 half of it, "
                   "..., -16 in effect the base level (bilinear)"}},
       .tables = {},
+      .light_kinds_built = {"quad"},  // the light widened by the reflection space (podee/reflection_space_shading.glsl)
   };
 }
 

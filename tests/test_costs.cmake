@@ -5,20 +5,19 @@
 # idle; once a run has measured them, ctest orders by its own measurements instead.
 set(glintlab_test_costs
   # The scenes every method renders on (every_method_scenes(), tests/builtin_scene_programs.hpp).
-  "^Images/EveryMethodOnBuiltinScene\\.IsFinite/(gltf_showcase|glint_area_lights|glint_area_lights_glinty|normal_glints_noise)( |$)" 60
-  "^GltfMaterials\\.TexturedMaterialEqualsTheMaterialOfItsTexels" 20
-  # The default scene: conventional and the reference in its five material variants.
-  "^Images/EveryMethodOnBuiltinScene\\.IsFinite/every_family( |$)" 45
-  "^Chermain\\.GeometricGlintAntiAliasing" 40
-  "^Images/EveryMethodOnBuiltinScene\\." 5
-  # Every method under an environment (the furnace and the hot spot share its programs).
-  "^EnvironmentLight\\.MethodsInTheFurnace" 40
-  "^SpecularAA\\.FilteringBeatsConventionalOnThinTubes$" 20
-  "^Podee\\.BeatsConventionalOnTheNearMirrorScenes$" 20
-  "^Reference\\.SubPixelHighlightOfAMirrorSphere" 15
-  "^Cli\\.SameCommandWritesIdenticalFiles$" 15
-  "^Report\\.ChromiumLoadsEveryImageAndVideoAndTheSliderMoves$" 12
-  "^SpecularAA\\." 12
+  "^Images/EveryMethodOnBuiltinScene\\.IsFinite/every_family( |$)" 60
+  "^Images/EveryMethodOnBuiltinScene\\.IsFinite/glint_area_lights(_glinty)?( |$)" 40
+  "^Images/EveryMethodOnBuiltinScene\\.IsFinite/gltf_showcase( |$)" 30
+  "^Chermain\\.GeometricGlintAntiAliasing" 25
+  "^Kneiphof\\.FiniteForRandomLightsAcrossTheHorizon" 25
+  "^LtcAreaLightsSweep\\." 18
+  "^Images/EveryMethodOnBuiltinScene\\.IsFinite/normal_glints_noise( |$)" 12
+  "^Kneiphof\\.DenseGlintsConvergeToTheSmoothLtcRender" 12
+  "^GltfMaterials\\.TexturedMaterialEqualsTheMaterialOfItsTexels" 11
+  "^SpecularAA\\." 10
+  "^Deng2022\\.MatchesYan2016AndTheReferenceNearAndFar" 9
+  "^Report\\.ChromiumLoadsEveryImageAndVideoAndTheSliderMoves$" 7
+  "^Images/EveryMethodOnBuiltinScene\\." 3
 )
 
 # Tests that compile the same forward programs (the same methods, material variants and light

@@ -1,14 +1,15 @@
 # glintlab: the two set-up commands (README) and a few conveniences.
 #   make demo   install the missing Debian packages the glintlab binary needs, build only it (build/demo),
 #               compare every method on the default scene and write the HTML report (tools/demo.sh)
-#   make test   install missing Debian packages, build (Release and the clang fuzz targets), run the whole
-#               suite through ctest, then the fuzz targets' smoke pass (docs/fuzzing.md)
+#   make test   install missing Debian packages, build (Release, the clang fuzz targets and make demo's
+#               unity build), run the whole suite through ctest, then the fuzz targets' smoke pass
+#               (docs/fuzzing.md)
 #   make view   open the viewer on the default scene (needs a display; docs/viewer.md)
 #   make fuzz   run every fuzz target for FUZZ_SECONDS each (default 600; docs/fuzzing.md)
 #   make bench-tables  time generating and loading each precomputed table (Google Benchmark; not in test)
 #   make bench-normal-maps  time the procedural normal-map generators at their largest inputs (the same)
 #   make ltc-fit-report  fit both LTC tables: generation time and the fit error over the grid (markdown)
-.PHONY: all deps build build-fuzz demo view test fuzz bench bench-tables bench-normal-maps ltc-fit-report clean
+.PHONY: all deps build build-fuzz build-demo demo view test fuzz bench bench-tables bench-normal-maps ltc-fit-report clean
 
 BUILD := build/release
 FUZZ_BUILD := build/fuzz
@@ -30,13 +31,19 @@ build-fuzz: deps
 	  cmake --preset fuzz >/dev/null && cmake --build $(FUZZ_BUILD) -j $(JOBS); \
 	else echo "glintlab: clang++ not found: fuzz targets skipped"; fi
 
+# make demo's binary (a unity build, build/demo), built by make test too: a name that two files
+# each define in an anonymous namespace breaks only this build.
+build-demo: deps
+	cmake --preset demo >/dev/null
+	cmake --build --preset demo -j $(JOBS)
+
 demo:
 	@JOBS=$(JOBS) tools/demo.sh
 
 view: build
 	$(BUILD)/glintlab view --mode split
 
-test: build build-fuzz
+test: build build-fuzz build-demo
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 	@if [ -f $(FUZZ_BUILD)/CTestTestfile.cmake ]; then cd $(FUZZ_BUILD) && ctest --output-on-failure -j $(JOBS); fi
 

@@ -11,7 +11,6 @@
 #include "scene/lights/light_kind.hpp"
 #include "tables/registry.hpp"
 #include "shading/method_module.hpp"
-#include "shading/registry.hpp"
 
 namespace glintlab {
 
@@ -42,17 +41,9 @@ ShaderDefines forward_variant(const std::string& module, const LightRanges& ligh
           {"REFERENCE_BINOMIAL_REALISATION", module == kRealisationReferenceModule ? "1" : "0"}};
   for (std::size_t k = 0; k < light_ranges.size(); ++k)
     defines.emplace_back(light_count_define(all_light_kinds().at(k)), std::to_string(light_ranges[k].y - light_ranges[k].x));
-  for (const std::string& id : light_kinds_built_by(module)) defines.emplace_back(light_built_define(find_light_kind(id)), "1");
+  if (const MethodDescriptor* method = method_of_generated_module(module))
+    for (const std::string& id : method->light_kinds_built) defines.emplace_back(light_built_define(find_light_kind(id)), "1");
   return defines;
-}
-
-std::vector<std::string> light_kinds_built_by(const std::string& module) {
-  const std::string prefix = "generated/methods/";  // generated_module_path: <prefix><id>[.<choice>...].glsl
-  if (!module.starts_with(prefix)) return {};
-  const std::string id = module.substr(prefix.size(), module.find('.', prefix.size()) - prefix.size());
-  for (const MethodDescriptor& m : all_methods())
-    if (m.id == id) return m.light_kinds_built;
-  return {};
 }
 
 MaterialVariant material_variant(const GpuScene& scene, int material) {

@@ -34,12 +34,10 @@ inline constexpr const char* kRealisationReferenceModule = "passes/reference_rea
 inline bool is_reference_module(const std::string& module) { return module.starts_with("passes/reference"); }
 
 /// Defines of one variant of the forward pass (shaders/passes/forward.frag): the shading module
-/// (a method's or the reference's), the index range of each light kind in the light buffer and
-/// the material's variant.
+/// (a method's or the reference's), the index range and count of each light kind in the light
+/// buffer (and the kinds the method builds lights of itself, MethodDescriptor::light_kinds_built)
+/// and the material's variant.
 ShaderDefines forward_variant(const std::string& module, const LightRanges& light_ranges, MaterialVariant material);
-/// The light kinds a forward module builds lights of itself (MethodDescriptor::light_kinds_built):
-/// compiled into its programs whatever the scene's lights.
-std::vector<std::string> light_kinds_built_by(const std::string& module);
 
 /// The module a method's forward program includes in the $METHOD slot: its parameter uniforms,
 /// generated from the descriptor, then shaders/methods/<id>.glsl (shading/method_module.hpp).

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "core/error.hpp"
+#include "shading/registry.hpp"
 
 namespace glintlab {
 
@@ -67,6 +68,15 @@ std::string generated_module_path(const MethodDescriptor& method, const ParamVal
   for (const ParamDecl& p : method.params)
     if (p.compile_time) path += "." + p.name + "-" + p.choices.at(compile_time_choice(p, values));
   return path + ".glsl";
+}
+
+const MethodDescriptor* method_of_generated_module(const std::string& path) {
+  const std::string prefix = "generated/methods/";
+  if (!path.starts_with(prefix)) return nullptr;
+  const std::string id = path.substr(prefix.size(), path.find('.', prefix.size()) - prefix.size());
+  for (const MethodDescriptor& m : all_methods())
+    if (m.id == id) return &m;
+  return nullptr;
 }
 
 std::size_t compile_time_choice(const ParamDecl& param, const ParamValues& values) {

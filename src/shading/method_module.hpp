@@ -16,6 +16,9 @@ inline bool glsl_identifier_char(char c) { return std::isalnum(static_cast<unsig
 /// "generated/methods/<id>.glsl": the path the generated source is known by in the shader library;
 /// with compile-time parameters, "<id>.<name>-<choice>...glsl", one per combination of their values.
 std::string generated_module_path(const MethodDescriptor& method, const ParamValues& values = {});
+/// The registered method whose generated module is at `path`, or nullptr (the reference's and
+/// other passes' modules).
+const MethodDescriptor* method_of_generated_module(const std::string& path);
 
 /// The index of the choice a compile-time parameter takes in `values` (its default if absent).
 std::size_t compile_time_choice(const ParamDecl& param, const ParamValues& values);

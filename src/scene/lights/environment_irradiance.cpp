@@ -11,6 +11,7 @@
 // max(0, n.V_part): only the parts the horizon crosses keep an error, of second order in their size.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "scene/lights/environment_map.hpp"
@@ -32,12 +33,12 @@ PartFactors part_factors(int width, int height) {
   PartFactors f;
   const int rows = height * kSplit, columns = width * kSplit;
   for (int j = 0; j < rows; ++j) {
-    const double t0 = kEnvironmentPi * j / rows, t1 = kEnvironmentPi * (j + 1) / rows;
+    const double t0 = std::numbers::pi * j / rows, t1 = std::numbers::pi * (j + 1) / rows;
     f.s.push_back(0.5 * (t1 - t0) - 0.25 * (std::sin(2 * t1) - std::sin(2 * t0)));
     f.c.push_back(0.5 * (std::sin(t1) * std::sin(t1) - std::sin(t0) * std::sin(t0)));
   }
   for (int k = 0; k < columns; ++k) {
-    const double p0 = 2 * kEnvironmentPi * (double(k) / columns - 0.5), p1 = 2 * kEnvironmentPi * (double(k + 1) / columns - 0.5);
+    const double p0 = 2 * std::numbers::pi * (double(k) / columns - 0.5), p1 = 2 * std::numbers::pi * (double(k + 1) / columns - 0.5);
     f.sin_int.push_back(std::cos(p0) - std::cos(p1));
     f.dphi.push_back(p1 - p0);
     f.cos_int.push_back(std::sin(p1) - std::sin(p0));
@@ -66,7 +67,7 @@ TexelCone texel_cone(const PartFactors& f, int x, int y, int width, int height) 
   for (int e = 0; e <= 8; ++e)
     for (const glm::dvec2& t : {glm::dvec2(e / 8.0, 0), glm::dvec2(e / 8.0, 1), glm::dvec2(0, e / 8.0), glm::dvec2(1, e / 8.0)})
       cos_radius = std::min(cos_radius, glm::dot(cone.axis, environment_direction_precise((x + t.x) / width, (y + t.y) / height)));
-  const double radius = std::min(kEnvironmentPi / 2, 1.1 * std::acos(std::clamp(cos_radius, -1.0, 1.0)) + 1e-3);
+  const double radius = std::min(std::numbers::pi / 2, 1.1 * std::acos(std::clamp(cos_radius, -1.0, 1.0)) + 1e-3);
   cone.sin_radius = std::sin(radius);
   return cone;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <vector>
 
 #include "core/error.hpp"
@@ -10,7 +11,6 @@
 
 namespace glintlab {
 namespace {
-
 
 std::string texel_text(int x, int y, const glm::vec3& c) {
   char text[160];
@@ -50,7 +50,7 @@ std::vector<Footprint> footprints(int sources, int targets, Measure measure) {
 }  // namespace
 
 glm::dvec3 environment_direction_precise(double u, double v) {
-  const double theta = kEnvironmentPi * v, phi = 2 * kEnvironmentPi * (u - 0.5);
+  const double theta = std::numbers::pi * v, phi = 2 * std::numbers::pi * (u - 0.5);
   const double sin_theta = std::sin(theta);
   return {sin_theta * std::sin(phi), std::cos(theta), -sin_theta * std::cos(phi)};
 }
@@ -61,11 +61,11 @@ glm::dvec2 environment_uv(glm::dvec3 d) {
   d = glm::normalize(d);
   const double theta = std::acos(std::clamp(d.y, -1.0, 1.0));
   const double phi = std::atan2(d.x, -d.z);  // in [-pi, pi]
-  return {std::clamp(phi / (2 * kEnvironmentPi) + 0.5, 0.0, 1.0), theta / kEnvironmentPi};
+  return {std::clamp(phi / (2 * std::numbers::pi) + 0.5, 0.0, 1.0), theta / std::numbers::pi};
 }
 
 double environment_row_solid_angle(int y, int height) {
-  return 2 * kEnvironmentPi / (2.0 * height) * (std::cos(kEnvironmentPi * y / height) - std::cos(kEnvironmentPi * (y + 1) / height));
+  return 2 * std::numbers::pi / (2.0 * height) * (std::cos(std::numbers::pi * y / height) - std::cos(std::numbers::pi * (y + 1) / height));
 }
 
 Image downsample_environment(const Image& radiance, int height) {
@@ -74,7 +74,7 @@ Image downsample_environment(const Image& radiance, int height) {
   // Along u every texel of a row has the same solid angle: plain overlap lengths. Along v a
   // source row's share is the solid angle of its overlap: 2 pi (cos(theta_a) - cos(theta_b)).
   const auto along_u = footprints(w, target_w, [](double a, double b) { return b - a; });
-  const auto along_v = footprints(h, target_h, [](double a, double b) { return std::cos(kEnvironmentPi * a) - std::cos(kEnvironmentPi * b); });
+  const auto along_v = footprints(h, target_h, [](double a, double b) { return std::cos(std::numbers::pi * a) - std::cos(std::numbers::pi * b); });
 
   std::vector<glm::dvec3> rows(static_cast<std::size_t>(target_w) * h);
   for (int y = 0; y < h; ++y)

@@ -21,9 +21,6 @@
 
 namespace glintlab {
 
-/// pi, for the environment's files (one definition: they build as one unity).
-inline constexpr double kEnvironmentPi = 3.14159265358979323846;
-
 /// Maps wider than this are box-downsampled (by a power of two) when loaded, and the light is
 /// then the downsampled map: its CDF and its texture hold at most 2048 x 1024 texels.
 inline constexpr int kMaxEnvironmentWidth = 2048;

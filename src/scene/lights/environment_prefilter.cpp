@@ -6,12 +6,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 
 #include "scene/lights/environment_map.hpp"
 
 namespace glintlab {
 namespace {
-
 
 /// Van der Corput's radical inverse in base 2: the second coordinate of a Hammersley set.
 double radical_inverse_2(std::uint32_t i) {
@@ -39,14 +39,14 @@ std::vector<LobeSample> lobe_samples(double alpha, int count) {
   std::vector<LobeSample> samples;
   const double a2 = alpha * alpha;
   for (int i = 0; i < count; ++i) {
-    const double u = (i + 0.5) / count, phi = 2 * kEnvironmentPi * radical_inverse_2(static_cast<std::uint32_t>(i));
+    const double u = (i + 0.5) / count, phi = 2 * std::numbers::pi * radical_inverse_2(static_cast<std::uint32_t>(i));
     const double cos2 = (1 - u) / (1 + (a2 - 1) * u);
     const double cos_h = std::sqrt(cos2), sin_h = std::sqrt(std::max(0.0, 1 - cos2));
     const glm::dvec3 h(sin_h * std::cos(phi), sin_h * std::sin(phi), cos_h);
     const glm::dvec3 l = 2 * cos_h * h - glm::dvec3(0, 0, 1);
     if (l.z <= 0) continue;
     const double e = cos2 * (a2 - 1) + 1;
-    const double ndf = a2 / (kEnvironmentPi * e * e);  // Walter et al. 2007, eq. 33
+    const double ndf = a2 / (std::numbers::pi * e * e);  // Walter et al. 2007, eq. 33
     samples.push_back({l, l.z, -std::log2(count * ndf / 4)});
   }
   return samples;
@@ -100,7 +100,7 @@ Image filter_level(const MipPyramid& source, int width, double alpha, int sample
   const std::vector<LobeSample> samples = lobe_samples(alpha, sample_count);
   const Image& base = source.level(0);
   // Omega_p: the solid angle of a finest texel at polar angle theta is (2 pi / W)(pi / H) sin(theta).
-  const double log2_texel = std::log2(2 * kEnvironmentPi * kEnvironmentPi / (double(base.width()) * base.height()));
+  const double log2_texel = std::log2(2 * std::numbers::pi * std::numbers::pi / (double(base.width()) * base.height()));
   Image result(width, width / 2);
   for (int y = 0; y < result.height(); ++y)
     for (int x = 0; x < width; ++x) {

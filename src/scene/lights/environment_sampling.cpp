@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <span>
 
 #include "scene/lights/environment_map.hpp"
 
 namespace glintlab {
 namespace {
-
 
 /// Writes the normalised running sum of `values` into `out` (values.size() + 1 entries: 0, ..., 1),
 /// or the uniform CDF if they sum to 0; returns the sum.
@@ -55,7 +55,7 @@ EnvironmentSampling build_environment_sampling(const Image& radiance) {
   double total = 0;
   for (int y = 0; y < h; ++y) {
     // sin(theta) at the row's centre: the Jacobian of (u, v) -> directions, per row.
-    const double sin_theta = std::sin(kEnvironmentPi * (y + 0.5) / h);
+    const double sin_theta = std::sin(std::numbers::pi * (y + 0.5) / h);
     for (int x = 0; x < w; ++x)
       row[static_cast<std::size_t>(x)] = std::max(0.0, double(luminance(radiance.at(x, y)))) * sin_theta;
     row_sums[static_cast<std::size_t>(y)] = write_cdf(row, s.cdf.data() + static_cast<std::size_t>(y) * (w + 1));
@@ -87,8 +87,8 @@ double environment_pdf_uv(const EnvironmentSampling& s, glm::dvec2 uv) {
 
 double environment_pdf(const EnvironmentSampling& s, glm::dvec3 d) {
   const glm::dvec2 uv = environment_uv(d);
-  const double sin_theta = std::sin(kEnvironmentPi * uv.y);
-  return sin_theta > 0 ? environment_pdf_uv(s, uv) / (2 * kEnvironmentPi * kEnvironmentPi * sin_theta) : 0.0;
+  const double sin_theta = std::sin(std::numbers::pi * uv.y);
+  return sin_theta > 0 ? environment_pdf_uv(s, uv) / (2 * std::numbers::pi * std::numbers::pi * sin_theta) : 0.0;
 }
 
 }  // namespace glintlab

@@ -2,15 +2,15 @@
 
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <numbers>
 
 namespace glintlab {
 
 namespace {
 
-
 glm::dvec3 direction_of(double elevation_degrees, double azimuth_degrees) {
   // Azimuth about +y from -z (the map's centre) towards +x.
-  const double e = elevation_degrees * kEnvironmentPi / 180.0, a = azimuth_degrees * kEnvironmentPi / 180.0;
+  const double e = elevation_degrees * std::numbers::pi / 180.0, a = azimuth_degrees * std::numbers::pi / 180.0;
   return {std::cos(e) * std::sin(a), std::sin(e), -std::cos(e) * std::cos(a)};
 }
 
@@ -19,7 +19,7 @@ glm::dvec3 direction_of(double elevation_degrees, double azimuth_degrees) {
 EnvironmentMap studio_environment_map(int width) {
   const int height = width / 2;
   const glm::dvec3 sun = direction_of(35.0, 40.0);
-  const double sun_cos = std::cos(1.5 * kEnvironmentPi / 180.0);
+  const double sun_cos = std::cos(1.5 * std::numbers::pi / 180.0);
   // Soft boxes: centre direction, angular half sizes (elevation, azimuth) in degrees, radiance.
   struct Box {
     double elevation, azimuth, half_elevation, half_azimuth;

@@ -6,6 +6,7 @@
 
 #include "core/cache_directory.hpp"
 #include "core/error.hpp"
+#include "core/file_access.hpp"
 #include "core/pixel_filter_width.hpp"
 #include "eval/commands.hpp"
 #include "eval/outputs.hpp"
@@ -305,6 +306,7 @@ int run_cli(int argc, char** argv) {
                                           .outputs = true, .kept_images = static_cast<int>(methods.size()) + 1});
       run_animate(session, methods, animate_o.out.empty() ? default_out("animate", animate_o) : animate_o.out);
     } else if (app.got_subcommand("prefilter")) {
+      if (!prefilter_json.empty()) check_output_file(prefilter_json, "-o");  // before the precompute
       const auto methods = resolve_methods("deng2022", prefilter_params);
       prefilter_o.settings = prefilter_settings_from(methods.front().params);
       prefilter_o.use_cache = !prefilter_no_cache;
@@ -316,6 +318,7 @@ int run_cli(int argc, char** argv) {
       run_report({report_inputs.begin(), report_inputs.end()}, report_out);
     } else if (app.got_subcommand("bench")) {
       const auto methods = resolve_methods(bench_o.methods, bench_o.params);
+      if (!bench_o.out.empty()) check_output_file(std::filesystem::path(bench_o.out) / "bench.json", "-o");
       Session session(bench_o, Workload{.methods = 1});
       run_bench(session, methods, bench_frames, bench_warmup, bench_o.out);
     }

@@ -6,10 +6,13 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/file_access.hpp"
 
 namespace glintlab {
 
 AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) {
+  // The rename below would replace whatever the target is (a device, a FIFO, a link): refused.
+  check_output_file(target_, "");
   if (target_.has_parent_path()) std::filesystem::create_directories(target_.parent_path());
   // Keep the extension last: image writers pick the format from it.
   temp_ = target_.parent_path() /

@@ -7,6 +7,7 @@ namespace glintlab {
 
 class AtomicFile {
  public:
+  /// Throws InputError if the target exists and is not a regular file (core/file_access.hpp).
   explicit AtomicFile(std::filesystem::path target);
   ~AtomicFile();
   AtomicFile(const AtomicFile&) = delete;

@@ -19,6 +19,7 @@
 #include "core/colour.hpp"
 #include "core/error.hpp"
 #include "core/exr_header_check.hpp"
+#include "core/file_access.hpp"
 #include "core/jpeg_header_check.hpp"
 #include "core/png_header_check.hpp"
 
@@ -83,6 +84,7 @@ void write_exr(const std::filesystem::path& path, const std::vector<ImageLayer>&
 }
 
 Image read_exr(const std::filesystem::path& path, const std::string& layer) {
+  require_regular_file(path, "");
   check_exr_header(path);  // before OpenEXR allocates what the header claims
   try {
     Imf::InputFile in(path.c_str());
@@ -123,8 +125,9 @@ void write_png(const std::filesystem::path& path, const Image& img) {
   file.commit();
 }
 
-Image read_ldr_image(const std::filesystem::path& path) {
+Image read_ldr_image(const std::filesystem::path& path, int* file_channels) {
   int w = 0, h = 0, channels = 0;
+  require_regular_file(path, "");
   require_documented_format(path);
   check_jpeg_header(path);
   // Sizes before decoding: stb_image refuses one over 2^30 bytes only as "too large", without it.
@@ -142,6 +145,7 @@ Image read_ldr_image(const std::filesystem::path& path) {
                      "); allowed: PNG, JPEG, TGA or BMP, 8 or 16 bits per channel, up to " +
                      std::to_string(kMaxImageSide) + " pixels per side");
   }
+  if (file_channels) *file_channels = channels;
   Image img(w, h);
   const float scale = is16 ? 1.0f / 65535.0f : 1.0f / 255.0f;
   for (std::size_t i = 0; i < img.pixel_count(); ++i)

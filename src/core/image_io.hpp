@@ -34,6 +34,7 @@ void write_png(const std::filesystem::path& path, const Image& display_image);
 
 /// Reads a PNG/JPEG/TGA/BMP (8 or 16 bit) as raw values in [0,1] (no colour decoding).
 /// Throws InputError naming the file if it is unreadable or larger than kMaxImageSide / kMaxImagePixels.
-Image read_ldr_image(const std::filesystem::path& path);
+/// `file_channels`, if given, receives the file's own channel count (1 or 2: greyscale).
+Image read_ldr_image(const std::filesystem::path& path, int* file_channels = nullptr);
 
 }  // namespace glintlab

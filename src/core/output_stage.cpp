@@ -8,6 +8,7 @@
 #include <cstdlib>
 
 #include "core/error.hpp"
+#include "core/file_access.hpp"
 
 namespace glintlab {
 
@@ -58,6 +59,14 @@ void OutputStage::publish(const std::vector<std::string>& last) {
     (std::find(last.begin(), last.end(), name) != last.end() ? last_moves : first_moves).push_back(entry.path());
   }
   std::sort(first_moves.begin(), first_moves.end());
+  // Checked before the first move, so that a refused target leaves every output as it was.
+  for (const auto* moves : {&first_moves, &last_moves})
+    for (const auto& from : *moves) {
+      const FileKind staged = file_kind(from, false), there = file_kind(dir_ / from.filename(), false);
+      if (there != FileKind::missing && there != staged)
+        throw InputError((dir_ / from.filename()).string() + ": is " + std::string(describe(there)) +
+                         "; allowed: " + std::string(describe(staged)) + " to replace, or nothing");
+    }
   for (const auto* moves : {&first_moves, &last_moves})
     for (const auto& from : *moves) {
       std::error_code ec;

@@ -6,6 +6,7 @@
 
 #include "core/colour.hpp"
 #include "core/error.hpp"
+#include "core/file_access.hpp"
 #include "core/image_io.hpp"
 
 namespace glintlab {
@@ -30,12 +31,7 @@ FrameOutput frame_output(const std::string& path, const std::string& default_ste
   const bool file = !ext.empty();
   FrameOutput out{file ? p.parent_path() : p, file ? p.stem().string() : default_stem};
   check_output_directory(out.dir);
-  std::error_code ec;
-  for (const char* e : {".exr", ".png"}) {
-    const auto target = out.dir / (out.stem + e);
-    if (std::filesystem::is_directory(target, ec))
-      throw InputError("-o " + path + ": " + target.string() + " is a directory; allowed: a file name to write");
-  }
+  for (const char* e : {".exr", ".png"}) check_output_file(out.dir / (out.stem + e), "-o");
   return out;
 }
 

@@ -11,6 +11,8 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/file_access.hpp"
+#include "core/image_io.hpp"
 #include "core/png_header_check.hpp"
 
 namespace glintlab {
@@ -49,12 +51,18 @@ class Field {
     if (!value_.is_number()) fail(key_, "is " + shown(), "a number");
     return value_.get<double>();
   }
-  [[nodiscard]] int integer(int least = std::numeric_limits<int>::min()) const {
-    const std::string allowed =
-        least == std::numeric_limits<int>::min() ? "an integer" : "an integer from " + std::to_string(least);
+  /// An error, a time or a ratio: what glintlab writes is finite and at least 0.
+  [[nodiscard]] double measure() const {
+    const double v = number();
+    if (!(v >= 0.0 && v <= std::numeric_limits<double>::max())) fail(key_, "is " + shown(), "a finite number >= 0");
+    return v;
+  }
+  [[nodiscard]] int integer(int least = std::numeric_limits<int>::min(), int most = std::numeric_limits<int>::max()) const {
+    std::string allowed = least == std::numeric_limits<int>::min() ? "an integer" : "an integer from " + std::to_string(least);
+    if (most != std::numeric_limits<int>::max()) allowed += " to " + std::to_string(most);
     if (!value_.is_number_integer()) fail(key_, "is " + shown(), allowed);
     const auto v = value_.get<std::int64_t>();
-    if (v < least || v > std::numeric_limits<int>::max()) fail(key_, "is " + shown(), allowed);
+    if (v < least || v > most) fail(key_, "is " + shown(), allowed);
     return static_cast<int>(v);
   }
   [[nodiscard]] std::string text() const {
@@ -130,29 +138,51 @@ std::string method_file(const Field& method) {
   return method.has("file") ? method["file"].file_name() : method["method"].file_name();
 }
 
+/// The most frames a metrics file may claim: the CLI's --frames limit.
+constexpr int kMaxFrames = 100000;
+
+/// A file a run names must be a regular file inside the run's folder: the names are plain (no
+/// '/', no '..'), and a symbolic link is refused, so that a report never publishes what a link
+/// points to elsewhere. Images must decode and videos must be MP4s before anything is published.
 void require_file(const fs::path& file, const Field& from) {
-  std::error_code ec;
-  if (!fs::is_regular_file(file, ec))
+  const FileKind kind = file_kind(file, false);
+  if (kind == FileKind::missing)
     throw InputError(file.string() + ": missing; " + from.file().string() +
                      " names it (a run's files are published together)");
+  if (kind != FileKind::regular)
+    throw InputError(file.string() + ": is " + std::string(describe(kind)) + "; " + from.file().string() +
+                     " names it; allowed: a regular file inside the run's folder (a report copies no links)");
+  const std::string extension = file.extension().string();
+  if (extension == ".png") {
+    try {
+      if (!check_png_header(file)) throw InputError(file.string() + ": no PNG signature");
+      (void)read_ldr_image(file);
+    } catch (const InputError& e) {
+      throw InputError(std::string(e.what()) + "; " + from.file().string() + " names it as a PNG image");
+    }
+  } else if (extension == ".mp4") {
+    const std::string bytes = read_regular_file(file, "", kMaxBinaryFileBytes);
+    if (bytes.size() < 12 || bytes.compare(4, 4, "ftyp") != 0)
+      throw InputError(file.string() + ": not an MP4 video (no 'ftyp' box); " + from.file().string() + " names it");
+  }
 }
 
 CompareRun read_compare(const Field& root, const fs::path& dir) {
   CompareRun run;
-  run.reference_noise_rmse = root["reference_noise_rmse"].number();
-  run.error_map_scale = root["error_map_scale"].number();
+  run.reference_noise_rmse = root["reference_noise_rmse"].measure();
+  run.error_map_scale = root["error_map_scale"].measure();
   for (const Field& m : root["methods"].some_elements()) {
     CompareRow& r = run.rows.emplace_back();
     r.method = m["method"].text();
     r.file = method_file(m);
-    r.rmse = m["rmse"].number();
-    r.rmse_specular = m["rmse_specular"].number();
+    r.rmse = m["rmse"].measure();
+    r.rmse_specular = m["rmse_specular"].measure();
     r.psnr = m["psnr"].number();
-    r.max_error = m["max_error"].number();
-    r.energy_ratio = m["energy_ratio"].number();
-    r.energy_ratio_error = m["energy_ratio_error"].number();
-    r.energy_ratio_specular = m["energy_ratio_specular"].number();
-    r.energy_ratio_specular_error = m["energy_ratio_specular_error"].number();
+    r.max_error = m["max_error"].measure();
+    r.energy_ratio = m["energy_ratio"].measure();
+    r.energy_ratio_error = m["energy_ratio_error"].measure();
+    r.energy_ratio_specular = m["energy_ratio_specular"].measure();
+    r.energy_ratio_specular_error = m["energy_ratio_specular_error"].measure();
   }
   const int columns = static_cast<int>(run.rows.size()) + 1;
   for (const Field& c : root["crops"].elements()) {
@@ -184,46 +214,45 @@ CompareRun read_compare(const Field& root, const fs::path& dir) {
 
 AnimateRun read_animate(const Field& root, const fs::path& dir) {
   AnimateRun run;
-  run.frames = root["frames"].integer(1);
-  run.reference_noise_rmse = root["reference_noise_rmse"].number();
-  run.flicker_floor = root["flicker_floor"].number();
+  run.frames = root["frames"].integer(1, kMaxFrames);
+  run.reference_noise_rmse = root["reference_noise_rmse"].measure();
+  run.flicker_floor = root["flicker_floor"].measure();
   std::vector<AnimateRun::Video> streams{{"reference", "reference"}};
   for (const Field& m : root["methods"].some_elements()) {
     AnimateRow& r = run.rows.emplace_back();
     r.method = m["method"].text();
     r.file = method_file(m);
-    r.mean_rmse = m["mean_rmse"].number();
-    r.flicker = m["flicker"].number();
-    for (const Field& v : m["rmse_per_frame"].elements()) r.rmse_per_frame.push_back(v.number());
+    r.mean_rmse = m["mean_rmse"].measure();
+    r.flicker = m["flicker"].measure();
+    for (const Field& v : m["rmse_per_frame"].elements()) r.rmse_per_frame.push_back(v.measure());
     if (m.has("flicker_per_frame"))
-      for (const Field& v : m["flicker_per_frame"].elements()) r.flicker_per_frame.push_back(v.number());
+      for (const Field& v : m["flicker_per_frame"].elements()) r.flicker_per_frame.push_back(v.measure());
     streams.push_back({r.method, r.file});
   }
-  std::error_code ec;
+  // animate says whether it encoded videos ("video": "mp4"); then every stream has one, and a
+  // missing one is an error like a missing image. Older outputs: the videos that are there.
+  const bool encoded = root.has("video") && root["video"].text() == "mp4";
   for (const auto& s : streams)
-    if (fs::is_regular_file(dir / (s.file + ".mp4"), ec)) run.videos.push_back(s);
+    if (encoded || file_kind(dir / (s.file + ".mp4"), false) != FileKind::missing) run.videos.push_back(s);
   return run;
 }
 
 BenchRun read_bench(const Field& root) {
   BenchRun run;
-  run.frames = root["frames"].integer(1);
+  run.frames = root["frames"].integer(1, kMaxFrames);
   for (const Field& m : root["methods"].some_elements()) {
     BenchRow& r = run.rows.emplace_back();
     r.method = m["method"].text();  // "(unshaded)" too: bench shows no files by method name
-    r.gpu_ms = m["gpu_ms_median"].number();
-    r.wall_ms = m["wall_ms_median"].number();
+    r.gpu_ms = m["gpu_ms_median"].measure();
+    r.wall_ms = m["wall_ms_median"].measure();
   }
   return run;
 }
 
 json parse_json_file(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string() + ": cannot be read");
-  std::stringstream text;
-  text << in.rdbuf();
+  const std::string text = read_regular_file(file, "", kMaxTextFileBytes);
   try {
-    return json::parse(text.str());
+    return json::parse(text);
   } catch (const json::parse_error& e) {
     throw InputError(file.string() + ": not valid JSON (" + e.what() + "); allowed: the metrics glintlab writes");
   }
@@ -291,7 +320,11 @@ ReportInputs read_report_inputs(const std::vector<fs::path>& inputs) {
         if (it->is_directory(ec)) it.disable_recursion_pending();
         continue;
       }
-      if ((name == "metrics.json" || name == "bench.json") && it->is_regular_file(ec)) files.push_back(it->path());
+      if ((name == "metrics.json" || name == "bench.json") && it->is_regular_file(ec)) {
+        if (it->is_symlink(ec))
+          throw InputError(it->path().string() + ": is a symbolic link; allowed: a run's own metrics file (a report reads no links)");
+        files.push_back(it->path());
+      }
     }
     std::sort(files.begin(), files.end());
     for (const fs::path& file : files) {

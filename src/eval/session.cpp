@@ -150,7 +150,7 @@ ReferenceFrame Session::reference(int frame, const std::vector<const Frame*>& ra
   const Camera cam = at.value_or(camera(frame));
   if (!options_.spp_auto) {
     const auto key = ReferenceCache::key(scene_, cam, width_, height_, settings, *reference_backend_, device_);
-    if (auto cached = cache_.load(key)) return *cached;
+    if (auto cached = cache_.load(key, width_, height_)) return *cached;
     ProgressBar bar("reference " + std::to_string(settings.spp) + " spp, frame " + std::to_string(frame), !options_.quiet);
     ReferenceFrame r =
         render_reference(*reference_backend_, cam, width_, height_, settings, [&](int d, int t) { bar.update(d, t); });
@@ -163,7 +163,7 @@ ReferenceFrame Session::reference(int frame, const std::vector<const Frame*>& ra
   settings.spp = kProgressivePassSpp * 4;  // k = 8; light samples as for 256 spp
   const int k = settings.subpixels();
   const auto key = ReferenceCache::key(scene_, cam, width_, height_, settings, *reference_backend_, device_, true);
-  const auto cached = cache_.load(key);
+  const auto cached = cache_.load(key, width_, height_);
   ReferenceAccumulator acc = cached ? ReferenceAccumulator(*cached, k * k) : ReferenceAccumulator(width_, height_, k * k);
   const int max_passes = options_.max_spp / (k * k);
   ProgressBar bar("reference auto (<= " + std::to_string(options_.max_spp) + " spp), frame " + std::to_string(frame),

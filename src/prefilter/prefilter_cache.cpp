@@ -1,11 +1,11 @@
 #include "prefilter/prefilter_cache.hpp"
 
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
-#include "core/atomic_file.hpp"
+#include "core/cache_entry.hpp"
 #include "core/error.hpp"
+#include "core/file_access.hpp"
 #include "core/hash.hpp"
 #include "prefilter/ndf_precompute.hpp"
 
@@ -14,8 +14,6 @@ namespace glintlab {
 namespace {
 /// Bump when precompute_prefiltered_ndf would give other values for the same inputs.
 constexpr std::uint32_t kPrefilterVersion = 1;
-constexpr char kMagic[8] = {'G', 'L', 'P', 'N', 'D', 'F', '1', '\n'};
-
 std::string header_text(const NormalMap& map, double intrinsic_roughness, const PrefilterSettings& settings) {
   std::ostringstream s;
   s.precision(17);
@@ -23,7 +21,25 @@ std::string header_text(const NormalMap& map, double intrinsic_roughness, const 
     << " intrinsic_roughness=" << intrinsic_roughness << " " << settings.describe();
   return s.str();
 }
+
+/// Why a pyramid read from an entry is not the one asked for, or empty. The header line already
+/// matched; these are the same facts in the binary part, which a damaged entry can contradict.
+std::string mismatch(const PrefilteredNdf& p, const NormalMap& map, double intrinsic_roughness,
+                     const PrefilterSettings& settings) {
+  if (p.width != map.width || p.height != map.height) return "its map size is not the map's";
+  if (p.intrinsic_roughness != intrinsic_roughness) return "its intrinsic roughness differs";
+  if (p.settings.elements_per_texel != settings.elements_per_texel || p.settings.ndf_resolution != settings.ndf_resolution ||
+      p.settings.block_size != settings.block_size || p.settings.cp.rank != settings.cp.rank)
+    return "its settings differ from its header";
+  if (static_cast<int>(p.levels.size()) > settings.max_levels) return "it has more levels than allowed";
+  return {};
+}
 }  // namespace
+
+std::string prefiltered_ndf_built_from(const NormalMap& map, double intrinsic_roughness,
+                                      const PrefilterSettings& settings) {
+  return header_text(map, intrinsic_roughness, settings);
+}
 
 std::string prefiltered_ndf_key(const NormalMap& map, double intrinsic_roughness, const PrefilterSettings& settings) {
   Hasher h;
@@ -41,41 +57,33 @@ PrefilteredNdf load_or_precompute_prefiltered_ndf(const NormalMap& map, double i
   const std::filesystem::path path =
       cache_directory.empty() ? std::filesystem::path()
                               : cache_directory / "prefiltered-ndf" / prefiltered_ndf_key(map, intrinsic_roughness, settings);
+  bool replaceable = true;
   if (!path.empty()) {
-    std::ifstream in(path, std::ios::binary);
-    if (in) {
+    CacheEntryRead entry = read_cache_entry(path, kPrefilteredNdfMagic, header, kMaxBinaryFileBytes);
+    std::string problem = std::move(entry.problem);
+    if (entry.payload) {
       try {
-        char magic[8];
-        std::string text;
-        if (in.read(magic, 8) && std::equal(magic, magic + 8, kMagic) && std::getline(in, text) && text == header) {
-          PrefilteredNdf p = PrefilteredNdf::read(in);
+        std::istringstream in(*entry.payload);
+        PrefilteredNdf p = PrefilteredNdf::read(in);
+        problem = mismatch(p, map, intrinsic_roughness, settings);
+        if (problem.empty()) {
           p.settings = settings;
           return p;
         }
-      } catch (const RuntimeFailure&) {
-        // A damaged entry: rebuilt below.
+      } catch (const RuntimeFailure& e) {
+        problem = e.what();
       }
     }
+    if (!problem.empty()) warn_rebuilding_cache_entry(path, problem);
+    const FileKind kind = file_kind(path, false);
+    replaceable = kind == FileKind::missing || kind == FileKind::regular;
   }
   PrefilteredNdf p = precompute_prefiltered_ndf(map, intrinsic_roughness, settings);
-  if (!path.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(path.parent_path(), ec);
-    if (!ec) {
-      try {
-        AtomicFile file(path);
-        {
-          std::ofstream out(file.temp_path(), std::ios::binary);
-          out.write(kMagic, 8);
-          out << header << '\n';
-          p.write(out);
-          if (!out) throw RuntimeFailure("writing " + path.string());
-        }
-        file.commit();
-      } catch (const RuntimeFailure&) {
-        // An unwritable cache costs a precompute next time, nothing else.
-      }
-    }
+  if (!path.empty() && replaceable) {
+    std::ostringstream out;
+    p.write(out);
+    if (const std::string failed = write_cache_entry(path, kPrefilteredNdfMagic, header, out.str()); !failed.empty())
+      std::fprintf(stderr, "glintlab: warning: cannot store the pyramid in the cache: %s\n", failed.c_str());
   }
   return p;
 }

@@ -210,14 +210,22 @@ T get(std::istream& in) {
   return v;
 }
 template <typename T>
-std::vector<T> get_vector(std::istream& in, std::uint64_t limit) {
+std::vector<T> get_vector(std::istream& in) {
   const auto n = get<std::uint64_t>(in);
-  if (n > limit) throw RuntimeFailure("prefiltered NDF: implausible array size");
+  // The count a file claims is checked against the bytes it holds before anything is allocated.
+  const auto here = in.tellg();
+  in.seekg(0, std::ios::end);
+  const auto left = static_cast<std::uint64_t>(in.tellg() - here);
+  in.seekg(here);
+  if (n > left / sizeof(T)) throw RuntimeFailure("prefiltered NDF: an array of " + std::to_string(n) +
+                                                 " entries in " + std::to_string(left) + " bytes");
   std::vector<T> v(n);
   if (!in.read(reinterpret_cast<char*>(v.data()), static_cast<std::streamsize>(n * sizeof(T))))
     throw RuntimeFailure("prefiltered NDF: truncated");
   return v;
 }
+
+bool finite_positive(double v) { return std::isfinite(v) && v > 0.0; }
 
 }  // namespace
 
@@ -253,24 +261,56 @@ PrefilteredNdf PrefilteredNdf::read(std::istream& in) {
   const auto level_count = get<std::uint64_t>(in);
   if (level_count < 1 || level_count > 16) throw RuntimeFailure("prefiltered NDF: bad level count");
   for (std::uint64_t i = 0; i < level_count; ++i) p.levels.push_back(get<PrefilterLevel>(in));
-  constexpr std::uint64_t kLimit = 1ull << 32;
-  p.footprints = get_vector<FootprintRecord>(in, kLimit);
-  p.group_offsets = get_vector<std::uint32_t>(in, kLimit);
-  p.angular = get_vector<float>(in, kLimit);
-  p.rows = get_vector<float>(in, kLimit);
-  // Every index the queries follow must land inside its array.
-  const std::size_t per_group = static_cast<std::size_t>(4 * p.settings.block_size + 2) * p.rank();
-  for (std::uint32_t off : p.group_offsets)
-    if (off + per_group > p.angular.size()) throw RuntimeFailure("prefiltered NDF: group out of range");
-  for (const FootprintRecord& r : p.footprints) {
-    const auto n = static_cast<std::size_t>(std::popcount(r.mask_lo) + std::popcount(r.mask_hi));
-    if (r.group >= p.group_offsets.size() || (r.first_row + n) * p.rank() > p.rows.size())
-      throw RuntimeFailure("prefiltered NDF: footprint out of range");
-  }
-  const PrefilterLevel& last = p.levels.back();
-  if (last.first_footprint + static_cast<std::size_t>(last.nx) * last.ny != p.footprints.size())
-    throw RuntimeFailure("prefiltered NDF: levels and footprints disagree");
+  p.footprints = get_vector<FootprintRecord>(in);
+  p.group_offsets = get_vector<std::uint32_t>(in);
+  p.angular = get_vector<float>(in);
+  p.rows = get_vector<float>(in);
+  p.check_consistent();
   return p;
+}
+
+void PrefilteredNdf::check_consistent() const {
+  const auto fail = [](const std::string& what) { throw RuntimeFailure("prefiltered NDF: " + what); };
+  const int n = settings.ndf_resolution, b = settings.block_size;
+  if (n < 1 || n > 4096 || b < 1 || n % b != 0 || n / b > 8) fail("bad angular grid");
+  if (rank() < 1 || rank() > 256) fail("bad rank");
+  if (width < 1 || height < 1 || !finite_positive(grid.extent) || !std::isfinite(intrinsic_roughness))
+    fail("bad map size or grid extent");
+  // Every level's footprints and groups follow the level below's; sizes, spacings and sigmas are
+  // finite and positive, sigma growing level by level.
+  std::uint64_t footprint_count = 0, group_count = 0;
+  double sigma_below = 0.0;
+  for (std::size_t i = 0; i < levels.size(); ++i) {
+    const PrefilterLevel& l = levels[i];
+    const std::string level = "level " + std::to_string(i) + ": ";
+    if (!finite_positive(l.sigma) || !(l.sigma > sigma_below)) fail(level + "bad sigma");
+    if (l.nx < 1 || l.ny < 1 || l.nx > width || l.ny > height || !finite_positive(l.spacing.x) ||
+        !finite_positive(l.spacing.y))
+      fail(level + "bad footprint grid");
+    if (l.groups_x < 1 || l.groups_y < 1 || l.groups_x > l.nx || l.groups_y > l.ny) fail(level + "bad group grid");
+    if (l.first_footprint != footprint_count || l.first_group != group_count)
+      fail(level + "does not start where the level below ends");
+    footprint_count += static_cast<std::uint64_t>(l.nx) * static_cast<std::uint64_t>(l.ny);
+    group_count += static_cast<std::uint64_t>(l.groups_x) * static_cast<std::uint64_t>(l.groups_y);
+    sigma_below = l.sigma;
+  }
+  if (footprint_count != footprints.size()) fail("levels and footprints disagree");
+  if (group_count != group_offsets.size()) fail("levels and groups disagree");
+  // Every index the queries follow must land inside its array.
+  const std::size_t per_group = static_cast<std::size_t>(4 * b + 2) * static_cast<std::size_t>(rank());
+  for (std::uint32_t off : group_offsets)
+    if (off + per_group > angular.size()) fail("group out of range");
+  const int blocks = blocks_per_side() * blocks_per_side();
+  for (const FootprintRecord& r : footprints) {
+    const std::uint64_t mask = r.mask_lo | (static_cast<std::uint64_t>(r.mask_hi) << 32);
+    if (blocks < 64 && (mask >> blocks) != 0) fail("footprint keeps a block past the grid");
+    const auto kept = static_cast<std::size_t>(std::popcount(r.mask_lo) + std::popcount(r.mask_hi));
+    if (r.group >= group_offsets.size() || (static_cast<std::size_t>(r.first_row) + kept) * rank() > rows.size())
+      fail("footprint out of range");
+  }
+  for (const std::vector<float>* values : {&angular, &rows})
+    for (float v : *values)
+      if (!std::isfinite(v)) fail("a value is not finite");
 }
 
 }  // namespace glintlab

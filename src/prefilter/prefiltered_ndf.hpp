@@ -108,8 +108,12 @@ class PrefilteredNdf {
   [[nodiscard]] double range_mean(glm::dvec2 centre, double sigma, glm::dvec2 lo, glm::dvec2 hi) const;
 
   void write(std::ostream& out) const;
-  /// Throws RuntimeFailure if the stream does not hold a complete, consistent pyramid.
+  /// Throws RuntimeFailure if the stream (seekable: array sizes are checked against what is left)
+  /// does not hold a complete, consistent pyramid (check_consistent()).
   static PrefilteredNdf read(std::istream& in);
+  /// Throws RuntimeFailure unless every level, index and value is one a precompute can produce:
+  /// levels that follow each other, indices inside their arrays, finite values.
+  void check_consistent() const;
 };
 
 }  // namespace glintlab

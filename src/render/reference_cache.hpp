@@ -24,8 +24,10 @@ class ReferenceCache {
                                          const ReferenceSettings& settings, const ReferenceBackend& backend,
                                          const std::string& renderer, bool progressive = false);
   /// An entry is an EXR (mean, specular, standard error, even and odd passes) and a JSON of its
-  /// passes, written last so that a half-written entry is never read.
-  [[nodiscard]] std::optional<ReferenceFrame> load(std::uint64_t key) const;
+  /// passes and the EXR's checksum, written last so that a half-written entry is never read. An
+  /// entry that is damaged (checksum), foreign (not width x height, pass counts that disagree) or
+  /// holds a non-finite value is reported on stderr and not used: the caller renders it again.
+  [[nodiscard]] std::optional<ReferenceFrame> load(std::uint64_t key, int width, int height) const;
   /// Failures to write are reported on stderr and otherwise ignored: the cache is an optimisation.
   void store(std::uint64_t key, const ReferenceFrame& frame) const;
   [[nodiscard]] bool enabled() const { return !directory_.empty(); }

@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "core/error.hpp"
+#include "core/file_access.hpp"
 #include "scene/gltf/gltf_import.hpp"
 #include "scene/obj_check.hpp"
 
@@ -89,9 +90,7 @@ Mesh load_obj(const std::filesystem::path& path) {
 }  // namespace
 
 Mesh load_mesh_file(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw InputError(path.string() + ": mesh file does not exist or is not a file");
+  require_regular_file(path, "mesh file");
   const auto ext = path.extension().string();
   Mesh mesh;
   if (ext == ".gltf" || ext == ".glb") {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/file_access.hpp"
 
 namespace glintlab {
 
@@ -157,8 +158,7 @@ class ObjChecker {
 }  // namespace
 
 void check_obj_statements(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string() + ": cannot read OBJ file");
+  std::istringstream in(read_regular_file(path, "OBJ file", kMaxTextFileBytes));
   ObjChecker checker(path);
   std::size_t line_number = 0;
   for (std::string line; std::getline(in, line);) {

@@ -9,11 +9,13 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/file_access.hpp"
 #include "scene/gltf/gltf_shape.hpp"
 #include "scene/lights/light_kind.hpp"
 #include "scene/mesh_io.hpp"
 #include "scene/materials/material_parser.hpp"
 #include "scene/scene_loader.hpp"
+#include "scene/toml_nesting.hpp"
 #include "scene/toml_reader.hpp"
 
 namespace glintlab {
@@ -192,6 +194,7 @@ Light parse_light(TomlReader r, const std::filesystem::path& base_dir) {
 }  // namespace
 
 Scene parse_scene(std::string_view text, const std::string& file, const std::filesystem::path& base_dir) {
+  check_toml_key_depth(text, file);
   toml::table root;
   try {
     root = toml::parse(text, file);
@@ -256,9 +259,9 @@ Scene load_scene(const std::string& spec) {
     return scene;
   }
   const std::filesystem::path path(spec);
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw InputError(spec + ": scene file does not exist or is not a file (or use builtin:NAME; see 'glintlab scenes')");
+  if (file_kind(path) == FileKind::missing)
+    throw InputError(spec + ": scene file does not exist (or use builtin:NAME; see 'glintlab scenes')");
+  require_regular_file(path, "scene file");
   if (is_gltf(spec)) {
     // A glTF file alone is the scene of one mesh shape: its materials, lights and first camera.
     std::string file = path.filename().string(), quoted;
@@ -266,11 +269,7 @@ Scene load_scene(const std::string& spec) {
     Scene scene = parse_scene("[[shape]]\ntype = \"mesh\"\nfile = \"" + quoted + "\"\n", spec, path.parent_path());
     return scene;
   }
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  if (!in) throw InputError(spec + ": cannot read scene file");
-  return parse_scene(text.str(), spec, path.parent_path());
+  return parse_scene(read_regular_file(path, "scene file", kMaxTextFileBytes), spec, path.parent_path());
 }
 
 }  // namespace glintlab

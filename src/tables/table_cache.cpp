@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "core/atomic_file.hpp"
+#include "core/file_access.hpp"
 #include "core/hash.hpp"
 
 namespace glintlab {
@@ -76,7 +77,7 @@ std::filesystem::path TableCache::path(const TableSource& source) const {
 }
 
 std::optional<double> TableCache::cached_generation_ms(const TableSource& source) const {
-  if (directory_.empty()) return std::nullopt;
+  if (directory_.empty() || file_kind(path(source), false) != FileKind::regular) return std::nullopt;
   std::ifstream in(path(source), std::ios::binary);
   if (!in) return std::nullopt;
   const auto header = read_matching_header(path(source), source, in);
@@ -86,6 +87,13 @@ std::optional<double> TableCache::cached_generation_ms(const TableSource& source
 std::optional<BuiltTable> TableCache::load(const TableSource& source) const {
   if (directory_.empty()) return std::nullopt;
   const auto file = path(source);
+  // Opened only as a regular file: a FIFO or a device in its place would block or never end.
+  if (const FileKind kind = file_kind(file, false); kind != FileKind::regular) {
+    if (kind != FileKind::missing && observer_.warning)
+      observer_.warning(source, "ignoring the cache entry " + file.string() + " (it is " +
+                                    std::string(describe(kind)) + "); generating the table, and not storing it there");
+    return std::nullopt;
+  }
   std::ifstream in(file, std::ios::binary);
   if (!in) return std::nullopt;
   const auto start = std::chrono::steady_clock::now();
@@ -151,7 +159,9 @@ BuiltTable TableCache::load_or_generate(const TableSource& source) const {
   if (table.values.size() != source.value_count)
     throw std::logic_error("table '" + source.id + "': generate() returned " + std::to_string(table.values.size()) +
                            " values; it declares " + std::to_string(source.value_count));
-  if (!directory_.empty()) store(source, table);
+  if (const FileKind kind = file_kind(path(source), false);
+      !directory_.empty() && (kind == FileKind::missing || kind == FileKind::regular))
+    store(source, table);
   return table;
 }
 

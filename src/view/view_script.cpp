@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/file_access.hpp"
 #include "view/camera_controls.hpp"
 #include "view/viewer.hpp"
 
@@ -156,8 +157,7 @@ WindowRequest run(const ScriptCommand& c, Viewer& viewer) {
 }  // namespace
 
 std::vector<ScriptCommand> read_view_script(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError("--script " + file.string() + ": cannot be read (no such file, or not readable)");
+  std::istringstream in(read_regular_file(file, "--script", kMaxTextFileBytes));
   std::vector<ScriptCommand> commands;
   std::string text;
   for (int line = 1; std::getline(in, text); ++line) {

@@ -10,61 +10,20 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "core/hash.hpp"
 #include "core/image_io.hpp"
-#include "scratch_directory.hpp"
+#include "app/cli_fixture.hpp"
 #include "test_scenes.hpp"
 
 namespace fs = std::filesystem;
-using glintlab::test::ScratchDirectory;
+using glintlab::test::Cli;
+using glintlab::test::CliResult;
+using glintlab::test::read_bytes;
 using glintlab::test::TestScene;
 
 namespace {
 
-struct CliResult {
-  int code;
-  std::string err;
-};
-
-std::string read_bytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 const std::string kScene = TestScene::minimal().film(16, 16).toml();
-
-/// Each test runs glintlab in a scratch directory of its own, with its own reference cache.
-class Cli : public ::testing::Test {
- protected:
-  CliResult run_glintlab(const std::string& args) const {
-    const fs::path err = scratch / "stderr.txt";
-    const std::string cmd = env + " GLINTLAB_CACHE_DIR='" + cache().string() + "' '" GLINTLAB_BINARY "' " + args +
-                            " >/dev/null 2>'" + err.string() + "'";
-    const int status = std::system(cmd.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_bytes(err)};
-  }
-
-  fs::path write(const std::string& name, const std::string& text) const {
-    const fs::path p = scratch / name;
-    std::ofstream(p) << text;
-    return p;
-  }
-
-  fs::path cache() const { return scratch / "cache"; }
-
-  void expect_bad_input(const std::string& args, std::initializer_list<const char*> fragments) const {
-    const fs::path out = scratch / "out-should-not-exist";
-    fs::remove_all(out);
-    const CliResult r = run_glintlab(args + " -o '" + out.string() + "'");
-    EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
-    for (const char* f : fragments) EXPECT_NE(r.err.find(f), std::string::npos) << "'" << f << "' not in: " << r.err;
-    EXPECT_FALSE(fs::exists(out)) << args;
-  }
-
-  ScratchDirectory scratch;
-  std::string env;  ///< variables set for glintlab, "NAME=value ..."
-};
 
 }  // namespace
 
@@ -193,22 +152,47 @@ TEST_F(Cli, ReferenceCacheIsReused) {
   for (const auto& e : fs::directory_iterator(cache())) entries.push_back(e.path());
   ASSERT_EQ(entries.size(), 2u);  // the EXR and its passes' JSON
   const fs::path exr = entries[0].extension() == ".exr" ? entries[0] : entries[1];
+  const fs::path json = fs::path(exr).replace_extension(".json");
+  const nlohmann::json passes = nlohmann::json::parse(read_bytes(json));
+  // Rewrites the entry's EXR from these images and its JSON from `meta`, with the EXR's checksum.
+  const auto store_entry = [&](const glintlab::Image& mean, const glintlab::Image& rest, nlohmann::json meta) {
+    glintlab::write_exr(exr, {{"", &mean}, {"specular", &rest}, {"standard_error", &rest}, {"even_passes", &rest},
+                              {"odd_passes", &rest}});
+    const std::string bytes = read_bytes(exr);
+    glintlab::Hasher h;
+    h.bytes(bytes.data(), bytes.size());
+    meta["exr_checksum"] = h.digest();
+    std::ofstream(json) << meta.dump();
+  };
   // Replace the cached mean by an image no render gives: a run that reads the cache writes it
   // as its reference, a run that renders again would not.
   const glintlab::Image marker(16, 16, glm::vec3(0.25f, 0.5f, 0.75f));
-  const glintlab::Image specular = glintlab::read_exr(exr, "specular"), error = glintlab::read_exr(exr, "standard_error"),
-                        even = glintlab::read_exr(exr, "even_passes"), odd = glintlab::read_exr(exr, "odd_passes");
-  glintlab::write_exr(exr, {{"", &marker}, {"specular", &specular}, {"standard_error", &error},
-                            {"even_passes", &even}, {"odd_passes", &odd}});
+  store_entry(marker, glintlab::read_exr(exr, "specular"), passes);
   ASSERT_EQ(render("second").code, 0);
   EXPECT_TRUE(glintlab::read_exr(scratch / "second" / "reference.exr").pixels() == marker.pixels())
       << "the second run did not take its reference from the cache";
-  // A truncated entry is reported, ignored and replaced: the image is rendered again.
+  // Damaged, foreign or impossible entries are reported, ignored and replaced: the image is
+  // rendered again, equal to the first.
+  const auto expect_rebuilt = [&](const char* problem) {
+    const CliResult again = render("again");
+    ASSERT_EQ(again.code, 0) << again.err;
+    EXPECT_NE(again.err.find("ignoring the cache entry"), std::string::npos) << again.err;
+    EXPECT_NE(again.err.find(problem), std::string::npos) << again.err;
+    EXPECT_EQ(read_bytes(scratch / "first" / "reference.exr"), read_bytes(scratch / "again" / "reference.exr"));
+  };
   fs::resize_file(exr, 100);
-  const CliResult third = render("third");
-  ASSERT_EQ(third.code, 0);
-  EXPECT_NE(third.err.find("ignoring unreadable cache entry"), std::string::npos) << third.err;
-  EXPECT_EQ(read_bytes(scratch / "first" / "reference.exr"), read_bytes(scratch / "third" / "reference.exr"));
+  expect_rebuilt("checksum");
+  const glintlab::Image small(8, 8, glm::vec3(0.5f));
+  store_entry(small, small, passes);
+  expect_rebuilt("not 16x16");
+  nlohmann::json no_specular_passes = passes;
+  no_specular_passes["pass_luminance_specular"] = nlohmann::json::array();
+  store_entry(marker, marker, no_specular_passes);
+  expect_rebuilt("pass counts disagree");
+  glintlab::Image nan_pixel = marker;
+  nan_pixel.pixels()[5].y = std::nanf("");
+  store_entry(nan_pixel, marker, passes);
+  expect_rebuilt("NaN");
   EXPECT_GT(fs::file_size(exr), 100u);
 }
 

@@ -205,6 +205,38 @@ TEST(Report, BadInputExitsTwoNamingTheFileAndKeyAndLeavesTheOldReport) {
   with_metrics([](nlohmann::json& j) { j["crops"][0]["cell"] = 100; });
   expect_refused(quoted(runs), {(runs / "compare" / "worst-region-1.png").string(), "100 px"});
 
+  // Values no glintlab run writes: a negative error.
+  with_metrics([](nlohmann::json& j) { j["methods"][0]["rmse"] = -1e308; });
+  expect_refused(quoted(runs), {metrics.string(), "'methods[0].rmse'", "a finite number >= 0"});
+  std::ofstream(metrics) << good_metrics;
+
+  // A report reads only the run's own regular files: an image that is a link to elsewhere is
+  // refused, not copied; a file that does not decode is refused before anything is published.
+  const fs::path image = runs / "compare" / "conventional.png";
+  fs::rename(image, scratch / "aside.png");
+  std::ofstream(scratch / "secret.txt") << "not for the report\n";
+  fs::create_symlink(scratch / "secret.txt", image);
+  expect_refused(quoted(runs), {image.string(), "symbolic link", "regular file inside the run's folder"});
+  fs::remove(image);
+  std::ofstream(image) << "text, not a PNG\n";
+  expect_refused(quoted(runs), {image.string(), "PNG"});
+  fs::remove(image);
+  fs::rename(scratch / "aside.png", image);
+
+  // A bench.json by hand: a negative time, a frame count past the CLI's limit.
+  const fs::path bench = runs / "bench-by-hand" / "bench.json";
+  fs::create_directories(bench.parent_path());
+  auto write_bench = [&](const std::string& frames, const std::string& wall_ms) {
+    std::ofstream(bench) << R"({"scene": "builtin:spheres", "width": 48, "height": 32, "frames": )" << frames
+                         << R"(, "methods": [{"method": "conventional", "gpu_ms_median": 1.0, "wall_ms_median": )"
+                         << wall_ms << "}]}";
+  };
+  write_bench("2", "-3");
+  expect_refused(quoted(runs), {bench.string(), "'methods[0].wall_ms_median'", "-3"});
+  write_bench("1000000000", "3");
+  expect_refused(quoted(runs), {bench.string(), "'frames'", "1 to 100000"});
+  fs::remove_all(bench.parent_path());
+
   // A good report, then bad input again: the report stays as it was.
   std::ofstream(metrics) << good_metrics;
   ASSERT_EQ(run_glintlab("report -o " + quoted(out) + " " + quoted(runs), home).code, 0);

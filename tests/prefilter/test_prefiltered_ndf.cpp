@@ -2,11 +2,15 @@
 // NDF images it compresses and against brute-force sums, its mass, continuity, limits and cache.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <random>
 #include <sstream>
 
+#include "core/cache_entry.hpp"
 #include "prefilter/ndf_precompute.hpp"
 #include "prefilter/position_normal.hpp"
 #include "prefilter/prefilter_cache.hpp"
@@ -182,6 +186,77 @@ TEST(PrefilteredNdf, CacheRoundTripsAndRebuildsADamagedEntry) {
   const PrefilteredNdf c = load_or_precompute_prefiltered_ndf(bumps(), 0.03, s, dir.path());
   EXPECT_EQ(a.rows, c.rows);
   EXPECT_NE(prefiltered_ndf_key(bumps(), 0.03, s), prefiltered_ndf_key(bumps(), 0.031, s));
+}
+
+/// Entries that a checksum cannot catch (a consistent frame around wrong bytes, as a bug or a
+/// hostile writer makes them) and special files: each one is reported, and the pyramid is rebuilt
+/// equal to the precompute's.
+TEST(PrefilteredNdf, CacheRebuildsEveryInconsistentOrSpecialEntry) {
+  const test::ScratchDirectory dir;
+  const PrefilterSettings s = small_settings();
+  const auto file = dir.path() / "prefiltered-ndf" / prefiltered_ndf_key(bumps(), 0.03, s);
+  const std::string built_from = prefiltered_ndf_built_from(bumps(), 0.03, s);
+  const PrefilteredNdf& good = pyramid();
+  auto store = [&](const PrefilteredNdf& p) {
+    std::ostringstream bytes;
+    p.write(bytes);
+    ASSERT_EQ(write_cache_entry(file, kPrefilteredNdfMagic, built_from, bytes.str()), "");
+  };
+  auto expect_rebuilt = [&](const char* case_name, const char* problem) {
+    ::testing::internal::CaptureStderr();
+    const PrefilteredNdf p = load_or_precompute_prefiltered_ndf(bumps(), 0.03, s, dir.path());
+    const std::string err = ::testing::internal::GetCapturedStderr();
+    EXPECT_NE(err.find("ignoring the cache entry"), std::string::npos) << case_name << ": " << err;
+    EXPECT_NE(err.find(problem), std::string::npos) << case_name << ": " << err;
+    EXPECT_EQ(p.rows, good.rows) << case_name;
+    EXPECT_EQ(p.footprints.size(), good.footprints.size()) << case_name;
+  };
+  PrefilteredNdf bad = good;
+  bad.levels[0].nx = 1 << 30;  // a huge footprint count on level 0
+  store(bad);
+  expect_rebuilt("huge level", "bad footprint grid");
+  bad = good;
+  bad.levels[0].first_footprint = 7;
+  store(bad);
+  expect_rebuilt("bad first footprint", "does not start where");
+  bad = good;
+  bad.levels[0].sigma = std::nan("");
+  store(bad);
+  expect_rebuilt("NaN sigma", "bad sigma");
+  bad = good;
+  bad.rows[3] = std::nanf("");
+  store(bad);
+  expect_rebuilt("NaN value", "not finite");
+  bad = good;
+  bad.width = 64;
+  store(bad);
+  expect_rebuilt("other map size", "map size");
+  // An array size of 2^32 in a few bytes: refused before anything is allocated.
+  std::ostringstream bytes;
+  good.write(bytes);
+  std::string huge = bytes.str();
+  // PrefilteredNdf::write: four ints, the grid's extent, width and height, two doubles, the level
+  // count, the levels, then the footprints' count.
+  const std::size_t footprint_count_at = 6 * sizeof(int) + 3 * sizeof(double) + sizeof(std::uint64_t) +
+                                         good.levels.size() * sizeof(PrefilterLevel);
+  const std::uint64_t count = std::uint64_t{1} << 32;
+  ASSERT_LT(footprint_count_at + 8, huge.size());
+  std::memcpy(huge.data() + footprint_count_at, &count, sizeof count);
+  ASSERT_EQ(write_cache_entry(file, kPrefilteredNdfMagic, built_from, huge), "");
+  expect_rebuilt("huge array", "prefiltered NDF");
+  // One byte flipped: the checksum.
+  store(good);
+  {
+    std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
+    f.seekp(static_cast<std::streamoff>(std::filesystem::file_size(file) / 2));
+    f.put('\x5a');
+  }
+  expect_rebuilt("flipped byte", "checksum");
+  // A FIFO in the entry's place: neither opened (it would block) nor replaced.
+  std::filesystem::remove(file);
+  ASSERT_EQ(::mkfifo(file.c_str(), 0600), 0);
+  expect_rebuilt("FIFO", "FIFO");
+  EXPECT_TRUE(std::filesystem::is_fifo(file));
 }
 
 TEST(PrefilteredNdf, PackedLayoutPointsAtEachMaterialsPyramid) {

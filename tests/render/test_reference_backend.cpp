@@ -95,10 +95,10 @@ TEST(ReferenceBackend, CachedFrameIsOnlyFoundUnderItsBackendsKey) {
     FlatPasses a("a"), b("b");
     const ReferenceFrame frame = render_reference(a, scene.camera, 4, 4, settings);
     cache.store(ReferenceCache::key(scene, scene.camera, 4, 4, settings, a, "device"), frame);
-    const auto hit = cache.load(ReferenceCache::key(scene, scene.camera, 4, 4, settings, a, "device"));
+    const auto hit = cache.load(ReferenceCache::key(scene, scene.camera, 4, 4, settings, a, "device"), 4, 4);
     ASSERT_TRUE(hit.has_value());
     EXPECT_EQ(hit->mean.total.at(1, 1), frame.mean.total.at(1, 1));
-    EXPECT_FALSE(cache.load(ReferenceCache::key(scene, scene.camera, 4, 4, settings, b, "device")).has_value());
+    EXPECT_FALSE(cache.load(ReferenceCache::key(scene, scene.camera, 4, 4, settings, b, "device"), 4, 4).has_value());
   }
 }
 

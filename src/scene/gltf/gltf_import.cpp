@@ -14,6 +14,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <map>
 
+#include "core/file_access.hpp"
 #include "scene/gltf/gltf_model.hpp"
 #include "scene/lights/light_kind.hpp"
 
@@ -70,19 +71,16 @@ bool regular_file_exists(const std::string& path, void*) {
 
 std::string path_as_written(const std::string& path, void*) { return path; }
 
-bool read_regular_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    if (err) *err += "'" + path + "' is not a regular file\n";
+/// Every file tinygltf opens (the glTF, its buffers and images) goes through glintlab's one rule.
+bool read_for_tinygltf(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+  try {
+    const std::string bytes = read_regular_file(path, "", kMaxBinaryFileBytes);
+    out->assign(bytes.begin(), bytes.end());
+    return true;
+  } catch (const InputError& e) {
+    if (err) *err += std::string(e.what()) + "\n";
     return false;
   }
-  std::ifstream in(path, std::ios::binary);
-  out->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  if (in.bad()) {
-    if (err) *err += "cannot read '" + path + "'\n";
-    return false;
-  }
-  return true;
 }
 
 bool refuse_writes(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {  // never called
@@ -92,7 +90,7 @@ bool refuse_writes(std::string* err, const std::string&, const std::vector<unsig
 
 void configure(tinygltf::TinyGLTF& loader) {
   loader.SetImageLoader(decode_image, nullptr);
-  loader.SetFsCallbacks({regular_file_exists, path_as_written, read_regular_file, refuse_writes, nullptr});
+  loader.SetFsCallbacks({regular_file_exists, path_as_written, read_for_tinygltf, refuse_writes, nullptr});
 }
 
 template <typename T>
@@ -433,9 +431,7 @@ GltfAsset import_model(bool ok, const tinygltf::Model& model, const std::string&
 }  // namespace
 
 GltfAsset import_gltf(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw InputError(path.string() + ": glTF file does not exist or is not a file");
+  require_regular_file(path, "glTF file");
   tinygltf::TinyGLTF loader;
   configure(loader);
   tinygltf::Model model;

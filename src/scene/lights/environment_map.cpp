@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/file_access.hpp"
 #include "core/image_io.hpp"
 
 namespace glintlab {
@@ -102,9 +103,10 @@ EnvironmentMap load_environment_map(const std::filesystem::path& path) {
   const std::string name = path.string();
   const std::string allowed = "allowed: an OpenEXR lat-long map, twice as wide as it is high, at least " +
                               std::to_string(kMinEnvironmentWidth) + " x " + std::to_string(kMinEnvironmentWidth / 2);
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error))
+  if (file_kind(path) == FileKind::missing)
     throw InputError(name + ": environment map not found (no such file); " + allowed);
+  if (const FileKind kind = file_kind(path); kind != FileKind::regular)
+    throw InputError(name + ": environment map is " + std::string(describe(kind)) + "; " + allowed);
   Image image;
   try {
     image = read_exr(path);

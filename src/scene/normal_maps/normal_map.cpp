@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/file_access.hpp"
 #include "core/image_io.hpp"
 #include "scene/normal_maps/bump_waves.hpp"
 #include "scene/normal_maps/parallel_rows.hpp"
@@ -34,11 +35,32 @@ const char* refusal(glm::vec3 n) {
   return nullptr;
 }
 
+/// An EXR whose every x and y is >= 0 and whose 2 v - 1 has unit length holds 0.5 (n + 1), the
+/// PNG encoding (a flat texel (0.5, 0.5, 1) has length 1.22, inside the per-texel limits).
+bool looks_offset_encoded(const Image& img) {
+  double raw_length = 0.0, decoded_length = 0.0;
+  for (const glm::vec3& v : img.pixels()) {
+    if (v.x < 0.0f || v.y < 0.0f) return false;
+    raw_length += glm::length(v);
+    decoded_length += glm::length(2.0f * v - 1.0f);
+  }
+  const double n = static_cast<double>(img.pixel_count());
+  return std::abs(decoded_length / n - 1.0) < 0.05 && std::abs(raw_length / n - 1.0) > 0.1;
+}
+
 }  // namespace
 
 NormalMap load_normal_map(const std::filesystem::path& path) {
+  require_regular_file(path, "normal map");
   const bool raw = is_exr(path);
-  const Image img = raw ? read_exr(path) : read_ldr_image(path);
+  int channels = 3;
+  const Image img = raw ? read_exr(path) : read_ldr_image(path, &channels);
+  if (channels < 3)
+    throw InputError(path.string() + ": a greyscale image (" + std::to_string(channels) +
+                     (channels == 1 ? " channel" : " channels") + "); allowed: an RGB normal map (x, y, z in R, G, B)");
+  if (raw && looks_offset_encoded(img))
+    throw InputError(path.string() + ": holds 0.5 (n + 1) (every x and y >= 0, and 2 v - 1 has unit length); "
+                     "allowed: an EXR's R, G, B are the normal's raw components (-1 .. 1), or a PNG in 0.5 (n + 1)");
   const int w = img.width(), h = img.height();
   NormalMap map{w, h, {}, "file " + path.filename().string()};
   map.normals.resize(img.pixel_count());

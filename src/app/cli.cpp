@@ -208,7 +208,7 @@ int run_cli(int argc, char** argv) {
   add_common(bench, bench_o, true);
   int bench_frames = 30, bench_warmup = 3;
   bench->add_option("--bench-frames", bench_frames, "timed frames per method")->default_str("30")->check(CLI::Range(1, 100000));
-  bench->add_option("--warmup", bench_warmup, "untimed frames first")->default_str("3")->check(CLI::Range(0, 1000));
+  bench->add_option("--warmup", bench_warmup, "untimed frames first (at least one is drawn: it compiles the programs)")->default_str("3")->check(CLI::Range(0, 1000));
   bench->add_option("-o,--out", bench_o.out, "also write bench.json into this directory");
 
   CommonOptions view_o;

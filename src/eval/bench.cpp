@@ -32,8 +32,10 @@ std::vector<BenchResult> run_bench(Session& session, const std::vector<MethodCho
     else
       session.renderer().draw_module("passes/unshaded.glsl", {}, camera, session.width(), session.height());
   };
+  // At least one untimed frame each, even with --warmup 0: the first draw compiles the programs,
+  // and llvmpipe's time query around a context's first draws reports hours.
   for (std::size_t k = 0; k < count; ++k)
-    for (int i = 0; i < warmup; ++i) draw(k);
+    for (int i = 0; i < std::max(warmup, 1); ++i) draw(k);
   finish_gl_work();
   // Methods take turns frame by frame, so that drift of the machine's speed affects them alike
   // and the ratios between them are fair.

@@ -6,6 +6,8 @@
 #include <optional>
 #include <string>
 
+#include "core/available_memory.hpp"  // available_memory(), format_bytes()
+
 namespace glintlab {
 
 struct Scene;
@@ -31,17 +33,9 @@ struct MemoryEstimate {
 /// The peak memory of `workload` on a width x height film of `scene`.
 MemoryEstimate estimate_run_memory(const Workload& workload, int width, int height, const Scene& scene);
 
-/// The memory a run may use: the environment's GLINTLAB_MEMORY_MIB when set, else the least of
-/// /proc/meminfo's MemAvailable and the cgroup's limit less its usage; nullopt when unknown.
-/// Throws InputError for a malformed GLINTLAB_MEMORY_MIB.
-std::optional<std::uint64_t> available_memory();
-
 /// Throws InputError when `need` exceeds `available`, naming the film, the method count, the
 /// scene's share, what it would need and what is allowed.
 void require_memory(const MemoryEstimate& need, const Workload& workload, int width, int height,
                     std::uint64_t available);
-
-/// "1.50 GiB", "12.0 MiB": sizes in messages.
-std::string format_bytes(std::uint64_t bytes);
 
 }  // namespace glintlab

@@ -44,6 +44,7 @@ std::vector<ParamDecl> prefilter_params() {
   for (const PrefilterParam& p : prefilter_param_table()) {
     ParamDecl d{p.name, static_cast<float>(p.field(defaults)), p.min, p.max, p.description};
     d.host_only = true;
+    d.integer = true;
     params.push_back(std::move(d));
   }
   return params;

@@ -266,8 +266,15 @@ Scene load_scene(const std::string& spec) {
     // A glTF file alone is the scene of one mesh shape: its materials, lights and first camera.
     std::string file = path.filename().string(), quoted;
     for (char ch : file) quoted += (ch == '"' || ch == '\\') ? std::string("\\") + ch : std::string(1, ch);
-    Scene scene = parse_scene("[[shape]]\ntype = \"mesh\"\nfile = \"" + quoted + "\"\n", spec, path.parent_path());
-    return scene;
+    try {
+      return parse_scene("[[shape]]\ntype = \"mesh\"\nfile = \"" + quoted + "\"\n", spec, path.parent_path());
+    } catch (const InputError& e) {
+      // The importer names the file itself; the one-shape scene's own place ("x.gltf:3: [[shape]]
+      // #1 key 'file'") is no line of any file the user has.
+      const std::string message = e.what();
+      if (const auto own = message.find(spec + ": ", 1); own != std::string::npos) throw InputError(message.substr(own));
+      throw;
+    }
   }
   return parse_scene(read_regular_file(path, "scene file", kMaxTextFileBytes), spec, path.parent_path());
 }

@@ -1,6 +1,7 @@
 #include "scene/toml_reader.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <sstream>
 
@@ -19,7 +20,8 @@ std::string describe(const toml::node& node) {
     s << "an array of " << node.as_array()->size();
   } else {
     node.visit([&](const auto& v) {
-      if constexpr (toml::is_number<decltype(v)> || toml::is_boolean<decltype(v)>) s << v;
+      if constexpr (toml::is_floating_point<decltype(v)>) s << number_text(v.get());
+      else if constexpr (toml::is_number<decltype(v)> || toml::is_boolean<decltype(v)>) s << v;
     });
   }
   return s.str();
@@ -33,17 +35,14 @@ std::string join(const std::vector<std::string>& v) {
 
 }  // namespace
 
-std::string range_text(double min, double max) {
-  std::ostringstream s;
-  s << min << " .. " << max;
-  return s.str();
+std::string number_text(double value) {
+  // The shortest text that reads back as the value: 1073741824, not 1.07374e+09; 360.0001, not 360.
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+  return std::string(text, end);
 }
 
-std::string number_text(double value) {
-  std::ostringstream s;
-  s << value;
-  return s.str();
-}
+std::string range_text(double min, double max) { return number_text(min) + " .. " + number_text(max); }
 
 TomlReader::TomlReader(const toml::table& table, std::string file, std::string context)
     : table_(table), file_(std::move(file)), context_(std::move(context)) {}
@@ -80,9 +79,7 @@ double TomlReader::as_number(const std::string& key, const toml::node& node, dou
     fail(key, "value " + describe(node) + " is not a number; allowed: " + range_text(min, max));
   }
   if (!std::isfinite(v) || v < min || v > max) {
-    std::ostringstream s;
-    s << "value " << v << " is out of range; allowed: " << range_text(min, max);
-    fail(key, s.str());
+    fail(key, "value " + number_text(v) + " is out of range; allowed: " + range_text(min, max));
   }
   return v;
 }

@@ -30,6 +30,8 @@ struct ParamDecl {
   /// A setting of the data the renderer prepares for the method (deng2022's precompute), read on
   /// the host and never by the module: no uniform is generated for it.
   bool host_only = false;
+  /// A count (a rank, a resolution): a value with a fraction is refused, never rounded.
+  bool integer = false;
 
   [[nodiscard]] bool is_enumeration() const { return !choices.empty(); }
   /// "0 .. 1", or "a|b|c" for an enumeration.

@@ -169,7 +169,7 @@ std::string choice_define(const std::string& param, const std::string& choice) {
 std::string ParamDecl::allowed() const {
   std::ostringstream out;
   if (choices.empty()) {
-    out << min << " .. " << max;
+    out << (integer ? "an integer " : "") << min << " .. " << max;
   } else {
     for (std::size_t i = 0; i < choices.size(); ++i) out << (i ? "|" : "") << choices[i];
   }
@@ -267,6 +267,8 @@ ParamValues resolve_params(const MethodDescriptor& method, const std::map<std::s
     const std::string what = p->choices.empty() ? "not a number" : "not a choice";
     if (used != text.size() || text.empty() || !std::isfinite(v))
       throw InputError(origin + " " + name + "=" + text + ": " + what + "; allowed: " + p->allowed());
+    if (p->integer && v != std::floor(v))
+      throw InputError(origin + " " + name + "=" + text + ": not an integer; allowed: " + p->allowed());
     if (v < p->min || v > p->max || (!p->choices.empty() && v != std::floor(v)))
       throw InputError(origin + " " + name + "=" + text + ": out of range for '" + method.id +
                        "'; allowed: " + p->allowed());

@@ -11,6 +11,7 @@
 #include <imgui_stdlib.h>
 
 #include "core/error.hpp"
+#include "view/view_script.hpp"
 #include "shading/registry.hpp"
 #include "view/camera_controls.hpp"
 
@@ -111,7 +112,7 @@ void ViewPanels::side_panel(Viewer& viewer) {
     }
     ImGui::Checkbox("magnifier (M)", &magnifier_);
     ImGui::SameLine();
-    ImGui::SliderInt("zoom", &magnifier_zoom_, 2, 32);
+    ImGui::SliderInt("zoom", &magnifier_zoom_, kMinMagnifierZoom, kMaxMagnifierZoom);
   }
 
   if (ImGui::CollapsingHeader("Frame time", ImGuiTreeNodeFlags_DefaultOpen)) {
@@ -230,7 +231,7 @@ void ViewPanels::picture(Viewer& viewer) {
 }
 
 void ViewPanels::magnifier(Viewer& viewer, float film_x, float film_y) {
-  const int zoom = pinned_ ? std::max(2, pinned_->z) : magnifier_zoom_;
+  const int zoom = pinned_ ? std::max(kMinMagnifierZoom, pinned_->z) : magnifier_zoom_;
   const float half = kMagnifierSide / static_cast<float>(zoom) / 2.0f;  // film pixels
   // Where it looks, outlined on the picture.
   ImGui::GetBackgroundDrawList()->AddRect(

@@ -93,11 +93,18 @@ void check(const ScriptCommand& c) {
   if ((v == "param" || v == "compare-param") && c.args[0].find('=') == std::string::npos)
     throw InputError(where(c) + v + " '" + c.args[0] + "': expected NAME=VALUE");
   if (v == "error-overlay" || v == "continuous") on_off(c, 0);
-  if (v == "error-overlay" && c.args.size() == 2) number(c, 1);
+  if (v == "error-overlay" && c.args.size() == 2 && !(number(c, 1) >= 0.0f && number(c, 1) <= 1.0f))
+    throw InputError(where(c) + "error-overlay: opacity " + c.args[1] + "; allowed: 0 .. 1");
   if (v == "magnify" && !(c.args.size() == 1 && c.args[0] == "off") && c.args.size() != 3)
     throw InputError(where(c) + "magnify: usage: " + find_verb(v)->usage);
-  if (v == "magnify" && c.args.size() == 3)
+  if (v == "magnify" && c.args.size() == 3) {
     for (std::size_t i = 0; i < 3; ++i) integer(c, i);
+    if (integer(c, 0) < 0 || integer(c, 1) < 0)
+      throw InputError(where(c) + "magnify " + c.args[0] + " " + c.args[1] + ": allowed: a film pixel, 0 or more");
+    if (integer(c, 2) < kMinMagnifierZoom || integer(c, 2) > kMaxMagnifierZoom)
+      throw InputError(where(c) + "magnify: zoom " + c.args[2] + "; allowed: " + std::to_string(kMinMagnifierZoom) +
+                       " .. " + std::to_string(kMaxMagnifierZoom));
+  }
   if (v == "frame" || v == "wait") integer(c, 0);
   if (v == "wait" && integer(c, 0) < 0) throw InputError(where(c) + "wait " + c.args[0] + ": allowed: 0 or more frames");
   if (v == "split" || v == "dolly" || v == "exposure" || v == "bloom") number(c, 0);
@@ -144,6 +151,10 @@ WindowRequest run(const ScriptCommand& c, Viewer& viewer) {
   else if (v == "continuous") viewer.set_continuous(on_off(c, 0));
   else if (v == "magnify") {
     if (a.size() == 1) request.unpin_magnifier = true;
+    else if (integer(c, 0) >= viewer.width() || integer(c, 1) >= viewer.height())
+      throw InputError("magnify " + a[0] + " " + a[1] + ": outside the film of " + std::to_string(viewer.width()) + "x" +
+                       std::to_string(viewer.height()) + "; allowed: x 0 .. " + std::to_string(viewer.width() - 1) +
+                       ", y 0 .. " + std::to_string(viewer.height() - 1));
     else request.magnify = glm::ivec3(integer(c, 0), integer(c, 1), integer(c, 2));
   } else if (v == "screenshot") {
     const std::string exr = viewer.screenshot(a[0]);

@@ -13,6 +13,10 @@ namespace glintlab {
 
 class Viewer;
 
+/// The magnifier's zooms (its slider's range, and `magnify X Y ZOOM`'s).
+inline constexpr int kMinMagnifierZoom = 2;
+inline constexpr int kMaxMagnifierZoom = 32;
+
 struct ScriptCommand {
   std::filesystem::path file;
   int line = 0;

@@ -312,3 +312,15 @@ TEST_F(Cli, BadEnvironmentMapsExitWith2AndWriteNothing) {
                        "'",
                    {"two-environments.toml", "at most one"});
 }
+
+TEST_F(Cli, BenchWithoutWarmUpTimesItsFirstFrameRight) {
+  // The GPU works inside the wall-clock interval of each frame, so its time cannot exceed it; the
+  // first timed frame of a run used to report the time since llvmpipe's clock's epoch (7e6 ms).
+  const fs::path out = scratch / "bench";
+  const CliResult r = run_glintlab("bench -q --scene '" + write("s.toml", kScene).string() +
+                                   "' --methods conventional --bench-frames 1 --warmup 0 -o '" + out.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json bench = nlohmann::json::parse(read_bytes(out / "bench.json"));
+  for (const auto& m : bench.at("methods"))
+    EXPECT_LE(m.at("gpu_ms_median").get<double>(), m.at("wall_ms_median").get<double>() + 1.0) << m.dump();
+}

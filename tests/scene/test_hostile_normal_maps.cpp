@@ -85,13 +85,15 @@ void chunk(std::vector<unsigned char>& png, const char* type, const std::vector<
   put32(png, crc32(body.data(), body.size()));
 }
 
-/// A 16-bit RGB PNG of w x h pixels, rgb[(y w + x) * 3 + c], row 0 at the top.
-void write_png16(const std::filesystem::path& path, int w, int h, const std::vector<std::uint16_t>& rgb) {
+/// A 16-bit PNG of w x h pixels of `channels` (3: RGB, 1: grey), rgb[(y w + x) * channels + c],
+/// row 0 at the top.
+void write_png16(const std::filesystem::path& path, int w, int h, const std::vector<std::uint16_t>& rgb,
+                 int channels = 3) {
   std::vector<unsigned char> raw;
   for (int y = 0; y < h; ++y) {
     raw.push_back(0);  // filter: none
-    for (int i = 0; i < w * 3; ++i) {
-      const std::uint16_t v = rgb[static_cast<std::size_t>(y * w * 3 + i)];
+    for (int i = 0; i < w * channels; ++i) {
+      const std::uint16_t v = rgb[static_cast<std::size_t>(y * w * channels + i)];
       raw.push_back(static_cast<unsigned char>(v >> 8));
       raw.push_back(static_cast<unsigned char>(v & 0xff));
     }
@@ -109,7 +111,7 @@ void write_png16(const std::filesystem::path& path, int w, int h, const std::vec
   std::vector<unsigned char> ihdr;
   put32(ihdr, static_cast<std::uint32_t>(w));
   put32(ihdr, static_cast<std::uint32_t>(h));
-  ihdr.insert(ihdr.end(), {16, 2, 0, 0, 0});  // 16 bits, RGB
+  ihdr.insert(ihdr.end(), {16, static_cast<unsigned char>(channels == 3 ? 2 : 0), 0, 0, 0});  // 16 bits, RGB or grey
   chunk(png, "IHDR", ihdr);
   chunk(png, "IDAT", z);
   chunk(png, "IEND", {});
@@ -168,6 +170,31 @@ TEST(NormalMapFiles, SixteenBitPngKeepsItsLowByte) {
     EXPECT_LT(glm::length(m.normals[i] - glm::normalize(2.0f * c - 1.0f)), 1e-6f) << i;
   }
   EXPECT_GT(m.normals[1].x - m.normals[0].x, 0.005f);
+}
+
+TEST(HostileNormalMaps, OffsetEncodedExrsAndGreyscaleImagesAreRefused) {
+  const test::ScratchDirectory dir;
+  // 0.5 (n + 1) of unit normals, as a PNG would hold them: every texel's length is within the
+  // per-texel limits ((0.5, 0.5, 1) is 1.22), so only the whole map tells.
+  std::vector<float> encoded, raw_positive;
+  for (const glm::vec3 n : {glm::vec3(0, 0, 1), glm::normalize(glm::vec3(0.3f, -0.2f, 0.9f)),
+                            glm::normalize(glm::vec3(-0.4f, 0.1f, 0.8f)), glm::vec3(0, 0, 1)}) {
+    const glm::vec3 e = 0.5f * (n + 1.0f), p = glm::normalize(glm::abs(n) + glm::vec3(0.0f, 0.0f, 0.1f));
+    encoded.insert(encoded.end(), {e.x, e.y, e.z});
+    raw_positive.insert(raw_positive.end(), {p.x, p.y, p.z});
+  }
+  write_channels_exr(dir / "encoded.exr", 2, 2, "RGB", encoded);
+  const std::string message = message_of(dir / "encoded.exr");
+  for (const char* part : {"encoded.exr", "0.5 (n + 1)", "raw components"})
+    EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' not in: " << message;
+  // Raw normals that all lean to +x and +y are normals, not an encoding.
+  write_channels_exr(dir / "raw.exr", 2, 2, "RGB", raw_positive);
+  EXPECT_EQ(message_of(dir / "raw.exr"), "no InputError");
+  // A greyscale image has one value for x, y and z.
+  write_png16(dir / "grey16.png", 2, 1, {0x8000, 0xffff}, 1);
+  const std::string grey = message_of(dir / "grey16.png");
+  for (const char* part : {"grey16.png", "greyscale", "RGB"})
+    EXPECT_NE(grey.find(part), std::string::npos) << "'" << part << "' not in: " << grey;
 }
 
 TEST(HostileNormalMaps, ExrTexelsThatAreNoNormalsAreNamed) {

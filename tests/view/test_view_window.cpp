@@ -179,6 +179,11 @@ TEST_F(View, AnUnknownMethodOrFrameIsExit2) {
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("s.txt:1:"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("no-such-method"), std::string::npos) << r.err;
+  // A magnifier pinned outside the film is known only once the film is: refused at its line.
+  const fs::path outside = write("outside.txt", "magnify 100000 3 8\n");
+  const CommandResult magnify = run(under_xvfb("view " + kScene + " --script '" + outside.string() + "'"));
+  EXPECT_EQ(magnify.code, 2) << magnify.err;
+  EXPECT_NE(magnify.err.find("outside.txt:1: magnify 100000 3: outside the film"), std::string::npos) << magnify.err;
   const CommandResult frame = run(under_xvfb("view " + kScene + " --method lean --frame 999"));
   EXPECT_EQ(frame.code, 2) << frame.err;
   EXPECT_NE(frame.err.find("--frame 999: allowed: 0 .. "), std::string::npos) << frame.err;

@@ -15,6 +15,7 @@
 #include <map>
 
 #include "core/file_access.hpp"
+#include "scene/gltf/gltf_json_types.hpp"
 #include "scene/gltf/gltf_model.hpp"
 #include "scene/lights/light_kind.hpp"
 
@@ -40,6 +41,11 @@ bool decode_image(tinygltf::Image* image, const int index, std::string* err, std
     if (err) *err += "image " + std::to_string(index) + ": " + why + "\n";
     return false;
   };
+  const std::string_view head(reinterpret_cast<const char*>(bytes), static_cast<std::size_t>(std::max(size, 0)));
+  if (head.starts_with("\xabKTX 20\xbb"))
+    return fail("is a KTX2 texture (KHR_texture_basisu, which glintlab does not implement); allowed: PNG, JPEG, TGA or BMP");
+  if (head.size() >= 12 && head.starts_with("RIFF") && head.substr(8, 4) == "WEBP")
+    return fail("is a WebP image (EXT_texture_webp, which glintlab does not implement); allowed: PNG, JPEG, TGA or BMP");
   if (!stbi_info_from_memory(bytes, size, &w, &h, &channels))
     return fail(std::string("cannot decode (") + (stbi_failure_reason() ? stbi_failure_reason() : "unknown") +
                 "); allowed: PNG, JPEG, TGA or BMP");
@@ -205,9 +211,15 @@ Mesh import_primitive(const ImportContext& c, const tinygltf::Primitive& prim, c
     part.tangents = read_accessor<glm::vec4>(c, it->second, 4, "TANGENT");
     require_count(c, part.tangents, part.positions.size(), it->second, "TANGENT");
     require_finite(c, part.tangents, it->second, "TANGENT");
-    for (auto& t : part.tangents) {
+    for (std::size_t i = 0; i < part.tangents.size(); ++i) {
+      glm::vec4& t = part.tangents[i];
       const glm::vec3 xyz(t);
-      t = glm::vec4(glm::dot(xyz, xyz) > 0 ? glm::normalize(xyz) : glm::vec3(1, 0, 0), t.w < 0.0f ? -1.0f : 1.0f);
+      // A tangent along its normal leaves the tangent frame undefined (NaN in every shader).
+      const float across = glm::length(glm::cross(part.normals[i], xyz));
+      if (!(across > 1e-6f * glm::length(xyz)) || !(glm::dot(xyz, xyz) > 0.0f))
+        c.fail("accessor " + std::to_string(it->second) + " (TANGENT) element " + std::to_string(i) +
+               " is zero or parallel to its NORMAL; allowed: a tangent across the normal");
+      t = glm::vec4(glm::normalize(xyz), t.w < 0.0f ? -1.0f : 1.0f);
     }
   } else {
     compute_tangents(part);
@@ -352,7 +364,8 @@ class Importer {
     } else {
       const double yfov = g.perspective.yfov;
       if (!(yfov > 0.0 && yfov < 3.1241))
-        c_.fail(where + " yfov has value " + std::to_string(yfov) + "; allowed: 0 to 179 degrees in radians");
+        c_.fail(where + " yfov has value " + std::to_string(yfov) +
+                "; allowed: more than 0 and less than 3.1241 (radians: 179 degrees)");
       cam.fov_y_degrees = static_cast<float>(glm::degrees(yfov));
       znear = g.perspective.znear;
       zfar = g.perspective.zfar;  // 0: infinite, which glintlab replaces by its default far plane
@@ -420,9 +433,16 @@ class Importer {
 
 GltfAsset import_model(bool ok, const tinygltf::Model& model, const std::string& name, const std::string& err,
                        const std::string& warn) {
-  if (!ok) throw InputError(name + ": cannot read glTF: " + (err.empty() ? "unknown error" : err));
+  if (!ok) {
+    std::string why = err.empty() ? "unknown error" : err;
+    while (!why.empty() && (why.back() == '\n' || why.back() == ' ')) why.pop_back();
+    throw InputError(name + ": cannot read glTF: " + why);
+  }
   GltfAsset asset;
   ImportContext c{model, name, asset.warnings, {}};
+  // glTF 2.0, 3.2: a loader refuses an asset whose major version it does not know.
+  if (!model.asset.version.starts_with("2.") || model.asset.version.size() < 3)
+    c.fail("asset version \"" + model.asset.version + "\"; allowed: 2.x (glTF 2.0)");
   if (!warn.empty()) c.warn(warn);
   Importer(c, asset).run();
   return asset;
@@ -431,7 +451,8 @@ GltfAsset import_model(bool ok, const tinygltf::Model& model, const std::string&
 }  // namespace
 
 GltfAsset import_gltf(const std::filesystem::path& path) {
-  require_regular_file(path, "glTF file");
+  const std::string bytes = read_regular_file(path, "glTF file", kMaxBinaryFileBytes);
+  gltf::check_json_types({reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size()}, path.string());
   tinygltf::TinyGLTF loader;
   configure(loader);
   tinygltf::Model model;
@@ -442,6 +463,7 @@ GltfAsset import_gltf(const std::filesystem::path& path) {
 }
 
 GltfAsset import_glb(std::span<const std::uint8_t> bytes, const std::string& name) {
+  gltf::check_json_types(bytes, name);
   tinygltf::TinyGLTF loader;
   configure(loader);
   tinygltf::Model model;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <cstdio>
 #include <cstring>
 #include <map>
 
@@ -27,6 +28,16 @@ const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions, const
   return it == extensions.end() || !it->second.IsObject() ? nullptr : &it->second;
 }
 
+/// The largest magnitude of a texture transform's offset, rotation (radians) and scale, and of an
+/// anisotropy rotation: past it, uv and its derivatives overflow single precision in the shaders.
+constexpr double kMaxTransformValue = 1e6;
+
+std::string value_text(double v) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%.6g", v);
+  return s;
+}
+
 glm::vec2 extension_vec2(const ImportContext& c, const tinygltf::Value& object, const char* key, glm::vec2 fallback,
                          const std::string& where) {
   if (!object.Has(key)) return fallback;
@@ -35,11 +46,22 @@ glm::vec2 extension_vec2(const ImportContext& c, const tinygltf::Value& object, 
   glm::vec2 out;
   for (int i = 0; i < 2; ++i) {
     const tinygltf::Value& x = v.Get(i);
-    if (!x.IsNumber() || !std::isfinite(x.GetNumberAsDouble()))
-      c.fail(where + " " + key + "[" + std::to_string(i) + "] is not a finite number");
+    const std::string at = where + " " + key + "[" + std::to_string(i) + "]";
+    if (!x.IsNumber() || !std::isfinite(x.GetNumberAsDouble())) c.fail(at + " is not a finite number");
+    if (std::abs(x.GetNumberAsDouble()) > kMaxTransformValue)
+      c.fail(at + " is " + value_text(x.GetNumberAsDouble()) + "; allowed: -1e+06 to 1e+06");
     out[i] = static_cast<float>(x.GetNumberAsDouble());
   }
   return out;
+}
+
+/// extension_number within +-kMaxTransformValue.
+double bounded_extension_number(const ImportContext& c, const tinygltf::Value& object, const char* key,
+                                const std::string& where) {
+  const double v = extension_number(c, object, key, 0.0, where);
+  if (std::abs(v) > kMaxTransformValue)
+    c.fail(where + " " + key + " is " + value_text(v) + "; allowed: -1e+06 to 1e+06");
+  return v;
 }
 
 /// KHR_texture_transform (uv' = T(offset) R(rotation) S(scale) uv in glTF's uv) in glintlab's uv,
@@ -52,7 +74,7 @@ glm::mat3 texture_transform(ImportContext& c, const tinygltf::ExtensionMap& exte
   const std::string at = where + " KHR_texture_transform";
   if (t->Has("texCoord")) c.warn(at + " texCoord is ignored; glintlab reads TEXCOORD_0");
   const glm::vec2 offset = extension_vec2(c, *t, "offset", glm::vec2(0.0f), at);
-  const auto rotation = static_cast<float>(extension_number(c, *t, "rotation", 0.0, at));
+  const auto rotation = static_cast<float>(bounded_extension_number(c, *t, "rotation", at));
   const glm::vec2 scale = extension_vec2(c, *t, "scale", glm::vec2(1.0f), at);
   const float cs = std::cos(rotation), sn = std::sin(rotation);
   // Column-major: the spec's rows (cos, sin, 0), (-sin, cos, 0).
@@ -95,7 +117,10 @@ class Textures {
     if (image < 0 || static_cast<std::size_t>(image) >= c_.model.images.size())
       c_.fail(where + ": texture " + std::to_string(texture) + " has no image glintlab can read (source " +
               std::to_string(image) + "); allowed: PNG, JPEG, TGA or BMP images");
-    if (t.sampler >= 0 && static_cast<std::size_t>(t.sampler) < c_.model.samplers.size()) {
+    if (t.sampler < -1 || (t.sampler >= 0 && static_cast<std::size_t>(t.sampler) >= c_.model.samplers.size()))
+      c_.fail(where + ": texture " + std::to_string(texture) + " refers to sampler " + std::to_string(t.sampler) +
+              "; the file has " + std::to_string(c_.model.samplers.size()) + " (allowed: one of them, or none)");
+    if (t.sampler >= 0) {
       const tinygltf::Sampler& s = c_.model.samplers[static_cast<std::size_t>(t.sampler)];
       if ((s.wrapS != -1 && s.wrapS != TINYGLTF_TEXTURE_WRAP_REPEAT) ||
           (s.wrapT != -1 && s.wrapT != TINYGLTF_TEXTURE_WRAP_REPEAT))
@@ -217,7 +242,7 @@ Material import_material(ImportContext& c, Textures& textures, const tinygltf::M
   if (const tinygltf::Value* e = extension(g.extensions, "KHR_materials_anisotropy")) {
     const std::string at = where + " KHR_materials_anisotropy";
     anisotropy = unit_factor(c, extension_number(c, *e, "anisotropyStrength", 0.0, at), at + " anisotropyStrength");
-    m.anisotropy_rotation = static_cast<float>(extension_number(c, *e, "anisotropyRotation", 0.0, at));
+    m.anisotropy_rotation = static_cast<float>(bounded_extension_number(c, *e, "anisotropyRotation", at));
     if (e->Has("anisotropyTexture"))
       c.warn(where + ": KHR_materials_anisotropy's anisotropyTexture is not implemented; its factors are used");
   }

@@ -2,9 +2,28 @@
 
 #include <algorithm>
 
+#include <glm/vec3.hpp>
+
+#include "core/available_memory.hpp"
 #include "core/error.hpp"
 
 namespace glintlab {
+
+namespace {
+
+/// A generator's map is built while the scene is parsed, before the run's memory estimate
+/// (eval/memory_budget.hpp): one larger than the memory there is is refused before it is built.
+void require_memory_for_map(const TomlReader& r, int resolution) {
+  const auto available = available_memory();
+  const std::uint64_t texels = static_cast<std::uint64_t>(resolution) * static_cast<std::uint64_t>(resolution);
+  const std::uint64_t need = texels * (sizeof(glm::vec3) + kNormalMapTexelUploadBytes);
+  if (available && need > *available)
+    r.fail("resolution", "a " + std::to_string(resolution) + " x " + std::to_string(resolution) + " map needs ~" +
+                             format_bytes(need) + " to build and upload; available: " + format_bytes(*available) +
+                             "; allowed: a lower resolution (GLINTLAB_MEMORY_MIB sets what may be used)");
+}
+
+}  // namespace
 
 std::shared_ptr<const NormalMap> parse_normal_map(TomlReader r, const std::filesystem::path& base_dir) {
   if (r.has("file")) {
@@ -19,6 +38,7 @@ std::shared_ptr<const NormalMap> parse_normal_map(TomlReader r, const std::files
   // `noise` is another name for `bumps` (isotropic random-phase noise): the same map.
   const auto generator = r.require_string("generator", {"bumps", "noise", "brushed", "scratches", "flakes"});
   const int resolution = r.get_int("resolution", 512, 4, 8192);
+  require_memory_for_map(r, resolution);
   const auto seed = static_cast<std::uint32_t>(r.get_int("seed", 1, 0, 1 << 30));
   if (generator == "bumps" || generator == "noise") {
     const auto alpha = static_cast<float>(r.get_number("alpha", 0.3, 0.0, 2.0));

@@ -44,6 +44,16 @@ TEST_F(Cli, BadInputClassesExitWith2AndWriteNothing) {
   expect_bad_input("render --method tokuyoshi --param sigma2=abc", {"not a number"});
   expect_bad_input("render --method podee --param area=bogus", {"area=bogus", "not a choice", "exact|circle|lens"});
   expect_bad_input("render --method podee --param area=1.5", {"area=1.5", "exact|circle|lens"});
+  expect_bad_input("render --method deng2022 --param rank=4.5", {"rank=4.5", "not an integer", "an integer 1 .. 64"});
+  // Numbers are shown as written, not rounded to six digits.
+  expect_bad_input("render --scene '" + write("angle.toml", TestScene::minimal().film(16, 16).toml() +
+                                                    "\n[[light]]\ntype = \"spot\"\nposition = [0, 2, 0]\n"
+                                                    "direction = [0, -1, 0]\nouter_angle = 360.0001\n").string() + "'",
+                   {"outer_angle", "value 360.0001 is out of range"});
+  expect_bad_input("render --scene '" + write("seed.toml", TestScene::minimal().film(16, 16).toml() +
+                                                   "\n[[material]]\nname = \"s\"\ntype = \"microfacet\"\n"
+                                                   "normal_map = { generator = \"bumps\", resolution = 16, seed = -1 }\n").string() + "'",
+                   {"'seed'", "allowed: 0 .. 1073741824"});
   expect_bad_input("compare --spp 0", {"--spp 0", "1 .. 65536"});
   expect_bad_input("compare --spp lots", {"--spp=lots", "auto"});
   expect_bad_input("render --reference=many", {"--reference=many", "auto"});
@@ -277,6 +287,11 @@ TEST_F(Cli, ARunTooLargeForTheMemoryIsExit2BeforeRendering) {
   // A small film fits the same budget.
   const CliResult fits = run_glintlab("render --scene '" + scene.string() + "' -o '" + (scratch / "ok").string() + "'");
   EXPECT_EQ(fits.code, 0) << fits.err;
+  // A generator's map is refused before it is built (an 8192^2 flakes map took 13.6 s to build).
+  const fs::path flakes = write("flakes.toml", kScene + "\n[[material]]\nname = \"f\"\ntype = \"microfacet\"\n"
+                                               "normal_map = { generator = \"flakes\", resolution = 8192 }\n");
+  expect_bad_input("render --scene '" + flakes.string() + "'",
+                   {"flakes.toml:", "'resolution'", "8192 x 8192 map needs", "available: 1.00 GiB"});
   env = "GLINTLAB_MEMORY_MIB=lots";
   expect_bad_input("render --scene '" + scene.string() + "'", {"GLINTLAB_MEMORY_MIB=lots", "allowed"});
 }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
 #include <sys/stat.h>
 
 #include "core/error.hpp"
@@ -321,4 +322,61 @@ TEST(GltfImport, UrisThatAreNotRegularFilesAreInputErrors) {
     const std::string e = error_of([&] { import_gltf(dir / "m.gltf"); });
     EXPECT_NE(e.find("m.gltf"), std::string::npos) << uri << ": " << e;
   }
+}
+
+TEST(GltfImport, ValuesThatWouldBecomeNanOrDefaultsAreInputErrorsNamingTheElement) {
+  // Round three of hostile input: each of these rendered NaN (exit 1) or was silently replaced.
+  ScratchDirectory dir;
+  const std::string png_1x1 =
+      "data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAIAAACQd1PeAAAADElEQVR4nGNo6GgAAAMEAYFL09IQAAAAAElFTkSuQmCC";
+  auto textured = [&] {
+    nlohmann::json doc = nlohmann::json::parse(encode_gltf_json(quad_document()));
+    doc["images"] = {{{"uri", png_1x1}}};
+    doc["textures"] = {{{"source", 0}}};
+    doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}};
+    doc["extensionsUsed"] = {"KHR_texture_transform", "KHR_materials_anisotropy"};
+    return doc;
+  };
+  auto expect_error = [&](const nlohmann::json& doc, std::initializer_list<const char*> fragments) {
+    std::ofstream(dir / "bad.gltf") << doc.dump();
+    const std::string e = error_of([&] { import_gltf(dir / "bad.gltf"); });
+    ASSERT_FALSE(e.empty()) << doc.dump().substr(0, 200);
+    for (const char* f : {"bad.gltf"}) EXPECT_NE(e.find(f), std::string::npos) << e;
+    for (const char* f : fragments) EXPECT_NE(e.find(f), std::string::npos) << "'" << f << "' not in: " << e;
+  };
+  ASSERT_EQ(error_of([&] {
+              std::ofstream(dir / "good.gltf") << textured().dump();
+              import_gltf(dir / "good.gltf");
+            }),
+            "");
+  nlohmann::json doc = textured();
+  doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]["KHR_texture_transform"] = {
+      {"offset", {1e308, 0}}};
+  expect_error(doc, {"KHR_texture_transform offset[0]", "1e+308", "-1e+06 to 1e+06"});
+  doc = textured();
+  doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]["KHR_texture_transform"] = {
+      {"scale", {1e38, 1}}};
+  expect_error(doc, {"scale[0]", "1e+38"});
+  doc = textured();
+  doc["materials"][0]["extensions"]["KHR_materials_anisotropy"] = {{"anisotropyStrength", 0.5},
+                                                                   {"anisotropyRotation", 1e308}};
+  expect_error(doc, {"anisotropyRotation", "1e+308"});
+  doc = textured();
+  doc["materials"][0]["pbrMetallicRoughness"]["baseColorFactor"] = "red";
+  expect_error(doc, {"materials[0].pbrMetallicRoughness.baseColorFactor", "\"red\"", "an array of 4 numbers"});
+  doc = textured();
+  doc["textures"][0]["sampler"] = 9;
+  expect_error(doc, {"texture 0 refers to sampler 9", "the file has 0"});
+  doc = textured();
+  doc["asset"]["version"] = "3.0";
+  expect_error(doc, {"asset version \"3.0\"", "2.x"});
+  doc = textured();
+  doc["images"][0]["uri"] = "data:image/ktx2;base64,q0tUWCAyMLsNChoKAAAAAAAAAAAAAAAAAAAAAA==";
+  expect_error(doc, {"KTX2", "KHR_texture_basisu"});
+  // A TANGENT along the NORMAL (+y) leaves no tangent frame.
+  Document along = quad_document();
+  along.meshes[0].primitives[0].tangents.assign(4, glm::vec4(0, 1, 0, 1));
+  std::ofstream(dir / "tangent.gltf") << encode_gltf_json(along);
+  const std::string e = error_of([&] { import_gltf(dir / "tangent.gltf"); });
+  EXPECT_NE(e.find("(TANGENT) element 0 is zero or parallel to its NORMAL"), std::string::npos) << e;
 }

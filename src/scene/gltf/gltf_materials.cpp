@@ -127,8 +127,13 @@ class Textures {
         c_.warn("sampler " + std::to_string(t.sampler) + " asks for clamped or mirrored wrapping; glintlab repeats");
     }
     const tinygltf::Image& img = c_.model.images[static_cast<std::size_t>(image)];
-    if (img.image.empty() || img.component != 4 || (img.bits != 8 && img.bits != 16))
-      c_.fail(where + ": image " + std::to_string(image) + " was not decoded");
+    if (img.image.empty() || img.component != 4 || (img.bits != 8 && img.bits != 16)) {
+      const bool ktx2 = img.mimeType == "image/ktx2" || img.uri.ends_with(".ktx2") || img.uri.starts_with("data:image/ktx2");
+      c_.fail(where + ": image " + std::to_string(image) +
+              (ktx2 ? " is a KTX2 texture (KHR_texture_basisu, which glintlab does not implement)"
+                    : " (" + (img.mimeType.empty() ? std::string("no mimeType") : img.mimeType) + ") was not decoded") +
+              "; allowed: PNG, JPEG, TGA or BMP");
+    }
     return image;
   }
 

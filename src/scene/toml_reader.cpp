@@ -1,7 +1,8 @@
 #include "scene/toml_reader.hpp"
 
 #include <algorithm>
-#include <charconv>
+#include <cstdio>
+#include <cstdlib>
 #include <cmath>
 #include <sstream>
 
@@ -36,10 +37,21 @@ std::string join(const std::vector<std::string>& v) {
 }  // namespace
 
 std::string number_text(double value) {
-  // The shortest text that reads back as the value: 1073741824, not 1.07374e+09; 360.0001, not 360.
-  char text[32];
-  const auto end = std::to_chars(text, text + sizeof text, value).ptr;
-  return std::string(text, end);
+  // The fewest digits that read back as the value: 1073741824, not 1.07374e+09; 360.0001, not 360.
+  // A value that is a float (a declared default) reads back at float precision: 0.1, not
+  // 0.10000000149011612.
+  char text[40];
+  if (value == std::trunc(value) && std::abs(value) < 1e15) {
+    std::snprintf(text, sizeof text, "%.0f", value);
+    return text;
+  }
+  const bool is_float = static_cast<double>(static_cast<float>(value)) == value;
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, value);
+    const double back = std::strtod(text, nullptr);
+    if (is_float ? static_cast<float>(back) == static_cast<float>(value) : back == value) break;
+  }
+  return text;
 }
 
 std::string range_text(double min, double max) { return number_text(min) + " .. " + number_text(max); }

@@ -197,3 +197,41 @@ type = "point"
 position = [1, 2, 3]
 intensity = 10
 """)
+
+# --- Viewer scripts: the README's screenshot script, and one line of every command -----------------
+(CORPUS / "view_script").mkdir(parents=True, exist_ok=True)
+shutil.copy(FUZZ.parent / "tools" / "viewer-readme.script", CORPUS / "view_script" / "viewer-readme.script")
+put("view_script", "every-command.txt", """\
+# one of each
+method lean
+compare reference
+mode split
+split 0.25
+flip
+param sigma2=0.5
+compare-param sigma2=0.1
+reset-params
+error-overlay on 0.5
+frame 3
+next
+previous
+play
+pause
+orbit 10 -5
+dolly 1.5
+fly 0.1 0 -0.2
+look 5 2
+path
+exposure -1.5
+bloom 0.2
+continuous off
+magnify 12 20 8
+magnify off
+screenshot shot.png
+window-screenshot window.png
+wait 2
+quit
+""")
+
+# The pyramid target's seed (fuzz/corpus/pyramid/bumps-16-rank2.bin) is the payload of a real cache
+# entry, made by glintlab itself rather than here (docs/fuzzing.md says how).

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs the libFuzzer targets (docs/fuzzing.md) one after another, niced, for a time budget each.
-# Usage: tools/fuzz.sh [all|scene|obj|gltf|png|exr ...] [SECONDS]     (default: all, 600 s each)
+# Usage: tools/fuzz.sh [all|scene|obj|gltf|png|exr|pyramid|view_script ...] [SECONDS]     (default: all, 600 s each)
 # Builds nothing: run `make build-fuzz` (or `cmake --preset fuzz && cmake --build build/fuzz`) first.
 # The working corpus grows in build/fuzz/corpus/<target> (seeded from fuzz/corpus/<target>);
 # findings are written to build/fuzz/findings/<target>-crash-*, -timeout-*, -oom-*; each run's log
@@ -15,7 +15,7 @@ targets=()
 for arg in "$@"; do
   if [[ "$arg" =~ ^[0-9]+$ ]]; then seconds=$arg; elif [[ "$arg" != all ]]; then targets+=("$arg"); fi
 done
-[ ${#targets[@]} -eq 0 ] && targets=(scene obj gltf png exr)
+[ ${#targets[@]} -eq 0 ] && targets=(scene obj gltf png exr pyramid view_script)
 
 status=0
 for t in "${targets[@]}"; do

@@ -8,8 +8,7 @@
 
 #include "core/error.hpp"
 #include "core/file_access.hpp"
-#include "view/camera_controls.hpp"
-#include "view/viewer.hpp"
+#include "view/script_arguments.hpp"
 
 namespace glintlab {
 
@@ -59,9 +58,11 @@ const Verb* find_verb(const std::string& name) {
   return nullptr;
 }
 
-std::string where(const ScriptCommand& c) { return c.file.string() + ":" + std::to_string(c.line) + ": "; }
+}  // namespace
 
-float number(const ScriptCommand& c, std::size_t i) {
+std::string script_where(const ScriptCommand& c) { return c.file.string() + ":" + std::to_string(c.line) + ": "; }
+
+float script_number(const ScriptCommand& c, std::size_t i) {
   const std::string& text = c.args.at(i);
   try {
     std::size_t used = 0;
@@ -69,100 +70,52 @@ float number(const ScriptCommand& c, std::size_t i) {
     if (used == text.size() && std::isfinite(v)) return v;
   } catch (const std::exception&) {
   }
-  throw InputError(where(c) + c.verb + ": '" + text + "' is not a number; usage: " + find_verb(c.verb)->usage);
+  throw InputError(script_where(c) + c.verb + ": '" + text + "' is not a number; usage: " + find_verb(c.verb)->usage);
 }
 
-int integer(const ScriptCommand& c, std::size_t i) {
-  const float v = number(c, i);
+int script_integer(const ScriptCommand& c, std::size_t i) {
+  const float v = script_number(c, i);
   if (v != static_cast<float>(static_cast<int>(v)))
-    throw InputError(where(c) + c.verb + ": '" + c.args[i] + "' is not a whole number; usage: " + find_verb(c.verb)->usage);
+    throw InputError(script_where(c) + c.verb + ": '" + c.args[i] + "' is not a whole number; usage: " +
+                     find_verb(c.verb)->usage);
   return static_cast<int>(v);
 }
 
-bool on_off(const ScriptCommand& c, std::size_t i) {
+bool script_on_off(const ScriptCommand& c, std::size_t i) {
   if (c.args.at(i) == "on") return true;
   if (c.args.at(i) == "off") return false;
-  throw InputError(where(c) + c.verb + ": '" + c.args[i] + "'; allowed: on, off");
+  throw InputError(script_where(c) + c.verb + ": '" + c.args[i] + "'; allowed: on, off");
 }
+
+namespace {
 
 /// Checks what can be checked before any GL work: the words and numbers of each line.
 void check(const ScriptCommand& c) {
   const std::string& v = c.verb;
   if (v == "mode" && c.args[0] != "single" && c.args[0] != "split" && c.args[0] != "flip")
-    throw InputError(where(c) + "mode '" + c.args[0] + "'; allowed: single, split, flip");
+    throw InputError(script_where(c) + "mode '" + c.args[0] + "'; allowed: single, split, flip");
   if ((v == "param" || v == "compare-param") && c.args[0].find('=') == std::string::npos)
-    throw InputError(where(c) + v + " '" + c.args[0] + "': expected NAME=VALUE");
-  if (v == "error-overlay" || v == "continuous") on_off(c, 0);
-  if (v == "error-overlay" && c.args.size() == 2 && !(number(c, 1) >= 0.0f && number(c, 1) <= 1.0f))
-    throw InputError(where(c) + "error-overlay: opacity " + c.args[1] + "; allowed: 0 .. 1");
+    throw InputError(script_where(c) + v + " '" + c.args[0] + "': expected NAME=VALUE");
+  if (v == "error-overlay" || v == "continuous") script_on_off(c, 0);
+  if (v == "error-overlay" && c.args.size() == 2 && !(script_number(c, 1) >= 0.0f && script_number(c, 1) <= 1.0f))
+    throw InputError(script_where(c) + "error-overlay: opacity " + c.args[1] + "; allowed: 0 .. 1");
   if (v == "magnify" && !(c.args.size() == 1 && c.args[0] == "off") && c.args.size() != 3)
-    throw InputError(where(c) + "magnify: usage: " + find_verb(v)->usage);
+    throw InputError(script_where(c) + "magnify: usage: " + find_verb(v)->usage);
   if (v == "magnify" && c.args.size() == 3) {
-    for (std::size_t i = 0; i < 3; ++i) integer(c, i);
-    if (integer(c, 0) < 0 || integer(c, 1) < 0)
-      throw InputError(where(c) + "magnify " + c.args[0] + " " + c.args[1] + ": allowed: a film pixel, 0 or more");
-    if (integer(c, 2) < kMinMagnifierZoom || integer(c, 2) > kMaxMagnifierZoom)
-      throw InputError(where(c) + "magnify: zoom " + c.args[2] + "; allowed: " + std::to_string(kMinMagnifierZoom) +
+    for (std::size_t i = 0; i < 3; ++i) script_integer(c, i);
+    if (script_integer(c, 0) < 0 || script_integer(c, 1) < 0)
+      throw InputError(script_where(c) + "magnify " + c.args[0] + " " + c.args[1] + ": allowed: a film pixel, 0 or more");
+    if (script_integer(c, 2) < kMinMagnifierZoom || script_integer(c, 2) > kMaxMagnifierZoom)
+      throw InputError(script_where(c) + "magnify: zoom " + c.args[2] + "; allowed: " + std::to_string(kMinMagnifierZoom) +
                        " .. " + std::to_string(kMaxMagnifierZoom));
   }
-  if (v == "frame" || v == "wait") integer(c, 0);
-  if (v == "wait" && integer(c, 0) < 0) throw InputError(where(c) + "wait " + c.args[0] + ": allowed: 0 or more frames");
-  if (v == "split" || v == "dolly" || v == "exposure" || v == "bloom") number(c, 0);
-  if (v == "orbit" || v == "look") number(c, 0), number(c, 1);
-  if (v == "fly") number(c, 0), number(c, 1), number(c, 2);
+  if (v == "frame" || v == "wait") script_integer(c, 0);
+  if (v == "wait" && script_integer(c, 0) < 0) throw InputError(script_where(c) + "wait " + c.args[0] + ": allowed: 0 or more frames");
+  if (v == "split" || v == "dolly" || v == "exposure" || v == "bloom") script_number(c, 0);
+  if (v == "orbit" || v == "look") script_number(c, 0), script_number(c, 1);
+  if (v == "fly") script_number(c, 0), script_number(c, 1), script_number(c, 2);
   if (v == "window-screenshot" && std::filesystem::path(c.args[0]).extension() != ".png")
-    throw InputError(where(c) + "window-screenshot " + c.args[0] + ": allowed: a .png file name");
-}
-
-WindowRequest run(const ScriptCommand& c, Viewer& viewer) {
-  const std::string& v = c.verb;
-  const auto& a = c.args;
-  WindowRequest request;
-  auto split_param = [&](const std::string& text) {
-    const auto eq = text.find('=');
-    return std::pair(text.substr(0, eq), text.substr(eq + 1));
-  };
-  if (v == "method") viewer.select_method(false, a[0]);
-  else if (v == "compare") a[0] == "reference" ? viewer.compare_with_reference() : viewer.select_method(true, a[0]);
-  else if (v == "mode") viewer.set_mode(a[0] == "single" ? CompareMode::Single : a[0] == "split" ? CompareMode::Split : CompareMode::Flip);
-  else if (v == "split") viewer.set_split(number(c, 0));
-  else if (v == "flip") viewer.flip();
-  else if (v == "param" || v == "compare-param") {
-    const auto [name, value] = split_param(a[0]);
-    viewer.set_param(v == "compare-param", name, value);
-  } else if (v == "reset-params") viewer.reset_params(false);
-  else if (v == "error-overlay") viewer.set_error_overlay(on_off(c, 0), a.size() == 2 ? number(c, 1) : viewer.state().overlay_opacity);
-  else if (v == "frame") {
-    viewer.return_to_path();
-    viewer.set_frame(integer(c, 0));
-  } else if (v == "next") viewer.step_frame(1);
-  else if (v == "previous") viewer.step_frame(-1);
-  else if (v == "play") viewer.set_playing(true);
-  else if (v == "pause") viewer.set_playing(false);
-  else if (v == "orbit") viewer.move_camera(orbit_camera(viewer.camera(), number(c, 0), number(c, 1)));
-  else if (v == "dolly") {
-    if (number(c, 0) <= 0.0f) throw InputError("dolly " + a[0] + ": allowed: a factor above 0");
-    viewer.move_camera(dolly_camera(viewer.camera(), number(c, 0)));
-  } else if (v == "fly") viewer.move_camera(fly_camera(viewer.camera(), {number(c, 0), number(c, 1), number(c, 2)}));
-  else if (v == "look") viewer.move_camera(look_camera(viewer.camera(), number(c, 0), number(c, 1)));
-  else if (v == "path") viewer.return_to_path();
-  else if (v == "exposure") viewer.set_exposure(number(c, 0));
-  else if (v == "bloom") viewer.set_bloom(number(c, 0));
-  else if (v == "continuous") viewer.set_continuous(on_off(c, 0));
-  else if (v == "magnify") {
-    if (a.size() == 1) request.unpin_magnifier = true;
-    else if (integer(c, 0) >= viewer.width() || integer(c, 1) >= viewer.height())
-      throw InputError("magnify " + a[0] + " " + a[1] + ": outside the film of " + std::to_string(viewer.width()) + "x" +
-                       std::to_string(viewer.height()) + "; allowed: x 0 .. " + std::to_string(viewer.width() - 1) +
-                       ", y 0 .. " + std::to_string(viewer.height() - 1));
-    else request.magnify = glm::ivec3(integer(c, 0), integer(c, 1), integer(c, 2));
-  } else if (v == "screenshot") {
-    const std::string exr = viewer.screenshot(a[0]);
-    std::printf("screenshot: %s and .png\n", exr.c_str());
-  } else if (v == "window-screenshot") request.window_screenshot = a[0];
-  else if (v == "wait") request.wait_frames = integer(c, 0);
-  else if (v == "quit") request.quit = true;
-  return request;
+    throw InputError(script_where(c) + "window-screenshot " + c.args[0] + ": allowed: a .png file name");
 }
 
 }  // namespace
@@ -181,10 +134,10 @@ std::vector<ScriptCommand> read_view_script(const std::filesystem::path& file) {
     if (!verb) {
       std::string allowed;
       for (const Verb& v : kVerbs) allowed += (allowed.empty() ? "" : ", ") + std::string(v.name);
-      throw InputError(where(c) + "unknown command '" + c.verb + "'; allowed: " + allowed);
+      throw InputError(script_where(c) + "unknown command '" + c.verb + "'; allowed: " + allowed);
     }
     if (static_cast<int>(c.args.size()) < verb->min_args || static_cast<int>(c.args.size()) > verb->max_args)
-      throw InputError(where(c) + c.verb + " takes " +
+      throw InputError(script_where(c) + c.verb + " takes " +
                        (verb->min_args == verb->max_args ? std::to_string(verb->min_args)
                                                          : std::to_string(verb->min_args) + " to " + std::to_string(verb->max_args)) +
                        " argument(s), not " + std::to_string(c.args.size()) + "; usage: " + verb->usage);
@@ -192,14 +145,6 @@ std::vector<ScriptCommand> read_view_script(const std::filesystem::path& file) {
     commands.push_back(std::move(c));
   }
   return commands;
-}
-
-WindowRequest run_script_command(const ScriptCommand& command, Viewer& viewer) {
-  try {
-    return run(command, viewer);
-  } catch (const InputError& e) {
-    throw InputError(where(command) + e.what());
-  }
 }
 
 std::string view_script_reference() {

@@ -3,6 +3,7 @@
 // generator's version and the settings; a damaged entry is regenerated, never trusted. Each test
 // caches into its own temporary directory, removed afterwards.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cstdlib>
 #include <cstring>
@@ -137,6 +138,24 @@ TEST(TableCache, ATruncatedOrCorruptEntryIsRegeneratedNotTrusted) {
   expect_regenerated_after(
       [](const auto& file) { std::ofstream(file, std::ios::binary | std::ios::app) << "trailing"; }, "bytes appended");
   expect_regenerated_after([](const auto& file) { std::ofstream(file, std::ios::binary | std::ios::trunc); }, "empty");
+}
+
+TEST(TableCache, AFifoInTheEntrysPlaceIsNeitherOpenedNorReplaced) {
+  // Opening a FIFO blocks until a writer comes; the atomic store would replace it with a file.
+  TemporaryDirectory dir;
+  CountingTable table;
+  std::vector<std::string> warnings;
+  const TableCache cache(dir.path(),
+                         {.warning = [&](const TableSource&, const std::string& m) { warnings.push_back(m); }});
+  const auto file = cache.path(table.source());
+  std::filesystem::create_directories(file.parent_path());
+  ASSERT_EQ(::mkfifo(file.c_str(), 0600), 0);
+  EXPECT_FALSE(cache.cached_generation_ms(table.source()).has_value());
+  const BuiltTable built = cache.load_or_generate(table.source());
+  EXPECT_TRUE(built.build.generated);
+  EXPECT_TRUE(std::filesystem::is_fifo(file));
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("FIFO"), std::string::npos) << warnings[0];
 }
 
 TEST(TableCache, ValuesTheTableRejectsAreRegenerated) {

@@ -38,6 +38,11 @@ TEST_F(Cli, ReadsOfSpecialFilesAreExit2AtOnce) {
     const fs::path scene = write("bumpy.toml", scene_with_normal_map(map));
     expect_bad_input("render --scene " + quoted(scene), {map.string().c_str(), "allowed: a regular file"});
   }
+  // An environment light's map.
+  const fs::path lit = write("environment.toml", TestScene::minimal().film(16, 16).toml() +
+                                                     "\n[[light]]\ntype = \"environment\"\nfile = \"" +
+                                                     fifo_exr.string() + "\"\n");
+  expect_bad_input("render --scene " + quoted(lit), {fifo_exr.string().c_str(), "FIFO"});
   expect_bad_input("render --scene " + quoted(fifo_toml), {"fifo.toml", "FIFO"});
   expect_bad_input("render --scene " + quoted(scratch / "folder.png"), {"folder.png", "directory"});
   // Viewer scripts are read before any window opens.

@@ -284,8 +284,13 @@ void PrefilteredNdf::check_consistent() const {
     const PrefilterLevel& l = levels[i];
     const std::string level = "level " + std::to_string(i) + ": ";
     if (!finite_positive(l.sigma) || !(l.sigma > sigma_below)) fail(level + "bad sigma");
-    if (l.nx < 1 || l.ny < 1 || l.nx > width || l.ny > height || !finite_positive(l.spacing.x) ||
-        !finite_positive(l.spacing.y))
+    // The centres tile the map: spacing = map size / footprints, as the precompute sets it (a
+    // spacing of 1e-300 sent a query's grid position past every integer: fuzz/fuzz_pyramid.cpp).
+    const auto tiles = [](double spacing, int count, int size) {
+      return finite_positive(spacing) && std::abs(spacing * count - size) <= 1e-9 * size;
+    };
+    if (l.nx < 1 || l.ny < 1 || l.nx > width || l.ny > height || !tiles(l.spacing.x, l.nx, width) ||
+        !tiles(l.spacing.y, l.ny, height))
       fail(level + "bad footprint grid");
     if (l.groups_x < 1 || l.groups_y < 1 || l.groups_x > l.nx || l.groups_y > l.ny) fail(level + "bad group grid");
     if (l.first_footprint != footprint_count || l.first_group != group_count)

@@ -220,6 +220,10 @@ TEST(PrefilteredNdf, CacheRebuildsEveryInconsistentOrSpecialEntry) {
   store(bad);
   expect_rebuilt("bad first footprint", "does not start where");
   bad = good;
+  bad.levels[0].spacing.x = 1e-300;  // fuzz/fuzz_pyramid.cpp: a query's grid position overflowed int
+  store(bad);
+  expect_rebuilt("tiny spacing", "bad footprint grid");
+  bad = good;
   bad.levels[0].sigma = std::nan("");
   store(bad);
   expect_rebuilt("NaN sigma", "bad sigma");

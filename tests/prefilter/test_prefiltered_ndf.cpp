@@ -234,7 +234,11 @@ TEST(PrefilteredNdf, CacheRebuildsEveryInconsistentOrSpecialEntry) {
   bad = good;
   bad.width = 64;
   store(bad);
-  expect_rebuilt("other map size", "map size");
+  expect_rebuilt("other map size", "bad footprint grid");  // its footprints no longer tile it
+  bad = good;
+  bad.intrinsic_roughness = 0.031;  // consistent, but not the pyramid asked for
+  store(bad);
+  expect_rebuilt("other roughness", "intrinsic roughness differs");
   // An array size of 2^32 in a few bytes: refused before anything is allocated.
   std::ostringstream bytes;
   good.write(bytes);

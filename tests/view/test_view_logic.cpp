@@ -169,6 +169,7 @@ TEST_F(ViewScript, BadLinesNameTheFileTheLineTheValueAndWhatIsAllowed) {
   expect("wait -2\n", {"allowed: 0 or more frames"});
   expect("magnify 3 4\n", {"magnify X Y ZOOM"});
   expect("magnify 3 4 0\n", {"zoom 0", "allowed: 2 .. 32"});
+  expect("wait 333333333333333333333333\n", {"out of range", "1000000000"});  // fuzz_view_script: past int
   expect("magnify -1 4 8\n", {"magnify -1 4", "0 or more"});
   expect("error-overlay on 2\n", {"opacity 2", "0 .. 1"});
   EXPECT_EQ(error_of(""), "");  // an empty script reads

@@ -301,10 +301,18 @@ void PrefilteredNdf::check_consistent() const {
   }
   if (footprint_count != footprints.size()) fail("levels and footprints disagree");
   if (group_count != group_offsets.size()) fail("levels and groups disagree");
-  // Every index the queries follow must land inside its array.
+  // Every index the queries follow must land inside its array: each group's factors follow the
+  // group before's (zeroed offsets would have every group read the first one's).
   const std::size_t per_group = static_cast<std::size_t>(4 * b + 2) * static_cast<std::size_t>(rank());
-  for (std::uint32_t off : group_offsets)
-    if (off + per_group > angular.size()) fail("group out of range");
+  if (angular.size() != group_offsets.size() * per_group) fail("angular factors and groups disagree");
+  for (std::size_t g = 0; g < group_offsets.size(); ++g)
+    if (group_offsets[g] != g * per_group) fail("group " + std::to_string(g) + " does not follow the one before");
+  // A footprint's group is one of its own level's.
+  for (const PrefilterLevel& l : levels)
+    for (std::uint64_t f = l.first_footprint; f < l.first_footprint + std::uint64_t{1} * l.nx * l.ny; ++f)
+      if (footprints[f].group < l.first_group ||
+          footprints[f].group >= l.first_group + std::uint64_t{1} * l.groups_x * l.groups_y)
+        fail("footprint " + std::to_string(f) + " belongs to another level's group");
   const int blocks = blocks_per_side() * blocks_per_side();
   for (const FootprintRecord& r : footprints) {
     const std::uint64_t mask = r.mask_lo | (static_cast<std::uint64_t>(r.mask_hi) << 32);

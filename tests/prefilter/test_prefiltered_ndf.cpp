@@ -228,6 +228,10 @@ TEST(PrefilteredNdf, CacheRebuildsEveryInconsistentOrSpecialEntry) {
   store(bad);
   expect_rebuilt("NaN sigma", "bad sigma");
   bad = good;
+  std::fill(bad.group_offsets.begin(), bad.group_offsets.end(), 0u);  // every group reads the first's factors
+  store(bad);
+  expect_rebuilt("zeroed group offsets", "does not follow");
+  bad = good;
   bad.rows[3] = std::nanf("");
   store(bad);
   expect_rebuilt("NaN value", "not finite");

@@ -36,6 +36,20 @@ struct Descriptor {
   }
 };
 
+/// Throws InputError "FLAG SHOWN: P is a file, not a directory" for the first of `folder` and the
+/// folders above it that exists and is not a directory.
+void require_folders_above(const std::filesystem::path& shown, const std::filesystem::path& folder,
+                           std::string_view flag) {
+  for (std::filesystem::path p = folder; !p.empty(); p = p.parent_path()) {
+    const FileKind kind = file_kind(p);
+    if (kind != FileKind::missing && kind != FileKind::directory)
+      throw InputError(std::string(flag) + (flag.empty() ? "" : " ") + shown.string() + ": " + p.string() + " is " +
+                       (kind == FileKind::regular ? std::string("a file") : std::string(describe(kind))) +
+                       ", not a directory; allowed: a path whose folders are directories (created if missing)");
+    if (p == p.parent_path()) break;
+  }
+}
+
 }  // namespace
 
 FileKind file_kind(const std::filesystem::path& path, bool follow_links) {
@@ -99,13 +113,11 @@ void check_output_file(const std::filesystem::path& path, std::string_view flag)
   const FileKind kind = file_kind(path, false);
   if (kind != FileKind::missing && kind != FileKind::regular)
     throw InputError(prefix + ": is " + std::string(describe(kind)) + "; allowed: a new file or a regular file to replace");
-  for (std::filesystem::path p = path.parent_path(); !p.empty(); p = p.parent_path()) {
-    const FileKind above = file_kind(p);
-    if (above != FileKind::missing && above != FileKind::directory)
-      throw InputError(prefix + ": " + p.string() + " is " + std::string(describe(above)) +
-                       ", not a directory; allowed: a path whose folders are directories (created if missing)");
-    if (p == p.parent_path()) break;
-  }
+  require_folders_above(path, path.parent_path(), flag);
+}
+
+void check_output_directory(const std::filesystem::path& dir, std::string_view flag) {
+  require_folders_above(dir, dir, flag);
 }
 
 }  // namespace glintlab

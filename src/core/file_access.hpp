@@ -37,6 +37,10 @@ void require_regular_file(const std::filesystem::path& path, std::string_view wh
 /// file (not a link), with every existing folder above it a folder. Call it before any work.
 void check_output_file(const std::filesystem::path& path, std::string_view flag);
 
+/// Throws InputError naming `flag` if `dir` (an output directory, created if missing) or a folder
+/// above it exists and is not a directory.
+void check_output_directory(const std::filesystem::path& dir, std::string_view flag = "-o");
+
 /// The size limits of the files glintlab reads; a reader names its own.
 inline constexpr std::uintmax_t kMaxTextFileBytes = 64ull << 20;    ///< scene files, scripts, JSON, OBJ
 inline constexpr std::uintmax_t kMaxBinaryFileBytes = 2ull << 30;   ///< images, glTF buffers, caches

@@ -11,16 +11,6 @@
 
 namespace glintlab {
 
-void check_output_directory(const std::filesystem::path& dir, const std::string& flag) {
-  std::error_code ec;
-  for (std::filesystem::path p = dir; !p.empty(); p = p.parent_path()) {
-    if (std::filesystem::exists(p, ec) && !std::filesystem::is_directory(p, ec))
-      throw InputError(flag + " " + dir.string() + ": " + p.string() +
-                       " is a file, not a directory; allowed: a directory path (created if missing)");
-    if (p == p.parent_path()) break;
-  }
-}
-
 FrameOutput frame_output(const std::string& path, const std::string& default_stem) {
   const std::filesystem::path p(path);
   std::string ext = p.extension().string();

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "core/file_access.hpp"  // check_output_directory, check_output_file
 #include "eval/session.hpp"
 #include "render/renderer.hpp"
 
@@ -20,9 +21,6 @@ struct FrameOutput {
 /// throws InputError for another extension, for a target file that exists as a directory, and for
 /// a folder on the way that exists as a file.
 FrameOutput frame_output(const std::string& path, const std::string& default_stem);
-/// Throws InputError naming `flag` if `dir` (an output directory) or a folder above it exists as a
-/// file.
-void check_output_directory(const std::filesystem::path& dir, const std::string& flag = "-o");
 
 /// Writes <dir>/<stem>.exr and <dir>/<stem>.png.
 void write_frame(const std::filesystem::path& dir, const std::string& stem, const Frame& frame, const Film& film);

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <limits>
 #include <string_view>
 #include <utility>
 
@@ -130,15 +131,21 @@ Image read_ldr_image(const std::filesystem::path& path, int* file_channels) {
   require_regular_file(path, "");
   require_documented_format(path);
   check_jpeg_header(path);
+  // stb_image decodes the bytes read here, the ones the checks above walked: reading a file itself,
+  // it rewinds only within its first 128 bytes and decodes stale buffer contents after a format
+  // test that read further (docs/fuzzing.md, finding 16).
+  const std::string file = read_regular_file(path, "", std::numeric_limits<int>::max());
+  const auto* bytes = reinterpret_cast<const stbi_uc*>(file.data());
+  const int size = static_cast<int>(file.size());
   // Sizes before decoding: stb_image refuses one over 2^30 bytes only as "too large", without it.
   if (const auto png_size = check_png_header(path)) {
     check_image_size(path, png_size->first, png_size->second);
-  } else if (stbi_info(path.c_str(), &w, &h, &channels)) {
+  } else if (stbi_info_from_memory(bytes, size, &w, &h, &channels)) {
     check_image_size(path, w, h);
   }
-  const bool is16 = stbi_is_16_bit(path.c_str());
-  void* data = is16 ? static_cast<void*>(stbi_load_16(path.c_str(), &w, &h, &channels, 3))
-                    : static_cast<void*>(stbi_load(path.c_str(), &w, &h, &channels, 3));
+  const bool is16 = stbi_is_16_bit_from_memory(bytes, size);
+  void* data = is16 ? static_cast<void*>(stbi_load_16_from_memory(bytes, size, &w, &h, &channels, 3))
+                    : static_cast<void*>(stbi_load_from_memory(bytes, size, &w, &h, &channels, 3));
   if (!data) {
     const char* why = stbi_failure_reason();
     throw InputError(path.string() + ": cannot read image (" + (why ? why : "unknown error") +

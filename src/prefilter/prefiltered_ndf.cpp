@@ -274,8 +274,11 @@ void PrefilteredNdf::check_consistent() const {
   const int n = settings.ndf_resolution, b = settings.block_size;
   if (n < 1 || n > 4096 || b < 1 || n % b != 0 || n / b > 8) fail("bad angular grid");
   if (rank() < 1 || rank() > 256) fail("bad rank");
-  if (width < 1 || height < 1 || !finite_positive(grid.extent) || !std::isfinite(intrinsic_roughness))
-    fail("bad map size or grid extent");
+  // The precompute's extent covers the projected normals, at most 1, at least 4 sigma_r (an extent
+  // of 1e-100 sent a query's pixel position past int: fuzz/fuzz_pyramid.cpp).
+  if (width < 1 || height < 1 || !(grid.extent >= 1e-3 && grid.extent <= 1.0) ||
+      !(intrinsic_roughness >= 0.0 && intrinsic_roughness <= 1.0))
+    fail("bad map size, grid extent or roughness");
   // Every level's footprints and groups follow the level below's; sizes, spacings and sigmas are
   // finite and positive, sigma growing level by level.
   std::uint64_t footprint_count = 0, group_count = 0;

@@ -16,6 +16,13 @@ namespace glintlab {
 
 namespace {
 
+/// The digits of a number's exponent ("1e-308": 3; 0 without one).
+std::size_t exponent_digits(const std::string& token) {
+  const auto e = token.find_first_of("eE");
+  const auto first = e == std::string::npos ? std::string::npos : token.find_first_not_of("+-", e + 1);
+  return first == std::string::npos ? 0 : token.size() - first;
+}
+
 // The three lists a face indexes, in the order of an `f` reference v/vt/vn.
 enum class ObjList { Position, Uv, Normal };
 
@@ -80,11 +87,13 @@ class ObjChecker {
     for (std::string token; tokens >> token && token[0] != '#';) {
       char* end = nullptr;
       const double value = std::strtod(token.c_str(), &end);
-      const bool is_number = end == token.c_str() + token.size() && !token.empty();
+      // tinyobjloader reads an exponent into an int and overflows past 9 digits (fuzz/fuzz_obj.cpp,
+      // docs/fuzzing.md finding 15); no float needs more than 3.
+      const bool is_number = end == token.c_str() + token.size() && !token.empty() && exponent_digits(token) <= 3;
       if (!is_number || !std::isfinite(value) || std::abs(value) > std::numeric_limits<float>::max()) {
         std::ostringstream s;
         s << file_ << ':' << line << ": `" << command << "` value " << token << " is not a finite number; allowed: "
-          << "numbers of magnitude at most " << std::numeric_limits<float>::max();
+          << "numbers of magnitude at most " << std::numeric_limits<float>::max() << ", exponents of at most 3 digits";
         throw InputError(s.str());
       }
     }

@@ -2,9 +2,11 @@
 // fuzz_png.cpp, docs/fuzzing.md): each is InputError naming the file, the value and the limit,
 // raised before anything of the claimed size is allocated.
 #include <gtest/gtest.h>
+#include <stb/stb_image_write.h>
 
 #include <cstdint>
 #include <functional>
+#include <iterator>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -201,4 +203,27 @@ TEST(HostileImages, JpegHuffmanTableAfterFillBytesIsRefused) {
   jpeg.save(dir / "fill.jpg");
   EXPECT_NE(message_of([&] { (void)read_ldr_image(dir / "fill.jpg"); }).find("JPEG Huffman table declares"),
             std::string::npos);
+}
+
+TEST(HostileImages, AJpegAfterManyFillBytesDecodesAsItself) {
+  // fuzz/fuzz_png.cpp (docs/fuzzing.md, finding 16): stb_image reading a file itself rewinds only
+  // within its first 128 bytes; when the refill during its format test is short (the file ends),
+  // it decodes stale buffer bytes: 208 fill bytes, then a Huffman table whose counts came from the
+  // stale bytes overflowed its arrays (seen under UBSan: fuzz/corpus/png/finding-stale-buffer-*).
+  // glintlab hands stb_image the bytes its checks walked, so the file is what it decodes.
+  const glintlab::test::ScratchDirectory dir;
+  std::vector<unsigned char> rgb(8 * 8 * 3);
+  for (std::size_t i = 0; i < rgb.size(); ++i) rgb[i] = static_cast<unsigned char>(i * 7);
+  const auto plain = dir / "plain.jpg";
+  ASSERT_NE(stbi_write_jpg(plain.c_str(), 8, 8, 3, rgb.data(), 95), 0);
+  std::ifstream in(plain, std::ios::binary);
+  const std::string jpeg((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::ofstream(dir / "filled.jpg", std::ios::binary) << std::string(208, '\xff') << jpeg;
+  const glintlab::Image a = glintlab::read_ldr_image(plain), b = glintlab::read_ldr_image(dir / "filled.jpg");
+  ASSERT_EQ(b.width(), 8);
+  EXPECT_TRUE(a.pixels() == b.pixels());
+  // The finding's own bytes: a table past its file, refused as bad input.
+  std::ofstream(dir / "finding.jpg", std::ios::binary)
+      << std::string(208, '\xff') << std::string("\xd8\xff\xc4\x47\x49\x00\x00\xff\x00", 9);
+  EXPECT_THROW((void)glintlab::read_ldr_image(dir / "finding.jpg"), glintlab::InputError);
 }

@@ -224,6 +224,10 @@ TEST(PrefilteredNdf, CacheRebuildsEveryInconsistentOrSpecialEntry) {
   store(bad);
   expect_rebuilt("tiny spacing", "bad footprint grid");
   bad = good;
+  bad.grid.extent = 1e-100;  // fuzz/fuzz_pyramid.cpp: a query's pixel position overflowed int
+  store(bad);
+  expect_rebuilt("tiny extent", "grid extent");
+  bad = good;
   bad.levels[0].sigma = std::nan("");
   store(bad);
   expect_rebuilt("NaN sigma", "bad sigma");

@@ -118,6 +118,9 @@ TEST(HostileMeshes, ObjZeroIndexIsRejected) {
 TEST(HostileMeshes, ObjNonFiniteValuesNameLineAndValue) {
   ScratchDirectory dir;
   expect_mesh_error(write_file(dir, "nan.obj", "v nan 0 0\n" + kObjLists + "f 1 2 3\n"), {":1:", "`v` value nan", "allowed"});
+  // fuzz/fuzz_obj.cpp (docs/fuzzing.md, finding 15): tinyobjloader's exponent overflowed an int.
+  expect_mesh_error(write_file(dir, "exponent.obj", "v 11e-2147483648391 0 0\n" + kObjLists + "f 1 2 3\n"),
+                    {":1:", "11e-2147483648391", "exponents of at most 3 digits"});
   expect_mesh_error(write_file(dir, "inf.obj", kObjLists + "vn inf 0 0\nf 1//2 2//1 3//1\n"), {":6:", "`vn` value inf"});
   expect_mesh_error(write_file(dir, "big.obj", kObjLists + "v 1e39 0 0\nf 1 2 3\n"), {":6:", "`v` value 1e39"});
   expect_mesh_error(write_file(dir, "uvnan.obj", kObjLists + "vt 0 -nan\nf 1 2 3\n"), {":6:", "`vt` value -nan"});

@@ -67,6 +67,9 @@ class ObjChecker {
     } else if (command == "vt") {
       check_numbers(line, command, tokens);
       ++count_[index(ObjList::Uv)];
+    } else if (command == "vw") {
+      // tinyobjloader's skin weights (glintlab ignores them): it casts each joint id to int.
+      check_numbers(line, command, tokens, 1e9);
     } else if (command == "f") {
       for (std::string ref; tokens >> ref && ref[0] != '#';) check_face_reference(line, ref);
     } else if (command == "mtllib") {
@@ -83,17 +86,18 @@ class ObjChecker {
   static std::size_t index(ObjList list) { return static_cast<std::size_t>(list); }
 
   // Values are stored as float: anything past FLT_MAX (1e39) is as unusable as nan or inf.
-  void check_numbers(std::size_t line, const std::string& command, std::istringstream& tokens) const {
+  void check_numbers(std::size_t line, const std::string& command, std::istringstream& tokens,
+                     double max_magnitude = std::numeric_limits<float>::max()) const {
     for (std::string token; tokens >> token && token[0] != '#';) {
       char* end = nullptr;
       const double value = std::strtod(token.c_str(), &end);
       // tinyobjloader reads an exponent into an int and overflows past 9 digits (fuzz/fuzz_obj.cpp,
       // docs/fuzzing.md finding 15); no float needs more than 3.
       const bool is_number = end == token.c_str() + token.size() && !token.empty() && exponent_digits(token) <= 3;
-      if (!is_number || !std::isfinite(value) || std::abs(value) > std::numeric_limits<float>::max()) {
+      if (!is_number || !std::isfinite(value) || std::abs(value) > max_magnitude) {
         std::ostringstream s;
         s << file_ << ':' << line << ": `" << command << "` value " << token << " is not a finite number; allowed: "
-          << "numbers of magnitude at most " << std::numeric_limits<float>::max() << ", exponents of at most 3 digits";
+          << "numbers of magnitude at most " << max_magnitude << ", exponents of at most 3 digits";
         throw InputError(s.str());
       }
     }

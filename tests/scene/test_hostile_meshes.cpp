@@ -121,6 +121,9 @@ TEST(HostileMeshes, ObjNonFiniteValuesNameLineAndValue) {
   // fuzz/fuzz_obj.cpp (docs/fuzzing.md, finding 15): tinyobjloader's exponent overflowed an int.
   expect_mesh_error(write_file(dir, "exponent.obj", "v 11e-2147483648391 0 0\n" + kObjLists + "f 1 2 3\n"),
                     {":1:", "11e-2147483648391", "exponents of at most 3 digits"});
+  // finding 18: tinyobjloader casts a skin weight's joint id (`vw`) to int.
+  expect_mesh_error(write_file(dir, "weights.obj", kObjLists + "vw 2147483.43 6e170 2\nf 1 2 3\n"),
+                    {"`vw` value 6e170", "at most 1e+09"});
   expect_mesh_error(write_file(dir, "inf.obj", kObjLists + "vn inf 0 0\nf 1//2 2//1 3//1\n"), {":6:", "`vn` value inf"});
   expect_mesh_error(write_file(dir, "big.obj", kObjLists + "v 1e39 0 0\nf 1 2 3\n"), {":6:", "`v` value 1e39"});
   expect_mesh_error(write_file(dir, "uvnan.obj", kObjLists + "vt 0 -nan\nf 1 2 3\n"), {":6:", "`vt` value -nan"});

@@ -124,6 +124,9 @@ TEST(HostileMeshes, ObjNonFiniteValuesNameLineAndValue) {
   // finding 18: tinyobjloader casts a skin weight's joint id (`vw`) to int.
   expect_mesh_error(write_file(dir, "weights.obj", kObjLists + "vw 2147483.43 6e170 2\nf 1 2 3\n"),
                     {"`vw` value 6e170", "at most 1e+09"});
+  // finding 19: a lone "\r" ends a line for tinyobjloader, so it ends one for the check too.
+  expect_mesh_error(write_file(dir, "cr.obj", kObjLists + "g x\rvw 0 2214748956365 0.5\nf 1 2 3\n"),
+                    {":7:", "`vw` value 2214748956365"});
   expect_mesh_error(write_file(dir, "inf.obj", kObjLists + "vn inf 0 0\nf 1//2 2//1 3//1\n"), {":6:", "`vn` value inf"});
   expect_mesh_error(write_file(dir, "big.obj", kObjLists + "v 1e39 0 0\nf 1 2 3\n"), {":6:", "`v` value 1e39"});
   expect_mesh_error(write_file(dir, "uvnan.obj", kObjLists + "vt 0 -nan\nf 1 2 3\n"), {":6:", "`vt` value -nan"});

@@ -68,8 +68,9 @@ class ObjChecker {
       check_numbers(line, command, tokens);
       ++count_[index(ObjList::Uv)];
     } else if (command == "vw") {
-      // tinyobjloader's skin weights (glintlab ignores them): it casts each joint id to int.
-      check_numbers(line, command, tokens, 1e9);
+      // tinyobjloader's skin weights (glintlab ignores them): it casts each joint id to int, and
+      // reads to the line's end, '#' included (finding 20).
+      check_numbers(line, command, tokens, 1e9, false);
     } else if (command == "f") {
       for (std::string ref; tokens >> ref && ref[0] != '#';) check_face_reference(line, ref);
     } else if (command == "mtllib") {
@@ -87,8 +88,8 @@ class ObjChecker {
 
   // Values are stored as float: anything past FLT_MAX (1e39) is as unusable as nan or inf.
   void check_numbers(std::size_t line, const std::string& command, std::istringstream& tokens,
-                     double max_magnitude = std::numeric_limits<float>::max()) const {
-    for (std::string token; tokens >> token && token[0] != '#';) {
+                     double max_magnitude = std::numeric_limits<float>::max(), bool comments = true) const {
+    for (std::string token; tokens >> token && !(comments && token[0] == '#');) {
       char* end = nullptr;
       const double value = std::strtod(token.c_str(), &end);
       // tinyobjloader reads an exponent into an int and overflows past 9 digits (fuzz/fuzz_obj.cpp,

@@ -127,6 +127,9 @@ TEST(HostileMeshes, ObjNonFiniteValuesNameLineAndValue) {
   // finding 19: a lone "\r" ends a line for tinyobjloader, so it ends one for the check too.
   expect_mesh_error(write_file(dir, "cr.obj", kObjLists + "g x\rvw 0 2214748956365 0.5\nf 1 2 3\n"),
                     {":7:", "`vw` value 2214748956365"});
+  // finding 20: tinyobjloader reads a `vw` line to its end, past a '#'.
+  expect_mesh_error(write_file(dir, "vw-comment.obj", kObjLists + "vw 1 1 # 502147483647\nf 1 2 3\n"),
+                    {":6:", "`vw` value #"});
   expect_mesh_error(write_file(dir, "inf.obj", kObjLists + "vn inf 0 0\nf 1//2 2//1 3//1\n"), {":6:", "`vn` value inf"});
   expect_mesh_error(write_file(dir, "big.obj", kObjLists + "v 1e39 0 0\nf 1 2 3\n"), {":6:", "`v` value 1e39"});
   expect_mesh_error(write_file(dir, "uvnan.obj", kObjLists + "vt 0 -nan\nf 1 2 3\n"), {":6:", "`vt` value -nan"});

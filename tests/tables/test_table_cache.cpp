@@ -103,14 +103,18 @@ TEST(TableCache, TheKeyFollowsTheIdTheGeneratorVersionAndTheSettings) {
   EXPECT_NE(cache.path(other), cache.path(base));
 }
 
+/// A cache in `dir` whose warnings are kept in `warnings`.
+TableCache cache_keeping_warnings(const TemporaryDirectory& dir, std::vector<std::string>& warnings) {
+  return TableCache(dir.path(), {.warning = [&](const TableSource&, const std::string& m) { warnings.push_back(m); }});
+}
+
 /// Damages the entry with `damage`, then expects the next call to regenerate (with a warning)
 /// the same values and to leave an intact entry that is read again.
 void expect_regenerated_after(const std::function<void(const std::filesystem::path&)>& damage, const char* what) {
   TemporaryDirectory dir;
   CountingTable table;
   std::vector<std::string> warnings;
-  const TableCache cache(dir.path(),
-                         {.warning = [&](const TableSource&, const std::string& m) { warnings.push_back(m); }});
+  const TableCache cache = cache_keeping_warnings(dir, warnings);
   const BuiltTable first = cache.load_or_generate(table.source());
   damage(cache.path(table.source()));
   const BuiltTable again = cache.load_or_generate(table.source());
@@ -145,8 +149,7 @@ TEST(TableCache, AFifoInTheEntrysPlaceIsNeitherOpenedNorReplaced) {
   TemporaryDirectory dir;
   CountingTable table;
   std::vector<std::string> warnings;
-  const TableCache cache(dir.path(),
-                         {.warning = [&](const TableSource&, const std::string& m) { warnings.push_back(m); }});
+  const TableCache cache = cache_keeping_warnings(dir, warnings);
   const auto file = cache.path(table.source());
   std::filesystem::create_directories(file.parent_path());
   ASSERT_EQ(::mkfifo(file.c_str(), 0600), 0);

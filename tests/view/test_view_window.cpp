@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "core/image_io.hpp"
+#include "app/cli_fixture.hpp"  // read_bytes
 #include "scratch_directory.hpp"
 
 namespace fs = std::filesystem;
@@ -23,12 +24,7 @@ struct CommandResult {
   std::string err;
 };
 
-std::string read_bytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::read_bytes;
 
 class View : public ::testing::Test {
  protected:

@@ -82,6 +82,15 @@ void coneOutline(vec3 lc, float sinHalf, out vec3 dl1, out vec3 dl2) {
   dl2 *= sinHalf;
 }
 
+// The major semi-axis of the ellipse of conjugate semi-axes a, b (a light's outline, in radians):
+// the square root of the largest eigenvalue of a a^T + b b^T, whose trace is |a|^2 + |b|^2 and whose
+// determinant (in the ellipse's plane) is |a x b|^2.
+float outlineMajorRadius(vec3 a, vec3 b) {
+  float trace = dot(a, a) + dot(b, b);
+  vec3 n = cross(a, b);
+  return sqrt(0.5 * (trace + sqrt(max(trace * trace - 4.0 * dot(n, n), 0.0))));
+}
+
 // --- Planar emitters (one-sided: the front face, along the normal n, emits) ---------------------
 
 // Solid angle of a small planar emitter of area A about c seen from p: A cos / d^2 (0 from behind).

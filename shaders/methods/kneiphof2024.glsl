@@ -1,7 +1,8 @@
 // Method `kneiphof2024`: Kneiphof & Klein 2024, glints under area lights: the binomial counting of
-// deliot2023 driven by the probability that a facet reflects the light (the D-only LTC for large
-// lights, the small-cap NDF for small ones), the glint factor scaling the light's LTC integral;
-// optionally the light cut into 2 x 2 or 4 x 4 cells split hierarchically. Other materials are
+// deliot2023 driven by the probability that a facet reflects the light (the D-only LTC, or the GGX
+// LTC's integral with the D-only magnitude, for large lights; the small-cap NDF for small ones),
+// the glint factor scaling the light's LTC integral; optionally the light cut into 2 x 2 or 4 x 4
+// cells split hierarchically. Other materials are
 // shaded as by `conventional`. Descriptor: src/shading/methods/kneiphof2024.cpp;
 // docs/methods.md#kneiphof2024.
 #include "lobe/lobe.glsl"
@@ -25,6 +26,7 @@ void prepareSurface(inout Surface s) {
 Radiance shadeLight(Surface s, LightData L) {
 #if MATERIAL_KIND == MATERIAL_KIND_BINOMIAL_GLINTS
   const int model = param_remaining_count;  // REMAINING_COUNT_*
+  const bool reuseGgxShape = param_light_probability == LIGHT_PROBABILITY_GGX_LTC;
   if (!lightHasExtent(L)) return shadeBinomialDeltaGlints(s, gBinomial, L, param_point_light_solid_angle, model);
   Radiance result = Radiance(vec3(0.0), vec3(0.0));
   vec3 wo = toLocal(s, s.view);
@@ -34,9 +36,9 @@ Radiance shadeLight(Surface s, LightData L) {
   vec3 radiance = lightRadiance(L);
   result.diffuse = s.diffuse * ltcLightIntegral(s, L, mat3(1.0), true) * radiance;
   if (LIGHT_CELLS > 1 && lightHasPolygonForm(L)) {
-    result.specular = subdividedGlintSpecular(s, gLtc, gBinomial, L, wo, model) * radiance;
+    result.specular = subdividedGlintSpecular(s, gLtc, gBinomial, L, wo, model, reuseGgxShape) * radiance;
   } else {
-    GlintLightIntegral g = glintLightIntegral(s, gLtc, L, wo, centreDir, solidAngle);
+    GlintLightIntegral g = glintLightIntegral(s, gLtc, L, wo, centreDir, solidAngle, reuseGgxShape);
     result.specular = glintFactor(gBinomial, g.hCentre, g.p, model) * g.specular * radiance;
   }
   return result;

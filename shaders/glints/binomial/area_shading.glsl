@@ -30,27 +30,34 @@ GlintLtc glintLtc(Surface s) {
 
 // The smooth specular integral over a light with extent (per unit radiance, Fresnel included) and
 // p, each as the LTC's for large lights and the point form's (the BRDF at the centre x solid
-// angle; the small-cap p) for small ones, blended by glintCapWeight.
+// angle; the small-cap p) for small ones (small in their largest extent), blended by glintCapWeight.
 struct GlintLightIntegral {
   vec3 specular;  // integral of f cos over the light / radiance
   float p;        // unclamped
   vec3 hCentre;   // local half vector towards the light's centre: where the count is drawn
 };
 
-// The two estimates of p and the cap's weight: (LTC, small cap, weight of the cap).
-vec3 glintProbabilityEstimates(Surface s, GlintLtc ltc, LightData L, vec3 wo, vec3 centreDir, float solidAngle) {
-  float pLtc = ltc.ndfScale * ltcLightIntegral(s, L, ltc.ndfMinv, false);
+// The two estimates of p and the cap's weight: (LTC, small cap, weight of the cap). `ltcIntegral`:
+// the integral over the light of the LTC that p's shape is taken from (the D-only table's, or the
+// GGX lobe's when reused: glintLightIntegral).
+vec3 glintProbabilityEstimates(Surface s, GlintLtc ltc, LightData L, vec3 wo, vec3 centreDir, float solidAngle,
+                               float ltcIntegral) {
   vec3 wi = toLocal(s, centreDir);
   float pCap = glintCapProbability(wo, wi, solidAngle, s.alpha, ltc.totalNdf);
-  return vec3(pLtc, pCap, glintCapWeight(solidAngle, abs(dot(wi, normalize(wo + wi))), ltc.alpha));
+  float angularRadius = lightLargestAngularRadius(L, s.position, centreDir, solidAngle);
+  return vec3(ltc.ndfScale * ltcIntegral, pCap, glintCapWeight(angularRadius, abs(dot(wi, normalize(wo + wi))), ltc.alpha));
 }
 
-GlintLightIntegral glintLightIntegral(Surface s, GlintLtc ltc, LightData L, vec3 wo, vec3 centreDir, float solidAngle) {
-  vec3 p = glintProbabilityEstimates(s, ltc, L, wo, centreDir, solidAngle);
-  vec3 specularLtc = ltc.ggxScale * ltcLightIntegral(s, L, ltc.ggxMinv, false);
+// `reuseGgxShape` (a constant at every call; kneiphof2024's light_probability = ggx-ltc): p's
+// integral is the GGX lobe's, scaled by the D-only magnitude, instead of its own LTC's.
+GlintLightIntegral glintLightIntegral(Surface s, GlintLtc ltc, LightData L, vec3 wo, vec3 centreDir, float solidAngle,
+                                      const bool reuseGgxShape) {
+  float ggxIntegral = ltcLightIntegral(s, L, ltc.ggxMinv, false);
+  float shape = reuseGgxShape ? ggxIntegral : ltcLightIntegral(s, L, ltc.ndfMinv, false);
+  vec3 p = glintProbabilityEstimates(s, ltc, L, wo, centreDir, solidAngle, shape);
   vec3 wi = toLocal(s, centreDir);
   vec3 specularPoint = specularCos(NDF_GGX, wo, wi, s.alpha, s.f0) * solidAngle;
-  return GlintLightIntegral(mix(specularLtc, specularPoint, p.z), mix(p.x, p.y, p.z), normalize(wo + wi));
+  return GlintLightIntegral(mix(ltc.ggxScale * ggxIntegral, specularPoint, p.z), mix(p.x, p.y, p.z), normalize(wo + wi));
 }
 
 // The glint factor g = share / p of the footprint's facets for probability p at half vector h

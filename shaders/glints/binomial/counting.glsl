@@ -34,9 +34,21 @@ float probabilityAnyReflects(float p, float n) { return n < 1.0 ? p * n : anyOfR
 // The paper's gate: the cell reflects when its uniform number u is below P1, as a ramp of
 // half-width w around P1 (paper: w = 0.1, narrowed near 0 and 1) so that the count varies
 // continuously with P1; the ramp stays inside [0, 1], so E[gate] = P1 exactly.
+float reflectionGateHalfWidth(float p1) { return 0.1 * clamp(10.0 * p1, 0.0, 1.0) * clamp(10.0 * (1.0 - p1), 0.0, 1.0); }
+
 float reflectionGate(float p1, float u) {
-  float w = 0.1 * clamp(10.0 * p1, 0.0, 1.0) * clamp(10.0 * (1.0 - p1), 0.0, 1.0);
+  float w = reflectionGateHalfWidth(p1);
   return w > 0.0 ? clamp((p1 - u) / (2.0 * w) + 0.5, 0.0, 1.0) : (u < p1 ? 1.0 : 0.0);
+}
+
+// E[gate^2] = P1 - w / 3 (the ramp's square integrates to 2w / 3 over its width 2w, where the step
+// would give w).
+float reflectionGateSecondMoment(float p1) { return p1 - reflectionGateHalfWidth(p1) / 3.0; }
+
+// The P1 whose gate has second moment m2 in [0, 1]: the inverse of reflectionGateSecondMoment, by
+// its three pieces (w = P1 below 0.1, 0.1 up to 0.9, 1 - P1 above).
+float reflectionGateWithSecondMoment(float m2) {
+  return m2 <= 0.2 / 3.0 ? 1.5 * m2 : (m2 <= 2.6 / 3.0 ? m2 + 0.1 / 3.0 : 0.25 * (3.0 * m2 + 1.0));
 }
 
 // The law of the facets that reflect besides the first, for n facets of probability p with

@@ -29,13 +29,25 @@ float glintCapProbability(vec3 wo, vec3 wi, float solidAngle, vec2 alpha, float 
 }
 
 // Where the small-cap estimate gives way to the LTC: the weight of the cap, 1 for lights whose
-// half-vector image (a cap of angular radius rho_h, pi rho_h^2 = solidAngle / (4 |l.h|)) is small
-// against the lobe (the cap's error at the peak is (rho_h / alpha)^2, from D's curvature
-// there), 0 for large ones, smooth in between so that no seam runs across a surface; the band
-// is where the two estimates' errors cross (docs/methods.md#kneiphof2024, "Where the estimates switch").
+// half-vector image is small against the lobe (the cap's error at the peak is (rho_h / alpha)^2,
+// from D's curvature there), 0 for large ones, smooth in between so that no seam runs across a
+// surface; the band is where the two estimates' errors cross (docs/methods.md#kneiphof2024, "Where
+// the estimates switch"). rho_h is the half-vector image's largest angular radius: the light's,
+// `angularRadius` (the major semi-axis of its outline), over 2 sqrt(|l.h|), the linear scale of
+// dh = dl / (4 |l.h|). From the largest extent, not the solid angle: a long thin light subtends a
+// small solid angle but reaches far across the lobe, where D is not the centre's.
 const vec2 GLINT_CAP_TO_LTC = vec2(0.15, 0.35);  // rho_h / alpha: cap below, LTC above
 
-float glintCapWeight(float solidAngle, float cosLH, float alpha) {
-  float rho = sqrt(solidAngle / (4.0 * PI * max(cosLH, 1e-6)));
+float glintCapWeight(float angularRadius, float cosLH, float alpha) {
+  float rho = angularRadius / (2.0 * sqrt(max(cosLH, 1e-6)));
   return 1.0 - smoothstep(GLINT_CAP_TO_LTC.x, GLINT_CAP_TO_LTC.y, rho / alpha);
+}
+
+// The largest angular radius of a compact light with extent seen from p (radians): its outline's
+// major semi-axis. For spheres, suns and facing disks, sqrt(solidAngle / pi), as the cone of equal
+// solid angle.
+float lightLargestAngularRadius(LightData L, vec3 p, vec3 centreDir, float solidAngle) {
+  vec3 dl1, dl2;
+  lightOutline(L, p, centreDir, sqrt(min(solidAngle / PI, 1.0)), dl1, dl2);
+  return outlineMajorRadius(dl1, dl2);
 }

@@ -13,9 +13,10 @@ MethodDescriptor kneiphof2024_method() {
                   "Pacific Graphics 2024 (arXiv 2408.13611)",
       .summary = "A binomial-glints material's facets counted as by deliot2023, but with the probability that a "
                  "facet reflects the light itself: the NDF's mass over the light's half-vector image over the "
-                 "NDF's total, from a D-only LTC for large lights and from the NDF as constant over a small cap "
-                 "for small ones (blended where their errors cross). The found over the expected reflecting "
-                 "facets (the glint factor) scales the smooth GGX's LTC integral over the light. Quad lights "
+                 "NDF's total, from a D-only LTC for large lights (or, the paper's cheap mode, the GGX LTC's "
+                 "integral with the D-only magnitude) and from the NDF as constant over a small cap for lights "
+                 "small in their largest extent (blended where their errors cross). The found over the expected "
+                 "reflecting facets (the glint factor) scales the smooth GGX's LTC integral over the light. Quad lights "
                  "can be cut into 2 x 2 or 4 x 4 cells whose facets are split hierarchically. Delta lights: "
                  "the material's R, as deliot2023, or a sun-sized cap. Other materials are shaded as by "
                  "conventional (lights with extent by LTC).",
@@ -26,6 +27,13 @@ MethodDescriptor kneiphof2024_method() {
                   "between them by hierarchical binomial draws (the paper's fig. 9): glints take the colours "
                   "and positions of the light's parts; other lights are not cut",
                   {"none", "2x2", "4x4"},
+                  /*compile_time=*/true},
+                 {"light_probability", 0, 0, 1,
+                  "how p's integral over a light is taken: by its own LTC (ndf-ltc: the D-only table's matrix "
+                  "and magnitude, a second LTC integral per light), or by the smooth GGX lobe's LTC integral, "
+                  "which the specular term needs anyway, scaled by the D-only magnitude (ggx-ltc: the paper's "
+                  "cheap mode, one LTC integral per light)",
+                  {"ndf-ltc", "ggx-ltc"},
                   /*compile_time=*/true},
                  {"point_light_solid_angle", 0.0f, 0.0f, 0.1f,
                   "delta lights (no extent): 0 counts facets with the material's R (p = R D(h) / D(0), as "

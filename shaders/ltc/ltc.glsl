@@ -10,8 +10,21 @@
 #include "core/constants.glsl"
 #include "lights/light_shapes.glsl"
 
-// Clipping to a half-space adds at most one vertex; a polygon is clipped twice (below).
+// A clipped polygon as its edges, each in a fixed slot: the polygon's sides (slots 0 ..
+// LIGHT_POLYGON_MAX_VERTICES - 1), then one edge along the clip plane per clip (a convex polygon
+// crosses a plane at most twice, so each clip adds at most one edge). No slot is chosen at run
+// time: every array here is indexed by constants once the constant-bound loops are unrolled, so no
+// driver spills the polygon to local memory (the Sutherland-Hodgman list this replaces wrote its
+// output at a running count: a dynamically indexed vec3[6], copied three times per light).
+// Unused slots hold the degenerate edge (z, z), whose contribution is exactly 0.
 #define LTC_CLIPPED_MAX_VERTICES (LIGHT_POLYGON_MAX_VERTICES + 2)
+
+struct LtcPolygonEdges {
+  vec3 from[LTC_CLIPPED_MAX_VERTICES];
+  vec3 to[LTC_CLIPPED_MAX_VERTICES];
+};
+
+const vec3 LTC_NO_EDGE = vec3(0.0, 0.0, 1.0);
 
 // The edge's contribution to the vector form factor, times 2 pi (a, b need not be unit).
 vec3 ltcEdgeVector(vec3 a, vec3 b) {
@@ -22,29 +35,43 @@ vec3 ltcEdgeVector(vec3 a, vec3 b) {
   return c * (s > 1e-7 ? theta / s : 1.0);
 }
 
-// The polygon v[0..count) clipped to z >= 0 in place (Sutherland-Hodgman against the plane z = 0);
-// returns the new count (0 when nothing is left).
-int ltcClipToUpperHalfSpace(inout vec3 v[LTC_CLIPPED_MAX_VERTICES], int count) {
-  vec3 clipped[LTC_CLIPPED_MAX_VERTICES];
-  int n = 0;
-  for (int i = 0; i < LTC_CLIPPED_MAX_VERTICES - 1; ++i) {
-    if (i >= count) break;
-    vec3 a = v[i], b = v[i + 1 < count ? i + 1 : 0];
-    if (a.z >= 0.0) clipped[n++] = a;
-    if ((a.z >= 0.0) != (b.z >= 0.0)) clipped[n++] = mix(a, b, a.z / (a.z - b.z));
+// The sides of the polygon v[0..count): side i from v[i] to v[i + 1], the last back to v[0].
+LtcPolygonEdges ltcPolygonSides(vec3 v[LIGHT_POLYGON_MAX_VERTICES], int count) {
+  LtcPolygonEdges e;
+  for (int i = 0; i < LTC_CLIPPED_MAX_VERTICES; ++i) {
+    bool side = i < LIGHT_POLYGON_MAX_VERTICES && i < count;
+    int at = min(i, LIGHT_POLYGON_MAX_VERTICES - 1), next = min(i + 1, LIGHT_POLYGON_MAX_VERTICES - 1);
+    e.from[i] = side ? v[at] : LTC_NO_EDGE;
+    e.to[i] = side ? (i + 1 < count ? v[next] : v[0]) : LTC_NO_EDGE;
   }
-  v = clipped;
-  return n < 3 ? 0 : n;
+  return e;
 }
 
-// Form factor of the polygon v[0..count) (already clipped to z >= 0), whatever its winding:
-// (1/pi) times the integral of the cosine over its directions.
-float ltcPolygonFormFactor(vec3 v[LTC_CLIPPED_MAX_VERTICES], int count) {
-  float sum = 0.0;
-  for (int i = 0; i < LTC_CLIPPED_MAX_VERTICES; ++i) {
-    if (i >= count) break;
-    sum += ltcEdgeVector(v[i], v[i + 1 < count ? i + 1 : 0]).z;
+// The edges in slots [0, horizon) clipped to z >= 0 (Sutherland-Hodgman, edge by edge), and in
+// slot `horizon` the edge along z = 0 from where the boundary leaves the half-space to where it
+// comes back, which closes the clipped polygon with its winding kept.
+void ltcClipEdges(inout LtcPolygonEdges e, const int horizon) {
+  vec3 leaves = LTC_NO_EDGE, returns = LTC_NO_EDGE;
+  for (int i = 0; i < horizon; ++i) {
+    vec3 a = e.from[i], b = e.to[i];
+    bool aIn = a.z >= 0.0, bIn = b.z >= 0.0;
+    float dz = a.z - b.z;
+    vec3 x = mix(a, b, a.z / (dz != 0.0 ? dz : 1.0));  // used only where the edge crosses: dz != 0
+    leaves = aIn && !bIn ? x : leaves;
+    returns = !aIn && bIn ? x : returns;
+    bool kept = aIn || bIn;
+    e.from[i] = kept ? (aIn ? a : x) : LTC_NO_EDGE;
+    e.to[i] = kept ? (bIn ? b : x) : LTC_NO_EDGE;
   }
+  e.from[horizon] = leaves;
+  e.to[horizon] = returns;
+}
+
+// Form factor of a polygon clipped to z >= 0, whatever its winding: (1/pi) times the integral of
+// the cosine over its directions.
+float ltcEdgesFormFactor(LtcPolygonEdges e) {
+  float sum = 0.0;
+  for (int i = 0; i < LTC_CLIPPED_MAX_VERTICES; ++i) sum += ltcEdgeVector(e.from[i], e.to[i]).z;
   return abs(sum) / TWO_PI;
 }
 
@@ -52,21 +79,21 @@ float ltcPolygonFormFactor(vec3 v[LTC_CLIPPED_MAX_VERTICES], int count) {
 // replaces is zero below it, while the fitted LTC may reach there), mapped by M^-1, and clipped to
 // the cosine's horizon. M^-1 = identity gives the Lambert form factor.
 float ltcPolygonIntegral(mat3 Minv, vec3 v[LIGHT_POLYGON_MAX_VERTICES], int count) {
-  vec3 p[LTC_CLIPPED_MAX_VERTICES];
-  for (int i = 0; i < LIGHT_POLYGON_MAX_VERTICES; ++i) p[i] = v[i];
-  for (int i = LIGHT_POLYGON_MAX_VERTICES; i < LTC_CLIPPED_MAX_VERTICES; ++i) p[i] = vec3(0.0);
-  int n = ltcClipToUpperHalfSpace(p, count);
-  for (int i = 0; i < LTC_CLIPPED_MAX_VERTICES; ++i) p[i] = Minv * p[i];
-  n = ltcClipToUpperHalfSpace(p, n);
-  return ltcPolygonFormFactor(p, n);
+  LtcPolygonEdges e = ltcPolygonSides(v, count);
+  ltcClipEdges(e, LIGHT_POLYGON_MAX_VERTICES);
+  for (int i = 0; i <= LIGHT_POLYGON_MAX_VERTICES; ++i) {
+    e.from[i] = Minv * e.from[i];
+    e.to[i] = Minv * e.to[i];
+  }
+  ltcClipEdges(e, LIGHT_POLYGON_MAX_VERTICES + 1);
+  return ltcEdgesFormFactor(e);
 }
 
 // The Lambert form factor of the polygon (M^-1 = identity: one clip).
 float ltcPolygonFormFactorClipped(vec3 v[LIGHT_POLYGON_MAX_VERTICES], int count) {
-  vec3 p[LTC_CLIPPED_MAX_VERTICES];
-  for (int i = 0; i < LIGHT_POLYGON_MAX_VERTICES; ++i) p[i] = v[i];
-  for (int i = LIGHT_POLYGON_MAX_VERTICES; i < LTC_CLIPPED_MAX_VERTICES; ++i) p[i] = vec3(0.0);
-  return ltcPolygonFormFactor(p, ltcClipToUpperHalfSpace(p, count));
+  LtcPolygonEdges e = ltcPolygonSides(v, count);
+  ltcClipEdges(e, LIGHT_POLYGON_MAX_VERTICES);
+  return ltcEdgesFormFactor(e);
 }
 
 // The vector form factor of a disk (centre c, orthogonal semi-axes u, w of equal length) under the

@@ -137,6 +137,25 @@ double exact_integral(const Light& light, const glm::dvec3& wo, double alpha) {
   return sum * light.side * light.side / (cells * cells);
 }
 
+/// GLSL: the shading point at the origin (normal +z, view normalize(a.yzw), isotropic GGX of alpha
+/// a.x, f0 = 1, no diffuse) and light b.x of the scene's buffer, for the evaluate() bodies below.
+const char* kShadingPointAndLight = R"(
+void shadingPointAndLight(vec4 a, vec4 b, out Surface s, out LightData L, out vec3 wo, out vec3 centreDir) {
+  s.position = vec3(0.0);
+  s.normal = vec3(0.0, 0.0, 1.0);
+  s.tangent = vec3(1.0, 0.0, 0.0);
+  s.bitangent = vec3(0.0, 1.0, 0.0);
+  s.view = normalize(a.yzw);
+  s.alpha = vec2(a.x);
+  s.ndf = NDF_GGX;
+  s.f0 = vec3(1.0);
+  s.diffuse = vec3(0.0);
+  L = lights[int(b.x)];
+  wo = toLocal(s, s.view);
+  centreDir = lightCentreDirection(L, s.position);
+}
+)";
+
 struct Result {
   double exact, ltc, cap, used, numerical;
   double reused_ltc, reused_used;  // light_probability = ggx-ltc: the LTC estimate, and blended
@@ -164,22 +183,14 @@ const std::vector<std::pair<Light, std::vector<Result>>>& sweep() {
         a.emplace_back(static_cast<float>(alpha), static_cast<float>(std::sin(v)), 0.0f, static_cast<float>(std::cos(v)));
         b.emplace_back(static_cast<float>(i), 0, 0, 0);
       }
-    const char* kIncludes = "#include \"glints/binomial/area_shading.glsl\"\n#include \"glints/binomial/light_ndf_integral.glsl\"\n";
+    const std::string kIncludes = std::string("#include \"glints/binomial/area_shading.glsl\"\n#include \"glints/binomial/light_ndf_integral.glsl\"\n") +
+                                  kShadingPointAndLight;
     const char* kBody = R"(
 vec4 evaluate(vec4 a, vec4 b) {
   Surface s;
-  s.position = vec3(0.0);
-  s.normal = vec3(0.0, 0.0, 1.0);
-  s.tangent = vec3(1.0, 0.0, 0.0);
-  s.bitangent = vec3(0.0, 1.0, 0.0);
-  s.view = normalize(a.yzw);
-  s.alpha = vec2(a.x);
-  s.ndf = NDF_GGX;
-  s.f0 = vec3(1.0);
-  s.diffuse = vec3(0.0);
-  LightData L = lights[int(b.x)];
-  vec3 wo = toLocal(s, s.view);
-  vec3 centreDir = lightCentreDirection(L, s.position);
+  LightData L;
+  vec3 wo, centreDir;
+  shadingPointAndLight(a, b, s, L, wo, centreDir);
   GlintLtc ltc = glintLtc(s);
   float solidAngle = lightSolidAngle(L, s.position, centreDir);
   if (b.y > 0.5) {  // the GGX lobe's LTC integral with the D-only magnitude (light_probability = ggx-ltc)
@@ -426,21 +437,12 @@ TEST(GlintLightProbability, ALongThinLightIsNotSmall) {
       a.emplace_back(static_cast<float>(alpha), glm::vec3(kThinView));
       b.emplace_back(static_cast<float>(i), 0, 0, 0);
     }
-  const auto got = evaluate_glsl("#include \"glints/binomial/area_shading.glsl\"\n", R"(
+  const auto got = evaluate_glsl(std::string("#include \"glints/binomial/area_shading.glsl\"\n") + kShadingPointAndLight, R"(
 vec4 evaluate(vec4 a, vec4 b) {
   Surface s;
-  s.position = vec3(0.0);
-  s.normal = vec3(0.0, 0.0, 1.0);
-  s.tangent = vec3(1.0, 0.0, 0.0);
-  s.bitangent = vec3(0.0, 1.0, 0.0);
-  s.view = normalize(a.yzw);
-  s.alpha = vec2(a.x);
-  s.ndf = NDF_GGX;
-  s.f0 = vec3(1.0);
-  s.diffuse = vec3(0.0);
-  LightData L = lights[int(b.x)];
-  vec3 wo = toLocal(s, s.view);
-  vec3 centreDir = lightCentreDirection(L, s.position);
+  LightData L;
+  vec3 wo, centreDir;
+  shadingPointAndLight(a, b, s, L, wo, centreDir);
   float solidAngle = lightSolidAngle(L, s.position, centreDir);
   GlintLtc ltc = glintLtc(s);
   vec3 p = glintProbabilityEstimates(s, ltc, L, wo, centreDir, solidAngle, ltcLightIntegral(s, L, ltc.ndfMinv, false));

@@ -2,9 +2,8 @@
 // deliot2023 driven by the probability that a facet reflects the light (the D-only LTC, or the GGX
 // LTC's integral with the D-only magnitude, for large lights; the small-cap NDF for small ones),
 // the glint factor scaling the light's LTC integral; optionally the light cut into 2 x 2 or 4 x 4
-// cells split hierarchically. Other materials are
-// shaded as by `conventional`. Descriptor: src/shading/methods/kneiphof2024.cpp;
-// docs/methods.md#kneiphof2024.
+// cells split hierarchically. Other materials are shaded as by `conventional`. Descriptor:
+// src/shading/methods/kneiphof2024.cpp; docs/methods.md#kneiphof2024.
 #include "lobe/lobe.glsl"
 #include "lobe/lobe_shading.glsl"
 

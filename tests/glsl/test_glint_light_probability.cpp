@@ -156,6 +156,22 @@ void shadingPointAndLight(vec4 a, vec4 b, out Surface s, out LightData L, out ve
 }
 )";
 
+/// Runs `body` on every (a, b) with the lights of `light_toml` in the scene's buffer (a light far
+/// away from a tiny sphere: the scene exists for its lights) and the LTC tables bound.
+std::vector<glm::vec4> evaluate_under_lights(const std::string& light_toml, const std::string& includes,
+                                             const std::string& body, const std::vector<glm::vec4>& a,
+                                             const std::vector<glm::vec4>& b) {
+  TestScene scene;
+  scene.material("m").sphere("m", {{"radius", 0.01}, {"translate", {0, -100, 0}}});
+  scene.raw(light_toml);
+  SceneFixture f(scene);
+  f.gpu->bind_buffers();
+  static GpuTables tables(test_table_cache());
+  tables.require(std::vector<std::string>{"ltc-ggx", "ltc-ndf"});
+  tables.bind();
+  return evaluate_glsl(includes + kShadingPointAndLight, body, a, b);
+}
+
 struct Result {
   double exact, ltc, cap, used, numerical;
   double reused_ltc, reused_used;  // light_probability = ggx-ltc: the LTC estimate, and blended
@@ -166,16 +182,8 @@ struct Result {
 const std::vector<std::pair<Light, std::vector<Result>>>& sweep() {
   static const auto results = [] {
     const auto lights = sweep_lights();
-    TestScene scene;
-    scene.material("m").sphere("m", {{"radius", 0.01}, {"translate", {0, -100, 0}}});
     std::string text;
     for (const auto& l : lights) text += toml_of(l);
-    scene.raw(text);
-    SceneFixture f(scene);
-    f.gpu->bind_buffers();
-    static GpuTables tables(test_table_cache());
-    tables.require(std::vector<std::string>{"ltc-ggx", "ltc-ndf"});
-    tables.bind();
     std::vector<glm::vec4> a, b;
     for (std::size_t i = 0; i < lights.size(); ++i)
       for (double alpha : kAlphas) {
@@ -183,8 +191,7 @@ const std::vector<std::pair<Light, std::vector<Result>>>& sweep() {
         a.emplace_back(static_cast<float>(alpha), static_cast<float>(std::sin(v)), 0.0f, static_cast<float>(std::cos(v)));
         b.emplace_back(static_cast<float>(i), 0, 0, 0);
       }
-    const std::string kIncludes = std::string("#include \"glints/binomial/area_shading.glsl\"\n#include \"glints/binomial/light_ndf_integral.glsl\"\n") +
-                                  kShadingPointAndLight;
+    const char* kIncludes = "#include \"glints/binomial/area_shading.glsl\"\n#include \"glints/binomial/light_ndf_integral.glsl\"\n";
     const char* kBody = R"(
 vec4 evaluate(vec4 a, vec4 b) {
   Surface s;
@@ -203,9 +210,9 @@ vec4 evaluate(vec4 a, vec4 b) {
                     ggxTotalNdf(a.x);
   return vec4(p.x, p.y, mix(p.x, p.y, p.z), numerical);
 })";
-    const auto got = evaluate_glsl(kIncludes, kBody, a, b);
+    const auto got = evaluate_under_lights(text, kIncludes, kBody, a, b);
     for (auto& v : b) v.y = 1;
-    const auto reused = evaluate_glsl(kIncludes, kBody, a, b);
+    const auto reused = evaluate_under_lights(text, kIncludes, kBody, a, b);
     std::vector<std::pair<Light, std::vector<Result>>> out;
     std::size_t k = 0;
     for (const auto& l : lights) {
@@ -409,8 +416,6 @@ TEST(GlintLightProbability, ALongThinLightIsNotSmall) {
   // integral; against quadrature over the light's surface.
   const auto lights = thin_lights();
   const std::vector<double> alphas = {0.1, 0.2};
-  TestScene scene;
-  scene.material("m").sphere("m", {{"radius", 0.01}, {"translate", {0, -100, 0}}});
   std::string text;
   char buf[512];
   for (const auto& l : lights) {
@@ -425,19 +430,13 @@ TEST(GlintLightProbability, ALongThinLightIsNotSmall) {
                     l.centre.x, l.centre.y, l.centre.z, l.normal.x, l.normal.y, l.normal.z, 0.5 * l.size.x);
     text += buf;
   }
-  scene.raw(text);
-  SceneFixture f(scene);
-  f.gpu->bind_buffers();
-  static GpuTables tables(test_table_cache());
-  tables.require(std::vector<std::string>{"ltc-ggx", "ltc-ndf"});
-  tables.bind();
   std::vector<glm::vec4> a, b;
   for (std::size_t i = 0; i < lights.size(); ++i)
     for (double alpha : alphas) {
       a.emplace_back(static_cast<float>(alpha), glm::vec3(kThinView));
       b.emplace_back(static_cast<float>(i), 0, 0, 0);
     }
-  const auto got = evaluate_glsl(std::string("#include \"glints/binomial/area_shading.glsl\"\n") + kShadingPointAndLight, R"(
+  const auto got = evaluate_under_lights(text, "#include \"glints/binomial/area_shading.glsl\"\n", R"(
 vec4 evaluate(vec4 a, vec4 b) {
   Surface s;
   LightData L;

@@ -32,9 +32,13 @@ void write_frame(const std::filesystem::path& dir, const std::string& stem, cons
 
 void write_reference(const std::filesystem::path& dir, const std::string& stem, const ReferenceFrame& reference,
                      const Film& film) {
+  // The passes' standard error, and the stated error (+-2 of it: about 95% of references hold the
+  // truth; docs/methods.md, "Ground truth"). With one pass neither is known: both are 0.
+  const Image stated = reference.passes >= 2 ? reference.stated_error() : reference.standard_error;
   write_exr(dir / (stem + ".exr"), {{"", &reference.mean.total},
                                     {"specular", &reference.mean.specular},
-                                    {"standard_error", &reference.standard_error}});
+                                    {"standard_error", &reference.standard_error},
+                                    {"stated_error", &stated}});
   write_png(dir / (stem + ".png"), tonemap_for_display(reference.mean.total, film.exposure, film.bloom));
 }
 

@@ -2,8 +2,11 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
+#include <mutex>
 
 #include "core/error.hpp"
+#include "core/student_t.hpp"
 
 namespace glintlab {
 
@@ -30,6 +33,38 @@ double ReferenceFrame::noise_rmse() const {
   return std::sqrt(sum / (3.0 * static_cast<double>(standard_error.pixel_count())));
 }
 
+double ReferenceFrame::interval_scale() const {
+  if (passes < 2) return std::numeric_limits<double>::quiet_NaN();
+  // Computed once per pass count (a numerical quantile: about a millisecond).
+  static std::mutex mutex;
+  static std::map<int, double> scales;
+  const std::lock_guard lock(mutex);
+  auto [it, added] = scales.try_emplace(passes, 0.0);
+  if (added) it->second = student_t_quantile(0.975, passes - 1) / student_t_quantile(0.975, 1000000);
+  return it->second;
+}
+
+Image ReferenceFrame::stated_error() const {
+  const int w = standard_error.width(), h = standard_error.height();
+  Image out(w, h);
+  const double scale = interval_scale();
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      glm::dvec3 squares(0.0);
+      int n = 0;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          if (x + dx < 0 || y + dy < 0 || x + dx >= w || y + dy >= h) continue;
+          const glm::dvec3 e(standard_error.at(x + dx, y + dy));
+          squares += e * e;
+          ++n;
+        }
+      const glm::dvec3 own(standard_error.at(x, y));
+      out.at(x, y) = glm::vec3(scale * glm::max(own, glm::sqrt(squares / double(n))));
+    }
+  return out;
+}
+
 double ReferenceFrame::relative_energy_error(bool specular) const {
   const auto& values = specular ? pass_luminance_specular : pass_luminance;
   const auto n = static_cast<double>(values.size());
@@ -38,7 +73,7 @@ double ReferenceFrame::relative_energy_error(bool specular) const {
   for (double v : values) sum += v, squares += v * v;
   const double mean = sum / n;
   const double var = std::max(squares - n * mean * mean, 0.0) / (n - 1.0);
-  return mean > 0.0 ? std::sqrt(var / n) / mean : 0.0;
+  return mean > 0.0 ? interval_scale() * std::sqrt(var / n) / mean : 0.0;
 }
 
 ReferenceAccumulator::ReferenceAccumulator(int width, int height, int spp_per_pass)

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/metrics.hpp"
+#include "core/student_t.hpp"
 
 using namespace glintlab;
 
@@ -46,4 +47,17 @@ TEST(Image, NonFiniteCount) {
   img.at(0, 0).r = std::nanf("");
   img.at(2, 0).b = INFINITY;
   EXPECT_EQ(img.count_non_finite(), 2u);
+}
+
+// Student's t against its tabulated quantiles (e.g. Abramowitz & Stegun, table 26.10) and the
+// normal limit.
+TEST(StudentT, QuantilesMatchTheTables) {
+  EXPECT_NEAR(glintlab::student_t_quantile(0.975, 1), 12.7062, 1e-3);
+  EXPECT_NEAR(glintlab::student_t_quantile(0.975, 3), 3.18245, 1e-4);
+  EXPECT_NEAR(glintlab::student_t_quantile(0.975, 15), 2.13145, 1e-4);
+  EXPECT_NEAR(glintlab::student_t_quantile(0.95, 10), 1.81246, 1e-4);
+  EXPECT_NEAR(glintlab::student_t_quantile(0.975, 1000000), 1.95996, 1e-4);
+  EXPECT_NEAR(glintlab::student_t_quantile(0.025, 3), -3.18245, 1e-4);
+  EXPECT_NEAR(glintlab::student_t_cdf(0.0, 5), 0.5, 1e-12);
+  EXPECT_NEAR(glintlab::student_t_cdf(1.0, 1), 0.75, 1e-9);  // Cauchy: 1/2 + atan(1)/pi
 }

@@ -268,3 +268,76 @@ TEST(Reference, AutoTargetIsAFractionOfTheSmallestDifferenceRanked) {
   EXPECT_NEAR(reference_noise_target(reference, {&b}, 0.5), 0.35, 1e-6);
   EXPECT_EQ(reference_noise_target(reference, {}, 0.1), 0.0);
 }
+
+// The stated errors hold up over many seeds: independent 64-spp references (4 passes, 3 degrees of
+// freedom) of a scene, each against a 4096-spp one of another seed, contain it within two stated
+// errors about 95% of the time, for the image's energy (the passes' spread, widened by Student's t)
+// and per pixel (stated_error). Two unwidened standard errors cover about 86% at 3 degrees of
+// freedom; per pixel, Student's t alone about 89% (a pixel's four passes can all miss a rare
+// bright sample).
+namespace {
+
+struct Coverage {
+  double energy, energy_unwidened, pixels, pixels_own;
+  long pixels_counted;
+};
+
+Coverage stated_error_coverage(SceneFixture& f, int width, int height, int references) {
+  const Camera& camera = f.scene.camera;
+  const ReferenceFrame truth = f.reference_at(camera, width, height, {.spp = 4096, .light_samples = 4, .seed = 100000});
+  const double truth_energy = luminance(glm::vec3(truth.mean.total.mean()));
+  int energy_covered = 0, energy_unwidened = 0;
+  long covered = 0, covered_own = 0, counted = 0;
+  for (int seed = 1; seed <= references; ++seed) {
+    const ReferenceFrame r = f.reference_at(camera, width, height, {.spp = 64, .light_samples = 4, .seed = seed});
+    EXPECT_EQ(r.passes, 4);
+    const double gap = std::abs(luminance(glm::vec3(r.mean.total.mean())) / truth_energy - 1.0);
+    energy_covered += gap <= 2.0 * r.relative_energy_error();
+    energy_unwidened += gap <= 2.0 * r.relative_energy_error() / r.interval_scale();
+    const Image stated = r.stated_error();
+    for (std::size_t i = 0; i < r.mean.total.pixel_count(); ++i) {
+      if (!(luminance(truth.standard_error.pixels()[i]) > 0.0f)) continue;  // a pixel without noise
+      const double d = std::abs(luminance(r.mean.total.pixels()[i]) - luminance(truth.mean.total.pixels()[i]));
+      covered += d <= 2.0 * luminance(stated.pixels()[i]);
+      covered_own += d <= 2.0 * r.interval_scale() * luminance(r.standard_error.pixels()[i]);
+      ++counted;
+    }
+  }
+  return {double(energy_covered) / references, double(energy_unwidened) / references,
+          double(covered) / double(counted), double(covered_own) / double(counted), counted};
+}
+
+}  // namespace
+
+TEST(Reference, StatedErrorsCoverTheTruth) {
+  // A glossy sphere and floor under a sphere light and a sun; a bumpy near-mirror floor under a
+  // small disk light (sub-pixel highlights: skewed pixel values).
+  SceneFixture glossy(TestScene()
+                          .film(12, 10)
+                          .camera({0, 1.0, 2.6}, {0, 0.25, 0}, 35)
+                          .material("glossy", {{"alpha", 0.15}, {"f0", {0.9, 0.9, 0.9}}, {"diffuse", 0.2}})
+                          .plane("glossy", {{"size", 4}})
+                          .sphere("glossy", {{"radius", 0.4}, {"translate", {0, 0.4, 0}}})
+                          .sphere_light({0.6, 1.6, 0.4}, 0.25, 30, {{"visible", false}})
+                          .directional_light({0.3, -1, -0.4}, 1, {{"angular_radius", 2}}));
+  SceneFixture bumpy(TestScene()
+                         .film(12, 10)
+                         .camera({0, 1.2, 2.4}, {0, 0, 0}, 35)
+                         .material("bumpy", {{"alpha", 0.03},
+                                             {"f0", {0.9, 0.9, 0.9}},
+                                             {"diffuse", 0.05},
+                                             {"normal_map", TomlKeys{{"generator", "bumps"}, {"alpha", 0.2}, {"resolution", 128}}},
+                                             {"normal_map_tiling", 4}})
+                         .plane("bumpy", {{"size", 4}})
+                         .disk_light({0.3, 2, -1.5}, {-0.1, -1, 0.7}, 0.15, 200, {{"visible", false}}));
+  for (const auto& [name, fixture] : {std::pair{"glossy", &glossy}, std::pair{"bumpy", &bumpy}}) {
+    const Coverage c = stated_error_coverage(*fixture, 12, 10, 120);
+    std::printf("%s: within two stated errors: energy %.3f (unwidened %.3f), per pixel %.3f (own, widened %.3f) "
+                "over %ld\n", name, c.energy, c.energy_unwidened, c.pixels, c.pixels_own, c.pixels_counted);
+    EXPECT_GT(c.pixels_counted, 40 * 120) << name;
+    EXPECT_GE(c.energy, 0.89) << name;
+    EXPECT_LE(c.energy, 0.995) << name;
+    EXPECT_GE(c.pixels, 0.92) << name;
+    EXPECT_LE(c.pixels, 0.99) << name;
+  }
+}

@@ -28,7 +28,7 @@ inline GlContext& context() {
 
 inline ShaderLibrary& shaders() {
   context();
-  static ShaderLibrary lib;
+  static ShaderLibrary lib(choose_driver_profile(context()));
   static const bool generated = (add_contract_sources(lib), true);  // generated/*.glsl (shader_contract.hpp)
   (void)generated;
   return lib;

@@ -25,6 +25,12 @@ LightImage lightImage(vec3 wo, vec3 lc, vec3 dl1, vec3 dl2) {
   return image;
 }
 
+// The diffuse term of a light with extent, the light as a point at its centre (of direction
+// centreDir and projected solid angle solidAngle).
+vec3 centreDiffuse(Surface s, LightData L, vec3 centreDir, float solidAngle) {
+  return diffuseCos(s.diffuse, toLocal(s, centreDir)) * lightRadiance(L) * solidAngle;
+}
+
 // One light with a given lobe: exact for delta lights. For lights with extent (docs/methods.md,
 // "Lobes"), the integral over the light of f cos = D G F (wo.h) / wo.z per unit half-vector solid
 // angle, which in slope space (d omega_h = h.z^3 ds, D = P22 / h.z^4) is
@@ -46,8 +52,7 @@ Radiance shadeLobe(Surface s, LightData L, Lobe lobe) {
   float sinHalf = sqrt(min(solidAngle / PI, 1.0));  // sine of the cone of equal (projected) solid angle
   vec3 radiance = lightRadiance(L);
 
-  // Diffuse: the light as a point at its centre.
-  result.diffuse = diffuseCos(s.diffuse, toLocal(s, centreDir)) * radiance * solidAngle;
+  result.diffuse = centreDiffuse(s, L, centreDir, solidAngle);
 
   vec3 r = reflect(-s.view, s.normal);
   vec3 l = lightRepresentativeDirection(L, s.position, r, centreDir, sinHalf);

@@ -3,6 +3,7 @@
 // glintlab's lobe extension. Pure: the corner rays come in as data (podee/pixel_corners.glsl
 // builds them in the forward pass), so tests run this on the device with any configuration.
 // Derivations: docs/methods.md#podee.
+#include "core/driver_profile.glsl"
 #include "lobe/lobe_shading.glsl"
 #include "podee/reflection_space.glsl"
 
@@ -139,19 +140,23 @@ LightData reflectionSpaceLight(Surface s, LightData L, LightPlane plane, vec2 un
   return wide;
 }
 
-// Reflected radiance of a light with a disk form (disk, sphere, sun) through the pixel whose
-// corner rays are `corners`. Other kinds of light are not handled here.
-Radiance shadeReflectionSpace(Surface s, LightData L, CornerRays corners, Lobe lobe, ReflectionSpaceOptions options) {
-  LightPlane plane = lightPlane(L, s.position, options.area == AREA_EXACT);
-  float angularRadius = plane.angularRadius;
-  // Nothing from a light whose emitting side p does not see, or that lies wholly below the
-  // surface's tangent plane (whatever the normal map says).
-  if (!plane.valid || dot(plane.l, s.vertexNormal) < -sin(angularRadius)) return Radiance(vec3(0.0), vec3(0.0));
+// What the reflection space makes of a light with a disk form: the podee term (Fresnel x coverage
+// x radiance at the selected reflection vector), its weight in the pixel's specular, and the
+// light the smooth shading of the rest takes (the light itself, or the light widened by the
+// reflection space: reflectionSpaceLight).
+struct ReflectionSpaceTerm {
+  vec3 specular;
+  float weight;
+  LightData smoothLight;
+};
 
-  // The smooth shading of `conventional` (never the mirror path): the diffuse term, and the
-  // specular term where the lobe is wider than the reflection space.
-  Radiance result = shadeLobe(s, L, lobe);
-  if (dot(s.view, s.vertexNormal) <= 0.0) return result;
+ReflectionSpaceTerm reflectionSpaceTerm(Surface s, LightData L, LightPlane plane, CornerRays corners, Lobe lobe,
+                                        ReflectionSpaceOptions options) {
+  // Where the reflection space does not apply, the smooth shading of `conventional` (never the
+  // mirror path) takes the whole specular term.
+  ReflectionSpaceTerm term = ReflectionSpaceTerm(vec3(0.0), 0.0, L);
+  if (dot(s.view, s.vertexNormal) <= 0.0) return term;
+  float angularRadius = plane.angularRadius;
 
   // Lobe extension: the light convolved with the lobe is approximated by the light scaled by
   // 1/sqrt(P) with radiance P L (same energy, same peak). P = 1 for a mirror (the paper).
@@ -178,7 +183,7 @@ Radiance shadeReflectionSpace(Surface s, LightData L, CornerRays corners, Lobe l
   vec2 closest = closestPointInConvexQuad(q, vec2(0.0));
   vec3 selected = plane.centre + closest.x * axes.x * plane.u + closest.y * axes.y * plane.w;
   vec3 l = normalize(selected - s.position);
-  if (dot(l, s.vertexNormal) <= 0.0) return result;  // the light is below this surface
+  if (dot(l, s.vertexNormal) <= 0.0) return term;  // the light is below this surface
 
   // Result weighting (sec. 3.2): the fraction of the pixel whose reflection reaches the light.
   // Under the paper's assumption, a constant Jacobian from the pixel to the plane, it is the
@@ -221,14 +226,34 @@ Radiance shadeReflectionSpace(Surface s, LightData L, CornerRays corners, Lobe l
   // view, where the corners are extrapolated past the silhouette).
   float blurSolidAngle = lightSolidAngle(L, s.position, plane.l) * (scale * scale - 1.0);
   float resolved = blurSolidAngle > 0.0 ? spaceSolidAngle / (spaceSolidAngle + blurSolidAngle) : 1.0;
-  float podeeWeight = resolved * mass;
-  if (podeeWeight < 1.0) {
+  term.weight = resolved * mass;
+  term.specular = podee;
+  if (term.weight < 1.0) {
     vec2 q1[4];
     for (int i = 0; i < 4; ++i) q1[i] = q[i] * scale;
     float grazing = clamp(2.0 * wo.z, 0.0, 1.0);
-    LightData wide = reflectionSpaceLight(s, L, plane, axes / scale, q1, resolved * grazing * grazing);
-    result.specular = shadeLobe(s, wide, lobe).specular;
+    term.smoothLight = reflectionSpaceLight(s, L, plane, axes / scale, q1, resolved * grazing * grazing);
   }
-  result.specular = mix(result.specular, podee, podeeWeight);
+  return term;
+}
+
+// Reflected radiance of a light with a disk form (disk, sphere, sun) through the pixel whose
+// corner rays are `corners`. Other kinds of light are not handled here. The specular term is the
+// weighted sum of the podee term and of one smooth shading (of the light or of its widened form),
+// the latter computed where its weight is not 0 (core/driver_profile.glsl).
+Radiance shadeReflectionSpace(Surface s, LightData L, CornerRays corners, Lobe lobe, ReflectionSpaceOptions options) {
+  LightPlane plane = lightPlane(L, s.position, options.area == AREA_EXACT);
+  // Nothing from a light whose emitting side p does not see, or that lies wholly below the
+  // surface's tangent plane (whatever the normal map says).
+  if (!plane.valid || dot(plane.l, s.vertexNormal) < -sin(plane.angularRadius)) return Radiance(vec3(0.0), vec3(0.0));
+  Radiance result = Radiance(vec3(0.0), vec3(0.0));
+  vec3 centreDir = lightCentreDirection(L, s.position);
+  float solidAngle = lightSolidAngle(L, s.position, centreDir);
+  if (toLocal(s, s.view).z <= 0.0 || solidAngle <= 0.0) return result;  // as shadeLobe
+  result.diffuse = centreDiffuse(s, L, centreDir, solidAngle);
+  ReflectionSpaceTerm term = reflectionSpaceTerm(s, L, plane, corners, lobe, options);
+  result.specular = term.weight * term.specular;
+  if (blendSideNeeded(term.weight < 1.0))
+    result.specular += (1.0 - term.weight) * shadeLobe(s, term.smoothLight, lobe).specular;
   return result;
 }

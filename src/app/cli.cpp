@@ -12,11 +12,14 @@
 #include "eval/outputs.hpp"
 #include "eval/prefilter_report.hpp"
 #include "prefilter/prefilter_params.hpp"
+#include "eval/program_command.hpp"
 #include "eval/progress.hpp"
 #include "eval/report.hpp"
 #include "eval/session.hpp"
+#include "gl/driver_profile.hpp"
 #include "render/reference_cache.hpp"
 #include "tables/gpu_tables.hpp"
+#include "scene/materials/material_kind.hpp"
 #include "scene/materials/material_reference.hpp"
 #include "scene/scene_loader.hpp"
 #include "shading/method_reference.hpp"
@@ -121,6 +124,8 @@ void print_info() {
             << "renderer:        " << i.renderer << (ctx->is_software() ? " (software)" : "") << "\n"
             << "version:         " << i.version << "\n"
             << "GLSL:            " << i.glsl_version << "\n"
+            << "driver profile:  " << driver_profile_id(choose_driver_profile(*ctx))
+            << " (GLINTLAB_DRIVER_PROFILE=auto|software|hardware; docs/methods.md, \"Driver profiles\")\n"
             << "limits used:\n"
             << "  max texture size          " << i.max_texture_size << "\n"
             << "  max array texture layers  " << i.max_array_layers << "\n"
@@ -258,6 +263,22 @@ int run_cli(int argc, char** argv) {
   prefilter->add_flag("--no-cache", prefilter_no_cache, "precompute even if the cache holds the pyramid");
   prefilter->add_option("-o,--out", prefilter_json, "also write the report as JSON to this file");
 
+  ProgramOptions program_o;
+  auto* program = app.add_subcommand(
+      "program", "print a forward program's GLSL as the driver gets it (includes expanded, the variant's defines)");
+  program->add_option("--method", program_o.method,
+                      "a method or variant (as --methods takes one), or a pass: reference, reference-realisation, "
+                      "unshaded")->default_str(program_o.method);
+  program->add_option("--param", program_o.params, "a method parameter, as the rendering commands take it");
+  program->add_option("--material-kind", program_o.material_kind, "the material's kind (see 'glintlab materials')")
+      ->default_str(default_material_kind().id);
+  program->add_flag("--normal-map", program_o.normal_map, "the material has a normal map");
+  program->add_flag("--textures", program_o.textures, "the material's parameters vary per texel (glTF's textures)");
+  program->add_option("--lights", program_o.lights, "lights of each kind, KIND=COUNT,...")->default_str(program_o.lights);
+  program->add_option("--stage", program_o.stage, "fragment or vertex")->default_str(program_o.stage);
+  program->add_option("--driver-profile", program_o.driver_profile,
+                      "software or hardware (docs/methods.md, \"Driver profiles\")")->default_str(program_o.driver_profile);
+
   auto* report = app.add_subcommand("report", "a static HTML page (index.html, assets/) of compare, animate and bench "
                                                "outputs: sortable metrics, a reference/method slider, videos, plots");
   std::vector<std::string> report_inputs;
@@ -314,6 +335,8 @@ int run_cli(int argc, char** argv) {
       run_prefilter_report(load_scene(prefilter_scene), prefilter_o);
     } else if (app.got_subcommand("view")) {
       return run_view(view_o, view_options);
+    } else if (app.got_subcommand("program")) {
+      std::cout << program_source(program_o);
     } else if (app.got_subcommand("report")) {
       run_report({report_inputs.begin(), report_inputs.end()}, report_out);
     } else if (app.got_subcommand("bench")) {

@@ -106,7 +106,7 @@ static_assert(kMaxMaterials * sizeof(MaterialGpu) <= 16384, "the material block 
   X(mat4, view_proj, "world to clip space")                                                \
   X(vec4, camera_pos, "xyz: camera position (world); w: 1 perspective, 0 orthographic")    \
   X(vec4, camera_forward, "xyz: the view direction (orthographic cameras)")                \
-  X(ivec4, target, "xy: render-target size (pixels); z: sub-pixels per axis k")            \
+  X(ivec4, target, "xy: render-target size (pixels); z: sub-pixels per axis k; w: 0, a zero no compiler can see (rolled loops)") \
   X(ivec4, tile, "xy: tile origin in sub-pixels of the whole film; z: light samples; w: seed")
 struct FrameUniforms {
   GLINTLAB_FRAME_FIELDS(GLINTLAB_STD140_MEMBER)

@@ -117,6 +117,7 @@ Session::Session(const CommonOptions& options, std::optional<Workload> workload,
     require_memory(estimate_run_memory(*workload, width_, height_, scene_), *workload, width_, height_, *available);
   context_ = make_context();
   device_ = context_->info().renderer;
+  shaders_.set_driver_profile(choose_driver_profile(*context_));
   gpu_scene_ = std::make_unique<GpuScene>(
       scene_, TableCache(default_table_cache_directory(), terminal_table_observer(!options.quiet)));
   // The chosen methods' tables now, rather than inside their first (perhaps timed) frame.

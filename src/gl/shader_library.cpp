@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/error.hpp"
 #include "core/hash.hpp"
@@ -13,8 +14,14 @@ namespace glintlab {
 
 const std::map<std::string, std::string_view>& embedded_shaders();  // generated at build time
 
-ShaderLibrary::ShaderLibrary() {
+ShaderLibrary::ShaderLibrary(DriverProfile profile) : profile_(profile) {
   if (const char* dir = std::getenv("GLINTLAB_SHADER_DIR")) directory_ = dir;
+}
+
+void ShaderLibrary::set_driver_profile(DriverProfile profile) {
+  if (profile != profile_ && !programs_.empty())
+    throw std::logic_error("ShaderLibrary::set_driver_profile after programs were linked");
+  profile_ = profile;
 }
 
 bool ShaderLibrary::exists(const std::string& path) const {
@@ -99,7 +106,7 @@ std::string ShaderLibrary::expand(const std::string& path, const ShaderDefines& 
   std::string body;
   std::vector<std::string> files;
   expand_into(path, body, files, 0, defines);
-  std::string out = "#version 450 core\n";
+  std::string out = "#version 450 core\n#define DRIVER_PROFILE " + driver_profile_define_value(profile_) + "\n";
   for (const auto& [k, v] : defines)
     if (!k.starts_with("$")) out += "#define " + k + " " + v + "\n";
   out += "// files: ";

@@ -1,13 +1,15 @@
 #pragma once
 // GLSL sources by path (relative to shaders/), with #include resolution, #define variants and a
 // cache of linked programs. Sources are embedded in the binary; GLINTLAB_SHADER_DIR points the
-// library at a source tree instead (for editing shaders without rebuilding).
+// library at a source tree instead (for editing shaders without rebuilding). Every program it
+// expands is compiled in one driver profile (gl/driver_profile.hpp): the define DRIVER_PROFILE.
 #include <map>
 #include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "gl/driver_profile.hpp"
 #include "gl/objects.hpp"
 
 namespace glintlab {
@@ -16,7 +18,12 @@ using ShaderDefines = std::vector<std::pair<std::string, std::string>>;
 
 class ShaderLibrary {
  public:
-  ShaderLibrary();
+  explicit ShaderLibrary(DriverProfile profile = DriverProfile::Software);
+
+  /// The profile every program is expanded in; set before the first program is linked (throws
+  /// std::logic_error after: the linked programs would be of the other profile).
+  void set_driver_profile(DriverProfile profile);
+  [[nodiscard]] DriverProfile driver_profile() const { return profile_; }
 
   /// Adds (or replaces) an in-memory source file, e.g. a test harness; it takes precedence.
   void add_source(const std::string& path, std::string text) { virtual_[path] = std::move(text); }
@@ -28,7 +35,8 @@ class ShaderLibrary {
   [[nodiscard]] std::vector<std::string> paths() const;
 
   /// Full GLSL 4.50 text of `path` with defines and includes expanded (each file once). A define
-  /// whose name starts with '$' is not emitted; it names the file for `#include "$NAME"`.
+  /// whose name starts with '$' is not emitted; it names the file for `#include "$NAME"`. The
+  /// library's driver profile comes first, as `#define DRIVER_PROFILE`.
   [[nodiscard]] std::string expand(const std::string& path, const ShaderDefines& defines) const;
 
   /// Linked program from a vertex and a fragment shader; cached by paths and defines.
@@ -46,6 +54,7 @@ class ShaderLibrary {
                    const ShaderDefines& defines) const;
 
   std::string directory_;  // empty: embedded sources
+  DriverProfile profile_;
   std::map<std::string, gl::Program> programs_;
   std::map<std::string, std::string> virtual_;
 };

@@ -154,6 +154,7 @@ Renderer::FrameUniforms Renderer::frame_uniforms(const Camera& camera, const glm
   f.camera_pos = {camera.position, camera.projection == Projection::Perspective ? 1.0f : 0.0f};
   f.camera_forward = glm::vec4(glm::normalize(camera.target - camera.position), 0.0f);
   f.target = target;
+  f.target.w = 0;  // the hardware profile's rolled light loops add it to their counts (lights/light_loop.glsl)
   f.tile = tile;
   return f;
 }

@@ -56,6 +56,10 @@ struct MethodDescriptor {
   /// Ids of the light kinds the module builds lights of itself (podee's widened quad): compiled
   /// into its programs whatever kinds the scene has (src/render/renderer.cpp, forward_variant).
   std::vector<std::string> light_kinds_built = {};
+  /// Ids of the material kinds the module has code of its own for (`#if MATERIAL_KIND ==
+  /// MATERIAL_KIND_<ID>`: deliot2023's binomial-glints); every other kind it shades through the
+  /// material interface (its smooth lobe, as conventional). Empty: it treats every kind alike.
+  std::vector<std::string> material_kinds = {};
 
   [[nodiscard]] std::string module_path() const { return "methods/" + id + ".glsl"; }
   [[nodiscard]] const ParamDecl* find_param(const std::string& name) const;

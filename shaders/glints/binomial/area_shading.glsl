@@ -4,6 +4,7 @@
 // and their share found over the share expected, the glint factor g = share / p (E[g] = 1),
 // scales the smooth GGX's light integral: specular = g x integral over the light of f cos L dl.
 // The count is drawn at the slope-grid cell of the half vector towards the light's centre.
+#include "core/driver_profile.glsl"
 #include "glints/binomial/shading.glsl"
 #include "glints/binomial/light_probability.glsl"
 
@@ -37,6 +38,12 @@ struct GlintLightIntegral {
   vec3 hCentre;   // local half vector towards the light's centre: where the count is drawn
 };
 
+// The weight of the small cap's estimates for a light seen in local direction wi (glintCapWeight).
+float glintLightCapWeight(Surface s, GlintLtc ltc, LightData L, vec3 wo, vec3 wi, vec3 centreDir, float solidAngle) {
+  float angularRadius = lightLargestAngularRadius(L, s.position, centreDir, solidAngle);
+  return glintCapWeight(angularRadius, abs(dot(wi, normalize(wo + wi))), ltc.alpha);
+}
+
 // The two estimates of p and the cap's weight: (LTC, small cap, weight of the cap). `ltcIntegral`:
 // the integral over the light of the LTC that p's shape is taken from (the D-only table's, or the
 // GGX lobe's when reused: glintLightIntegral).
@@ -44,20 +51,30 @@ vec3 glintProbabilityEstimates(Surface s, GlintLtc ltc, LightData L, vec3 wo, ve
                                float ltcIntegral) {
   vec3 wi = toLocal(s, centreDir);
   float pCap = glintCapProbability(wo, wi, solidAngle, s.alpha, ltc.totalNdf);
-  float angularRadius = lightLargestAngularRadius(L, s.position, centreDir, solidAngle);
-  return vec3(ltc.ndfScale * ltcIntegral, pCap, glintCapWeight(angularRadius, abs(dot(wi, normalize(wo + wi))), ltc.alpha));
+  return vec3(ltc.ndfScale * ltcIntegral, pCap, glintLightCapWeight(s, ltc, L, wo, wi, centreDir, solidAngle));
 }
 
 // `reuseGgxShape` (a constant at every call; kneiphof2024's light_probability = ggx-ltc): p's
-// integral is the GGX lobe's, scaled by the D-only magnitude, instead of its own LTC's.
+// integral is the GGX lobe's, scaled by the D-only magnitude, instead of its own LTC's. The blend
+// of the LTC's and the cap's terms by the cap's weight w is a weighted sum whose sides are
+// computed where their weight is not 0 (core/driver_profile.glsl: the hardware profile skips the
+// LTC's integrals for small lights and the cap's terms for large ones).
 GlintLightIntegral glintLightIntegral(Surface s, GlintLtc ltc, LightData L, vec3 wo, vec3 centreDir, float solidAngle,
                                       const bool reuseGgxShape) {
-  float ggxIntegral = ltcLightIntegral(s, L, ltc.ggxMinv, false);
-  float shape = reuseGgxShape ? ggxIntegral : ltcLightIntegral(s, L, ltc.ndfMinv, false);
-  vec3 p = glintProbabilityEstimates(s, ltc, L, wo, centreDir, solidAngle, shape);
   vec3 wi = toLocal(s, centreDir);
-  vec3 specularPoint = specularCos(NDF_GGX, wo, wi, s.alpha, s.f0) * solidAngle;
-  return GlintLightIntegral(mix(ltc.ggxScale * ggxIntegral, specularPoint, p.z), mix(p.x, p.y, p.z), normalize(wo + wi));
+  float w = glintLightCapWeight(s, ltc, L, wo, wi, centreDir, solidAngle);
+  GlintLightIntegral g = GlintLightIntegral(vec3(0.0), 0.0, normalize(wo + wi));
+  if (blendSideNeeded(w < 1.0)) {
+    float ggxIntegral = ltcLightIntegral(s, L, ltc.ggxMinv, false);
+    float shape = reuseGgxShape ? ggxIntegral : ltcLightIntegral(s, L, ltc.ndfMinv, false);
+    g.specular += (1.0 - w) * (ltc.ggxScale * ggxIntegral);
+    g.p += (1.0 - w) * (ltc.ndfScale * shape);
+  }
+  if (blendSideNeeded(w > 0.0)) {
+    g.specular += w * (specularCos(NDF_GGX, wo, wi, s.alpha, s.f0) * solidAngle);
+    g.p += w * glintCapProbability(wo, wi, solidAngle, s.alpha, ltc.totalNdf);
+  }
+  return g;
 }
 
 // The glint factor g = share / p of the footprint's facets for probability p at half vector h

@@ -91,10 +91,16 @@ BinomialFootprint binomialFootprint(Footprint footprint, float screenSpaceScale)
   BinomialFootprint f;
   for (int q = 0; q < 4; ++q) {
     bool fine = q <= k;
-    int n = fine ? q : q - 1;
-    float below = n > 0 ? cumulative[n - 1] : 0.0;
-    float weight = fine ? min(cumulative[n], split) - below : cumulative[n] - max(below, split);
-    f.grids[q] = binomialGrid(vertex[n].x, vertex[n].y, fine ? lod0 : lod0 + 1, max(weight, 0.0));
+    // Grid q is vertex n = q at the finer lod or n = q - 1 at the coarser: two candidates that are
+    // constants once the loop is unrolled, chosen by a select, so that no array here is indexed at
+    // run time (a GPU would keep vertex[] and cumulative[] in local memory; docs/shader-statistics.md).
+    int fineN = q < 2 ? q : 2, coarseN = q > 0 ? q - 1 : 0;
+    ivec2 at = fine ? vertex[fineN] : vertex[coarseN];
+    float upTo = fine ? cumulative[fineN] : cumulative[coarseN];
+    float below = fine ? (fineN > 0 ? cumulative[fineN > 0 ? fineN - 1 : 0] : 0.0)
+                       : (coarseN > 0 ? cumulative[coarseN > 0 ? coarseN - 1 : 0] : 0.0);
+    float weight = fine ? min(upTo, split) - below : upTo - max(below, split);
+    f.grids[q] = binomialGrid(at.x, at.y, fine ? lod0 : lod0 + 1, max(weight, 0.0));
   }
   return f;
 }

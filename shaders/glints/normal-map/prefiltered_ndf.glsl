@@ -94,28 +94,47 @@ float pndfPixelRangeSum(PndfHeader h, uint f, vec2 x0, vec2 x1) {
 
 // The level and position of a footprint N(centre, sigma^2) (texels) among the stored ones:
 // trilinear (sec. 4.1): bilinear over the four nearest centres of the two levels around
-// log2(sigma / sigma_0), clamped to the first and last level. footprint[q], weight[q], q < 8.
-void pndfInterpolation(PndfHeader h, vec2 centre, float sigma, out uint footprint[8], out float weight[8]) {
+// log2(sigma / sigma_0), clamped to the first and last level. Each level's cell is kept as
+// scalars and its eight footprints are enumerated by pndfCorner, so that no array is indexed at
+// run time in the loops over them (a GPU would keep such an array in local memory).
+struct PndfLevelCell {
+  uint first;     // the level's first footprint
+  ivec2 count;    // its footprints per axis
+  ivec2 origin;   // the cell's lower corner (footprint grid coordinates, not yet wrapped)
+  vec2 fraction;  // the centre's position in the cell
+  float weight;   // the level's trilinear weight
+};
+struct PndfInterpolation {
+  PndfLevelCell lower, upper;
+};
+
+PndfLevelCell pndfLevelCell(PndfHeader h, vec2 centre, int level, float levelWeight) {
+  const ivec2 count = ivec2(pndfLevelWord(h, level, 0u), pndfLevelWord(h, level, 1u));
+  const vec2 spacing = vec2(uintBitsToFloat(pndfLevelWord(h, level, 2u)), uintBitsToFloat(pndfLevelWord(h, level, 3u)));
+  const vec2 g = centre / spacing - 0.5;
+  const vec2 g0 = floor(g);
+  return PndfLevelCell(pndfLevelWord(h, level, 4u), count, ivec2(g0), g - g0, levelWeight);
+}
+
+PndfInterpolation pndfInterpolation(PndfHeader h, vec2 centre, float sigma) {
   const int last = h.levels - 1;
   const float sigma0 = uintBitsToFloat(pndfLevelWord(h, 0, 5u));
   const float lambda = clamp(log2(max(sigma, 1e-9) / sigma0), 0.0, float(last));
   const int l0 = min(int(lambda), last);
   const float t = lambda - float(l0);
-  for (int side = 0; side < 2; ++side) {
-    const int level = min(l0 + side, last);
-    const float levelWeight = side == 0 ? 1.0 - t : t;
-    const ivec2 count = ivec2(pndfLevelWord(h, level, 0u), pndfLevelWord(h, level, 1u));
-    const vec2 spacing = vec2(uintBitsToFloat(pndfLevelWord(h, level, 2u)), uintBitsToFloat(pndfLevelWord(h, level, 3u)));
-    const uint first = pndfLevelWord(h, level, 4u);
-    const vec2 g = centre / spacing - 0.5;
-    const vec2 g0 = floor(g), fr = g - g0;
-    for (int q = 0; q < 4; ++q) {
-      const ivec2 d = ivec2(q & 1, q >> 1);
-      const ivec2 p = ((ivec2(g0) + d) % count + count) % count;
-      footprint[side * 4 + q] = first + uint(p.y * count.x + p.x);
-      weight[side * 4 + q] = levelWeight * (d.x == 1 ? fr.x : 1.0 - fr.x) * (d.y == 1 ? fr.y : 1.0 - fr.y);
-    }
-  }
+  return PndfInterpolation(pndfLevelCell(h, centre, l0, 1.0 - t), pndfLevelCell(h, centre, min(l0 + 1, last), t));
+}
+
+// Footprint q (q < 8: q / 4 the level, q % 4 the corner of its cell) of the interpolation, and
+// its weight. The grid wraps around the map (the map tiles); floor division keeps negative
+// coordinates defined (GLSL leaves % of negative operands undefined).
+uint pndfCorner(PndfInterpolation interpolation, int q, out float weight) {
+  const PndfLevelCell c = q < 4 ? interpolation.lower : interpolation.upper;
+  const ivec2 d = ivec2(q & 1, (q >> 1) & 1);
+  const ivec2 g = c.origin + d;
+  const ivec2 p = g - c.count * ivec2(floor(vec2(g) / vec2(c.count)));
+  weight = c.weight * (d.x == 1 ? c.fraction.x : 1.0 - c.fraction.x) * (d.y == 1 ? c.fraction.y : 1.0 - c.fraction.y);
+  return c.first + uint(p.y * c.count.x + p.x);
 }
 
 vec2 pndfToPixels(PndfHeader h, vec2 s) { return (s + h.extent) * (float(h.n) / (2.0 * h.extent)); }
@@ -123,18 +142,18 @@ vec2 pndfToPixels(PndfHeader h, vec2 s) { return (s + h.extent) * (float(h.n) / 
 // P(s) of the footprint: pixels bilinearly interpolated (0 outside the image).
 float pndfDensity(int material, vec2 centre, float sigma, vec2 s) {
   const PndfHeader h = pndfHeader(material);
-  uint footprint[8];
-  float weight[8];
-  pndfInterpolation(h, centre, sigma, footprint, weight);
+  const PndfInterpolation interpolation = pndfInterpolation(h, centre, sigma);
   const vec2 x = pndfToPixels(h, s) - 0.5;
   const vec2 x0 = floor(x), fr = x - x0;
   float sum = 0.0;
   for (int q = 0; q < 8; ++q) {
-    if (weight[q] <= 0.0) continue;
+    float weight;
+    const uint footprint = pndfCorner(interpolation, q, weight);
+    if (weight <= 0.0) continue;
     for (int c = 0; c < 4; ++c) {
       const ivec2 d = ivec2(c & 1, c >> 1);
       const float w = (d.x == 1 ? fr.x : 1.0 - fr.x) * (d.y == 1 ? fr.y : 1.0 - fr.y);
-      sum += weight[q] * w * pndfPixel(h, footprint[q], int(x0.x) + d.x, int(x0.y) + d.y);
+      sum += weight * w * pndfPixel(h, footprint, int(x0.x) + d.x, int(x0.y) + d.y);
     }
   }
   return sum;
@@ -147,12 +166,13 @@ float pndfRangeMean(int material, vec2 centre, float sigma, vec2 lo, vec2 hi) {
   if (!(size.x > 0.0 && size.y > 0.0)) return pndfDensity(material, centre, sigma, 0.5 * (lo + hi));
   const vec2 x0 = clamp(pndfToPixels(h, lo), 0.0, float(h.n)), x1 = clamp(pndfToPixels(h, hi), 0.0, float(h.n));
   if (!(x1.x > x0.x && x1.y > x0.y)) return 0.0;
-  uint footprint[8];
-  float weight[8];
-  pndfInterpolation(h, centre, sigma, footprint, weight);
+  const PndfInterpolation interpolation = pndfInterpolation(h, centre, sigma);
   float sum = 0.0;
-  for (int q = 0; q < 8; ++q)
-    if (weight[q] > 0.0) sum += weight[q] * pndfPixelRangeSum(h, footprint[q], x0, x1);
+  for (int q = 0; q < 8; ++q) {
+    float weight;
+    const uint footprint = pndfCorner(interpolation, q, weight);
+    if (weight > 0.0) sum += weight * pndfPixelRangeSum(h, footprint, x0, x1);
+  }
   const float pixel = 2.0 * h.extent / float(h.n);
   return sum * pixel * pixel / (size.x * size.y);
 }

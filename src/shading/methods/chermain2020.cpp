@@ -17,6 +17,7 @@ MethodDescriptor chermain2020_method() {
                  "vector: curved surfaces alias. Materials without glints are shaded as by conventional.",
       .params = {glint_lean_param(false), glint_light_extent_param()},
       .tables = {"glint-dictionary"},
+      .material_kinds = {"glinty"},
   };
 }
 

@@ -27,6 +27,7 @@ MethodDescriptor chermain2021_method() {
                   {"projected", "slopes"}},
                  glint_light_extent_param()},
       .tables = {"glint-dictionary"},
+      .material_kinds = {"glinty"},
   };
 }
 

@@ -22,6 +22,7 @@ MethodDescriptor deliot2023_method() {
       .params = {binomial_screen_space_scale_param(), binomial_remaining_count_param()},
       // Other materials' lights with extent: conventional's default (area_lights = ltc).
       .tables = {"ltc-ggx"},
+      .material_kinds = {"binomial-glints"},
   };
 }
 

@@ -27,6 +27,7 @@ MethodDescriptor deng2022_method() {
                   {"yan2016", "clamp"}}},
       .tables = {"ltc-ggx"},  // other materials' lights with extent, as conventional
       .resources = {"prefiltered-ndf"},  // the normal-map-glints materials' pyramids of its precompute settings
+      .material_kinds = {"normal-map-glints"},
   };
   // The precompute's settings, declared with PrefilterSettings (src/prefilter/prefilter_params.hpp).
   for (ParamDecl& p : prefilter_params()) method.params.push_back(std::move(p));

@@ -41,6 +41,7 @@ MethodDescriptor kneiphof2024_method() {
                   "(the paper's sun: 6.8e-5)"}},
       // The D-only LTC for p, the GGX LTC for the smooth integral (also other materials' lights).
       .tables = {"ltc-ggx", "ltc-ndf"},
+      .material_kinds = {"binomial-glints"},
   };
 }
 

@@ -29,6 +29,7 @@ MethodDescriptor yan2016_method() {
                   {"1", "2"},
                   /*compile_time=*/true}},
       .tables = {"ltc-ggx"},  // other materials' lights with extent, as conventional
+      .material_kinds = {"normal-map-glints"},
   };
 }
 

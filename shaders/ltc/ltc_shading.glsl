@@ -7,9 +7,11 @@
 //
 // The frame (docs/methods.md, "Area lights by LTC"): z = the shading normal (normal-mapped), x =
 // the view's projection on the tangent plane, so the horizon is the shading normal's. The tables
-// are isotropic; a lobe of roughness matrix A is shaded as the isotropic GGX of the same peak,
-// alpha^2 = sqrt(det A), and a slope-space averaging box of half sides f adds its second moment
-// 2 f^2 / 3 to A's diagonal. Beckmann lobes have no table and keep the representative point.
+// are isotropic; a lobe of roughness matrix A is the isotropic table's LTC at the roughness along
+// the view, stretched about the mirror direction into A's shape (ltcLobe), with the magnitude and
+// Fresnel terms at the rms roughness sqrt(tr A / 2). A lobe averaged over a slope-space box is
+// first given the matrix of the same peak density (ltcLobeMatrix). Beckmann lobes have no table
+// and keep the representative point.
 #include "core/brdf.glsl"
 #include "lights/lights.glsl"
 #include "lobe/lobe.glsl"
@@ -17,13 +19,27 @@
 #include "ltc/ltc_tables.glsl"
 #include "core/surface.glsl"
 
-// The isotropic GGX alpha an LTC table is read at for a lobe (see above).
-float ltcLobeAlpha(Lobe lobe) {
+// The roughness matrix the LTC is built for. A matrix lobe's own A. A lobe averaged over a
+// slope-space box of half sides f: the box lobe's peak slope density is its average over the box
+// centred on the peak, P(0) = (the NDF's mass in the box) / (4 f_x f_y) (lobe/box_average.glsl),
+// and the GGX of that peak has sqrt(det A') = 1 / (pi P(0)); A' = A + k diag(f_x^2, f_y^2), k > 0
+// solving det A' = (pi P(0))^-2, keeps the box's proportions (sqrt(det A) as the box vanishes,
+// 4 f_x f_y / pi for a mirror). (A second-moment match, A + 2 f^2 / 3 as for Beckmann, means
+// nothing for GGX, whose slopes have no second moment: a mirror sphere under a 0.25-degree sun kept
+// 61% to 190% of its energy as the highlight moved within its pixel.)
+mat2 ltcLobeMatrix(Lobe lobe) {
+  if (lobe.footprint == vec2(0.0)) return lobe.A;
+  vec2 alpha = sqrt(vec2(lobe.A[0][0], lobe.A[1][1]));
+  float peak = boxAveragedSlopeDensity(lobe.ndf, vec2(0.0), lobe.footprint, alpha);
+  float target = 1.0 / max(PI * PI * peak * peak, 1e-36);  // det A'
+  vec2 f2 = lobe.footprint * lobe.footprint;
+  // det(A + k F) = f2.x f2.y k^2 + (a00 f2.y + a11 f2.x) k + det A: the positive root of = target.
+  float qa = f2.x * f2.y, qb = lobe.A[0][0] * f2.y + lobe.A[1][1] * f2.x, qc = determinant(lobe.A) - target;
+  float k = qa > 0.0 ? (-qb + sqrt(max(qb * qb - 4.0 * qa * qc, 0.0))) / (2.0 * qa) : -qc / max(qb, 1e-36);
   mat2 A = lobe.A;
-  vec2 box = lobe.footprint * lobe.footprint * (2.0 / 3.0);
-  A[0][0] += box.x;
-  A[1][1] += box.y;
-  return sqrt(sqrt(max(determinant(A), 1e-36)));
+  A[0][0] += max(k, 0.0) * f2.x;
+  A[1][1] += max(k, 0.0) * f2.y;
+  return A;
 }
 
 // Rows: the local frame's x and y turned so that x is the view's azimuth (the LTC's frame).
@@ -31,6 +47,48 @@ mat3 ltcViewFrame(vec3 wo) {
   float len = length(wo.xy);
   vec2 x = len > 1e-7 ? wo.xy / len : vec2(1.0, 0.0);
   return transpose(mat3(vec3(x, 0.0), vec3(-x.y, x.x, 0.0), vec3(0.0, 0.0, 1.0)));
+}
+
+// A lobe's LTC for the view wo: M^-1 acting on local-frame vectors, and the table's magnitude and
+// Fresnel terms.
+struct LtcLobe {
+  mat3 Minv;
+  vec4 terms;
+};
+
+// The isotropic table made to hold a lobe of roughness matrix A (docs/methods.md, "Area lights by
+// LTC"). In the view's frame A = [[a00, a01], [a01, a11]] (x along the view's azimuth). The table
+// is read at alpha = sqrt(a00), the lobe's roughness along the view, whose plane carries the
+// table's view-dependent shape (and the view's masking); B = alpha A^-1/2 (symmetric) maps the
+// lobe's slopes onto those of the isotropic GGX of alpha, exactly for the slope density P22. The
+// same B acts on directions about the mirror direction r = (-sin, 0, cos), in the basis (e_par,
+// e_y, r) of the plane of incidence (T = E diag(B, 1) E^T): r stays, so the peak stays where the
+// lobe's is, and the highlight's elongation and axes follow A. Exact for the slopes, T is
+// approximate for the reflection's Jacobian (far from r, at grazing views). For an isotropic lobe
+// B = I and T = I: the table's own LTC. The magnitude and Fresnel terms are read at the rms
+// roughness sqrt(tr A / 2): the directional albedo of the anisotropic GGX is within about 10% of
+// the isotropic GGX's of its rms roughness (alpha 0.05 .. 1, 1:1 .. 10:1; up to 24% over at views
+// 70 degrees from the normal along the narrow axis of a lobe with an axis of alpha 1), where the
+// peak-equivalent (det A)^(1/4) overestimates it up to 1.6-fold (a wide axis of alpha 1 loses
+// energy to masking and the horizon).
+LtcLobe ltcLobe(Lobe lobe, vec3 wo) {
+  mat2 A = ltcLobeMatrix(lobe);
+  mat3 frame = ltcViewFrame(wo);
+  vec2 x = vec2(frame[0][0], frame[1][0]), y = vec2(frame[0][1], frame[1][1]);  // its rows
+  float a00 = dot(x, A * x), a01 = dot(x, A * y), a11 = dot(y, A * y);
+  // det A from the local frame (rotation-invariant; exact for a diagonal A, where the view frame's
+  // a00 a11 - a01^2 cancels), at least that of a 20000:1 lobe, so that B stays within float range.
+  float sqrtDet = sqrt(max(determinant(A), 6.25e-10 * (a00 + a11) * (a00 + a11)));
+  float alpha = sqrt(a00);
+  // A^-1/2 = adj(A + sqrt(det) I) / (sqrt(det) sqrt(tr A + 2 sqrt(det))), so B = alpha A^-1/2:
+  float k = alpha / (sqrtDet * sqrt(a00 + a11 + 2.0 * sqrtDet));
+  mat3 B = mat3(vec3(k * (a11 + sqrtDet), -k * a01, 0.0), vec3(-k * a01, k * (a00 + sqrtDet), 0.0),
+                vec3(0.0, 0.0, 1.0));
+  float c = wo.z, s = sqrt(max(1.0 - c * c, 0.0));
+  mat3 E = mat3(vec3(c, 0.0, s), vec3(0.0, 1.0, 0.0), vec3(-s, 0.0, c));
+  mat3 T = E * B * transpose(E);
+  float rms = sqrt(0.5 * (a00 + a11));
+  return LtcLobe(ltcInverseMatrix(uLtcGgx, min(alpha, 1.0), wo.z) * T * frame, ltcTerms(uLtcGgx, min(rms, 1.0), wo.z));
 }
 
 // The form factor of the light seen from s.position under the lobe M^-1 (a matrix acting on
@@ -71,11 +129,9 @@ Radiance shadeLobeLtc(Surface s, LightData L, Lobe lobe, vec3 wo) {
   vec3 radiance = lightRadiance(L);
   result.diffuse = s.diffuse * ltcLightIntegral(s, L, mat3(1.0), true) * radiance;
 
-  float alpha = ltcLobeAlpha(lobe);
-  mat3 Minv = ltcInverseMatrix(uLtcGgx, alpha, wo.z) * ltcViewFrame(wo);
-  vec4 terms = ltcTerms(uLtcGgx, alpha, wo.z);
+  LtcLobe ltc = ltcLobe(lobe, wo);
   // The lobe times Schlick's Fresnel integrated over the hemisphere (the tables' magnitude and Fresnel terms).
-  vec3 albedo = ltcSpecularScale(terms, s.f0);
-  result.specular = albedo * ltcLightIntegral(s, L, Minv, false) * radiance;
+  vec3 albedo = ltcSpecularScale(ltc.terms, s.f0);
+  result.specular = albedo * ltcLightIntegral(s, L, ltc.Minv, false) * radiance;
   return result;
 }

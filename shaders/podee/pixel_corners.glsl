@@ -20,6 +20,16 @@ vec3 cornerNormalMap(Surface s, vec2 uv, float lodBias) {
   return textureGrad(uNormalMap, uv, s.footprint.dUVdx * scale, s.footprint.dUVdy * scale).xyz;
 }
 
+// A corner past the silhouette. The attributes at a corner are the triangle's planes extrapolated
+// beyond its edge; on a silhouette triangle, nearly edge-on, they turn the vertex normal through
+// large angles within half a pixel, past the contour (n . v = 0) until it faces away from the
+// viewer, and its reflection swings back towards the viewer (a normal facing away reflects as its
+// opposite). The surface the pixel sees ends at the contour, whose reflection is the view ray
+// itself, grazing on: that direction bounds the reflection space on that side.
+vec3 cornerReflection(vec3 view, vec3 vertexNormal, vec3 shadingNormal) {
+  return dot(vertexNormal, view) < 0.0 ? -view : reflect(-view, shadingNormal);
+}
+
 // Exact corners: the attributes interpolated at the corner, the shading normal rebuilt there as
 // forward.frag builds it at the centre (same side of the surface, same normal-map frame), the
 // normal map read at the level cornerNormalMap chooses.
@@ -29,14 +39,15 @@ CornerRays interpolatedCornerRays(Surface s, float lodBias) {
   for (int i = 0; i < 4; ++i) {
     VertexAttributes corner = attributesAtOffset(PIXEL_CORNERS[i]);
     vec3 p = corner.position;
-    vec3 n = normalize(corner.normal) * side;
+    vec3 vertexNormal = normalize(corner.normal) * side;
+    vec3 n = vertexNormal;
 #if MATERIAL_NORMAL_MAP
     vec3 t, b;
     vertexTangentFrame(n, corner.tangent, side, t, b);
     n = mappedNormal(cornerNormalMap(s, normalMapCoordinates(corner.uv), lodBias), t, b, n);
 #endif
     rays.origin[i] = p;
-    rays.direction[i] = reflect(-viewDirectionFrom(p), n);
+    rays.direction[i] = cornerReflection(viewDirectionFrom(p), vertexNormal, n);
   }
   return rays;
 }
@@ -57,6 +68,9 @@ CornerRays derivativeCornerRays(Surface s, float lodBias) {
     vec2 o = PIXEL_CORNERS[i];
     rays.origin[i] = footprintPositionAt(s.footprint, s.position, o);
     rays.direction[i] = normalize(r + o.x * drdx + o.y * drdy);
+    // Past the silhouette (the vertex normal, to first order, facing away): the contour's reflection.
+    vec3 vertexNormal = s.vertexNormal + o.x * s.footprint.dNdx + o.y * s.footprint.dNdy;
+    if (dot(vertexNormal, viewDirectionFrom(rays.origin[i])) < 0.0) rays.direction[i] = -viewDirectionFrom(rays.origin[i]);
   }
   return rays;
 }

@@ -167,12 +167,38 @@ ReflectionSpaceTerm reflectionSpaceTerm(Surface s, LightData L, LightPlane plane
   axes *= scale;
 
   // Reflection space: the corner rays' hits with the light plane, in coordinates where the
-  // (scaled) light is the unit disk. Rays that never reach the plane (r . normal <= 0) hit it at
-  // infinity in the direction of their tangential part; they are clamped to 1e4 plane distances.
+  // (scaled) light is the unit disk. Only the part of the reflection space in front of the plane
+  // (r . normal > 0) reaches it: the spherical quadrilateral of the corner directions clipped at
+  // the plane's horizon. A corner behind it is replaced by the point where its edge to a corner in
+  // front crosses the horizon, m = (r_j . N) r_i - (r_i . N) r_j, which the plane meets at
+  // infinity in m's direction (clamped, as rays that nearly graze the plane, to 1e4 plane
+  // distances): the clip exactly where one corner is in front (a triangle: its two edges'
+  // crossings) or two adjacent ones are; with one corner behind, the clip has five vertices, and
+  // the corner's own tangential direction, which lies between its two crossings, stands for both.
+  // With no corner in front the reflection space lies wholly behind the plane (a pixel's spans
+  // less than a hemisphere) and no reflected ray reaches the light. (Every corner was formerly
+  // pushed to infinity along its own tangential part: the four corners of a pixel that reflects
+  // away from the light, all behind the plane, surrounded the light's centre and covered it.)
+  float facing[4];
+  for (int i = 0; i < 4; ++i) facing[i] = dot(corners.direction[i], plane.normal);
+  bool reaches = max(max(facing[0], facing[1]), max(facing[2], facing[3])) > 0.0;
   vec2 q[4];
   for (int i = 0; i < 4; ++i) {
     vec3 o = lightIsDistant(L) ? s.position : corners.origin[i];  // lights at infinity show no parallax
     vec3 r = corners.direction[i];
+    // (prev, next, opposite: constants once the loop is unrolled; the corner in front is chosen
+    // by a select of values, so that no array is indexed at run time.)
+    int prev = (i + 3) % 4, next = (i + 1) % 4, opposite = (i + 2) % 4;
+    if (facing[i] <= 0.0 && (facing[prev] > 0.0) != (facing[next] > 0.0)) {
+      bool prevInFront = facing[prev] > 0.0;
+      float facingJ = prevInFront ? facing[prev] : facing[next];
+      vec3 rJ = prevInFront ? corners.direction[prev] : corners.direction[next];
+      r = normalize(facingJ * r - facing[i] * rJ);  // on the horizon
+    } else if (facing[i] <= 0.0 && facing[prev] <= 0.0 && facing[next] <= 0.0 && reaches) {
+      // Opposite the only corner in front: not a vertex of the clip, which is the triangle of that
+      // corner and its edges' crossings; repeat one crossing.
+      r = normalize(facing[opposite] * corners.direction[next] - facing[next] * corners.direction[opposite]);
+    }
     float t = dot(plane.centre - o, plane.normal) / max(dot(r, plane.normal), 1e-4);
     vec3 x = o + t * r - plane.centre;
     q[i] = vec2(dot(x, plane.u), dot(x, plane.w)) / axes;
@@ -209,7 +235,8 @@ ReflectionSpaceTerm reflectionSpaceTerm(Surface s, LightData L, LightPlane plane
   float perArea = abs(dot(plane.normal, toSelected)) / pow(dot(toSelected, toSelected), 1.5);
   float covered = unitDiskIntersectionArea(q, options.area) * axes.x * axes.y;
   vec2 mean = 0.25 * (q[0] + q[1] + q[2] + q[3]);
-  float coverage = spaceSolidAngle > 1e-20 ? clamp(covered * perArea / spaceSolidAngle, 0.0, 1.0)
+  float coverage = !reaches ? 0.0
+                 : spaceSolidAngle > 1e-20 ? clamp(covered * perArea / spaceSolidAngle, 0.0, 1.0)
                                            : (dot(mean, mean) <= 1.0 ? 1.0 : 0.0);
   // Fresnel at the selected half vector; the lobe's Smith masking-shadowing (1 for a mirror).
   vec3 wo = toLocal(s, s.view), wi = toLocal(s, l);

@@ -216,3 +216,58 @@ TEST(Podee, CornersReadTheNormalMapAtTheBaseLevelByDefault) {
         << "frame " << t;
   }
 }
+
+// A mirror sphere seen orthographically with a 2-degree sun straight behind the camera reflects
+// the sun in a disk of radius R sin(1 deg) about its centre (0.5 px at 64x64) and nowhere else:
+// its rim reflects the directions behind the sphere. podee once lit the rim three ways (the smooth
+// part's light image covering the lobe's peak at grazing half vectors; corner rays all facing away
+// from the light plane pushed to infinity around the light; corners extrapolated past the
+// silhouette reflecting back towards the viewer): up to 1.7x the highlight's peak in one pixel.
+namespace {
+
+constexpr int kFilm = 64;
+constexpr double kViewHeight = 2.2;
+
+TestScene mirror_sphere_with_sun_behind_camera(double degrees) {
+  return TestScene()
+      .film(kFilm, kFilm)
+      .orthographic_camera({0.0, 0.0, 5.0}, {0.0, 0.0, 0.0}, kViewHeight)
+      .material("mirror", {{"alpha", 0}, {"f0", 1}, {"diffuse", 0}})
+      .sphere("mirror", {{"radius", 1}, {"segments", 256}})
+      .directional_light({0.0, 0.0, -1.0}, 1, {{"angular_radius", degrees}});
+}
+
+}  // namespace
+
+TEST(Podee, ASilhouetteSeesNoSunBehindTheViewer) {
+  // The image's energy is E R^2 / (4 cos^2(gamma / 2)) (R in pixels; docs/results.md, "Ground
+  // truth"), all of it within 0.5 px of the sphere's centre. Outside R/2 (normals more than 30
+  // degrees from the view) nothing may be lit, for any sub-pixel position of the silhouette.
+  const double gamma = 2.0 * M_PI / 180.0;
+  const double radius_px = kFilm / kViewHeight;
+  const double truth = radius_px * radius_px / (4.0 * std::pow(std::cos(gamma / 2.0), 2));
+  SceneFixture f(mirror_sphere_with_sun_behind_camera(2.0));
+  const Camera centred = f.scene.camera;
+  for (const std::string corners : {"interpolated", "derivatives"}) {
+    for (int k = 0; k < 8; ++k) {
+      const double shift = k / 8.0 * kViewHeight / kFilm;  // scene units
+      f.scene.camera = centred;
+      f.scene.camera.position.x += static_cast<float>(shift);
+      f.scene.camera.target.x += static_cast<float>(shift);
+      const Image image = f.method("podee", {{"corners", corners}}).specular;
+      double total = 0, rim = 0;
+      for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+          const double v = image.at(x, y).g;  // F = 1, white: every channel alike
+          total += v;
+          const double dx = x + 0.5 - (kFilm / 2.0 - shift / (kViewHeight / kFilm)), dy = y + 0.5 - kFilm / 2.0;
+          if (std::hypot(dx, dy) > 0.5 * radius_px) rim += v;
+        }
+      const std::string what = corners + " corners, camera shifted " + std::to_string(k) + "/8 px: energy " +
+                               std::to_string(total / truth) + ", outside R/2 " + std::to_string(rim / truth);
+      EXPECT_LT(rim, 1e-3 * truth) << what;
+      EXPECT_NEAR(total / truth, 1.0, 0.02) << what;
+    }
+  }
+  f.scene.camera = centred;
+}

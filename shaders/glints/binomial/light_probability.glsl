@@ -17,7 +17,7 @@ float ggxTotalNdf(float alpha) {
 }
 
 // The isotropic roughness the tables and T are read at for an (anisotropic) GGX alpha: the same
-// peak as the lobe's, as for lobes under LTC (ltcLobeAlpha).
+// peak density as the lobe's, alpha^2 = sqrt(det A).
 float glintIsotropicAlpha(vec2 alpha) { return sqrt(max(alpha.x * alpha.y, MIN_ALPHA * MIN_ALPHA)); }
 
 // The small-cap estimate: D constant over the half-vector image of a light of solid angle

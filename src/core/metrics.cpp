@@ -73,6 +73,80 @@ float error_percentile(const Image& error_map, double fraction) {
   return *nth;
 }
 
+namespace {
+// Calls f(tile_x, tile_y, pixel_index) for every pixel of every full block x block tile.
+void require_block(int block) {
+  if (block < 1) throw std::invalid_argument("metrics: block size " + std::to_string(block) + " (must be >= 1)");
+}
+
+template <typename F>
+void for_each_tile_pixel(const Image& image, int block, F f) {
+  for (int ty = 0; ty + block <= image.height(); ty += block)
+    for (int tx = 0; tx + block <= image.width(); tx += block)
+      for (int y = ty; y < ty + block; ++y)
+        for (int x = tx; x < tx + block; ++x)
+          f(tx / block, ty / block, static_cast<std::size_t>(y) * image.width() + x);
+}
+
+// Each full tile's mean (RGB), row by row.
+std::vector<glm::dvec3> tile_means(const Image& image, int block) {
+  const int columns = image.width() / block;
+  std::vector<glm::dvec3> means(static_cast<std::size_t>(columns) * (image.height() / block), glm::dvec3(0.0));
+  for_each_tile_pixel(image, block, [&](int tx, int ty, std::size_t i) {
+    means[static_cast<std::size_t>(ty) * columns + tx] += glm::dvec3(image.pixels()[i]);
+  });
+  for (glm::dvec3& m : means) m /= double(block) * block;
+  return means;
+}
+
+// The mean square of luminance minus its 3 x 3 mean, over the pixels with a full neighbourhood:
+// detail at the pixel's scale, with every linear gradient taken out exactly (the box is symmetric).
+// Of white noise of variance v it keeps (1 - 1/9)^2 v + 8 v / 81 = 8 v / 9.
+constexpr double kHighPassNoiseShare = 8.0 / 9.0;
+double high_pass_power(const Image& image) {
+  double sum = 0, count = 0;
+  for (int y = 1; y + 1 < image.height(); ++y)
+    for (int x = 1; x + 1 < image.width(); ++x) {
+      double box = 0;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) box += luminance(image.at(x + dx, y + dy));
+      const double d = luminance(image.at(x, y)) - box / 9.0;
+      sum += d * d;
+      count += 1;
+    }
+  return count > 0 ? sum / count : 0.0;
+}
+}  // namespace
+
+double block_rmse(const Image& test, const Image& ref, int block) {
+  require_same_size(test, ref);
+  require_block(block);
+  const std::vector<glm::dvec3> a = tile_means(test, block), b = tile_means(ref, block);
+  if (a.empty()) return 0.0;
+  double sum = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const glm::dvec3 d = a[i] - b[i];
+    sum += glm::dot(d, d);
+  }
+  return std::sqrt(sum / (3.0 * static_cast<double>(a.size())));
+}
+
+double glint_detail(const Image& image, const Image* standard_error) {
+  double power = high_pass_power(image);
+  if (standard_error && !standard_error->empty()) {
+    require_same_size(*standard_error, image);
+    double noise = 0, count = 0;
+    for (int y = 1; y + 1 < image.height(); ++y)
+      for (int x = 1; x + 1 < image.width(); ++x) {
+        const double e = luminance(standard_error->at(x, y));
+        noise += e * e;
+        count += 1;
+      }
+    if (count > 0) power -= kHighPassNoiseShare * noise / count;
+  }
+  return std::sqrt(std::max(power, 0.0));
+}
+
 ImageMetrics measure(const Image& total, const Image& specular, const Image& ref_total,
                      const Image& ref_specular) {
   ImageMetrics m;
@@ -82,6 +156,8 @@ ImageMetrics measure(const Image& total, const Image& specular, const Image& ref
   m.energy_ratio = energy_ratio(total, ref_total);
   m.energy_ratio_specular = energy_ratio(specular, ref_specular);
   m.max_error = max_abs_error(total, ref_total);
+  m.block_rmse = block_rmse(total, ref_total, kStatisticsBlock);
+  m.glint_detail = glint_detail(total);
   return m;
 }
 

@@ -24,10 +24,25 @@ float error_percentile(const Image& error_map, double fraction);
 /// overlay): a few outliers do not wash out the rest.
 inline constexpr double kErrorMapPercentile = 0.995;
 
+/// Statistics that hold against an independent realisation of a stochastic surface (glints): a
+/// method that draws its own glints cannot match another realisation's pixel by pixel, and the
+/// per-pixel RMSE against one rewards blurring the glints away (for independent images it is the
+/// bias plus both variances).
+/// RMSE between the images' means over the full `block` x `block` tiles (RGB): where a tile holds
+/// many glints their randomness averages out, and what remains is the error in where the light goes.
+double block_rmse(const Image& test, const Image& reference, int block);
+/// How strong an image's glints are: the root mean square of luminance minus its 3 x 3 mean
+/// (detail at the pixel's scale, where linear shading gradients cancel), over the pixels with a
+/// full neighbourhood; 0 for a smooth image. Of an estimate with a per-pixel `standard_error` the
+/// noise's share (8/9 of its variance, for white noise) is taken out: the truth's detail.
+double glint_detail(const Image& image, const Image* standard_error = nullptr);
+/// The tile size of compare's block_rmse.
+inline constexpr int kStatisticsBlock = 8;
+
 /// Everything `compare` reports for one method.
 struct ImageMetrics {
   double rmse = 0, rmse_specular = 0, psnr = 0, energy_ratio = 0, energy_ratio_specular = 0,
-         max_error = 0;
+         max_error = 0, block_rmse = 0, glint_detail = 0;
 };
 ImageMetrics measure(const Image& total, const Image& specular, const Image& ref_total,
                      const Image& ref_specular);

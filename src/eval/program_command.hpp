@@ -27,6 +27,7 @@ struct ProgramPass {
 };
 inline constexpr ProgramPass kProgramPasses[] = {{"reference", kReferenceModule},
                                                  {"reference-realisation", kRealisationReferenceModule},
+                                                 {"reference-facets", kFacetsReferenceModule},
                                                  {"unshaded", "passes/unshaded.glsl"}};
 
 /// The module, in `shaders` (a method's generated module is added to it), that `method` names:

@@ -76,6 +76,13 @@ const std::vector<ReferenceBackendEntry>& reference_backends() {
        [](const ReferenceBackendContext& c) {
          return std::make_unique<RasterReference>(c, "raster-realisation", kRealisationReferenceModule);
        }},
+      {"raster-facets",
+       "raster, with binomial-glints materials as one fixed field of mirror facets, one per uv cell of "
+       "e^log_density per unit area with a GGX normal of its own random stream: the binomial methods' "
+       "ground truth independent of their counting model and of every footprint",
+       [](const ReferenceBackendContext& c) {
+         return std::make_unique<RasterReference>(c, "raster-facets", kFacetsReferenceModule);
+       }},
   };
   return entries;
 }

@@ -30,6 +30,9 @@ inline constexpr const char* kReferenceModule = "passes/reference.glsl";
 /// The reference with binomial-glints materials as one fixed microfacet realisation
 /// (docs/methods.md#kneiphof2024); every other material as kReferenceModule.
 inline constexpr const char* kRealisationReferenceModule = "passes/reference_realisation.glsl";
+/// The reference with binomial-glints materials as one fixed field of mirror facets, independent of
+/// the counting model (docs/methods.md#kneiphof2024); every other material as kReferenceModule.
+inline constexpr const char* kFacetsReferenceModule = "passes/reference_facets.glsl";
 /// Is `module` the reference or one of its variants (the passes' REFERENCE_PASS)?
 inline bool is_reference_module(const std::string& module) { return module.starts_with("passes/reference"); }
 

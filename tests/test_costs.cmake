@@ -8,6 +8,7 @@ set(glintlab_test_costs
   "^Images/EveryMethodOnBuiltinScene\\.IsFinite/every_family( |$)" 60
   "^Images/EveryMethodOnBuiltinScene\\.IsFinite/glint_area_lights(_glinty)?( |$)" 40
   "^Images/EveryMethodOnBuiltinScene\\.IsFinite/gltf_showcase( |$)" 30
+  "^DriverProfiles\\." 30
   "^Chermain\\.GeometricGlintAntiAliasing" 25
   "^Kneiphof\\.FiniteForRandomLightsAcrossTheHorizon" 25
   "^LtcAreaLightsSweep\\." 18
@@ -17,6 +18,7 @@ set(glintlab_test_costs
   "^SpecularAA\\." 10
   "^Deng2022\\.MatchesYan2016AndTheReferenceNearAndFar" 9
   "^Report\\.ChromiumLoadsEveryImageAndVideoAndTheSliderMoves$" 7
+  "^Methods/DefaultProgram\\." 6
   "^Images/EveryMethodOnBuiltinScene\\." 3
 )
 

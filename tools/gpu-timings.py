@@ -1,0 +1,145 @@
+#!/usr/bin/env python3
+"""Regenerates docs/gpu-timings.md: every method's frame time on the machine's GL device, in one run
+of `glintlab bench` per scene (methods take turns frame by frame, so the ratios are fair), with
+issue 28's cost targets checked against the ratios measured here.
+    tools/gpu-timings.py [--glintlab build/release/glintlab] [--out docs/gpu-timings.md]
+                         [--width 1920 --height 1080 --frames 20] [--quick]
+Run it on an NVIDIA GPU (about 5 minutes on an H200 with a warm shader cache). On llvmpipe:
+    tools/gpu-timings.py --quick --out docs/llvmpipe-timings.md
+(640x360, 3 frames, no constant-cost sweep; the llvmpipe targets of issue 28 instead of the GPU's).
+Python 3.11's standard library only."""
+
+import argparse
+import json
+import re
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+
+# The scenes and the methods timed on each; each table's ratios are to its first method.
+ALL_METHODS = "all"
+TABLES = [
+    ("builtin:spheres", ALL_METHODS,
+     "builtin:spheres (no normal-map-glints or glinty material: the glint methods shade it as `conventional`)"),
+    ("builtin:normal-glints-noise", "conventional,toksvig,lean,yan2016,deng2022", "builtin:normal-glints-noise (frame 0)"),
+]
+AREA_METHODS = ("conventional,conventional{area_lights=representative-point},deliot2023,kneiphof2024,"
+                "kneiphof2024{light_probability=ggx-ltc},kneiphof2024{subdivision=4x4}")
+LIGHT_KINDS = ("quad", "disk", "sphere")
+
+# Issue 28's targets: (scene label, method, baseline, largest ratio); on a GPU, and on llvmpipe at
+# 640x360 (--quick).
+TARGETS = [("builtin:spheres", "podee", "conventional", 2.5)] + [
+    (label, "kneiphof2024", "deliot2023", 1.5)
+    for label in ["builtin:glint-area-lights"] + [f"glint-area-lights, {k} light only" for k in LIGHT_KINDS]
+]
+QUICK_TARGETS = [("builtin:glint-area-lights", "kneiphof2024", "conventional", 2.0),
+                 ("builtin:glint-area-lights", "conventional", "conventional{area_lights=representative-point}", 2.0)]
+
+
+def bench(glintlab, scene, methods, args):
+    command = [str(glintlab), "bench", "--scene", str(scene), "--methods", methods, "--width", str(args.width),
+               "--height", str(args.height), "--bench-frames", str(args.frames)]
+    print("+", " ".join(command), file=sys.stderr, flush=True)
+    run = subprocess.run(command, check=True, capture_output=True, text=True)
+    return json.loads(run.stdout), " ".join(["glintlab"] + command[1:])
+
+
+def one_light_scene(kind, directory):
+    """builtin:glint-area-lights with only its light of this kind."""
+    text = (ROOT / "scenes" / "glint-area-lights.toml").read_text()
+    head, *lights = re.split(r"(?m)^\[\[light\]\]\n", text)
+    kept = [block for block in lights if re.search(rf'(?m)^type = "{kind}"$', block)]
+    if len(kept) != 1:
+        sys.exit(f"tools/gpu-timings.py: scenes/glint-area-lights.toml has {len(kept)} {kind} lights, expected 1")
+    path = Path(directory) / f"glint-area-lights-{kind}.toml"
+    path.write_text(head + "[[light]]\n" + kept[0])
+    return path
+
+
+def table(result):
+    rows = ["| method | GPU ms | / first | wall ms |", "| --- | ---: | ---: | ---: |"]
+    for m in result["methods"]:
+        rows.append(f"| {m['method']} | {m['gpu_ms_median']:.3g} | {m['gpu_ratio']:.2f} | {m['wall_ms_median']:.3g} |")
+    return "\n".join(rows)
+
+
+def ratio(result, method, baseline):
+    times = {m["method"]: m["gpu_ms_median"] for m in result["methods"]}
+    return times[method] / max(times[baseline], 1e-9)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--glintlab", default=str(ROOT / "build/release/glintlab"))
+    parser.add_argument("--out", default=str(ROOT / "docs/gpu-timings.md"))
+    parser.add_argument("--width", type=int, default=1920)
+    parser.add_argument("--height", type=int, default=1080)
+    parser.add_argument("--frames", type=int, default=20)
+    parser.add_argument("--quick", action="store_true", help="640x360, 3 frames, no constant-cost sweep (llvmpipe)")
+    args = parser.parse_args()
+    if args.quick:
+        args.width, args.height, args.frames = 640, 360, 3
+
+    sections, commands, results = [], [], {}
+    with tempfile.TemporaryDirectory() as work:
+        scenes = [(scene, methods, title) for scene, methods, title in TABLES]
+        scenes.append(("builtin:glint-area-lights", AREA_METHODS,
+                       "builtin:glint-area-lights (binomial glints under a quad, a disk and a sphere light)"))
+        for kind in LIGHT_KINDS:
+            scenes.append((one_light_scene(kind, work), AREA_METHODS,
+                           f"glint-area-lights, {kind} light only (scenes/glint-area-lights.toml without the others)"))
+        for scene, methods, title in scenes:
+            result, command = bench(args.glintlab, scene, methods, args)
+            label = title.split(" (")[0]
+            results[label] = result
+            commands.append(command.replace(str(Path(work)) + "/", ""))
+            sections.append(f"{title}:\n\n{table(result)}")
+        device = result["device"]
+        constant_cost = ""
+        if not args.quick:
+            sweep = [str(ROOT / "tools/bench-constant-cost.sh"), args.glintlab, "512", "10"]
+            print("+", " ".join(sweep), file=sys.stderr, flush=True)
+            out = subprocess.run(sweep, check=True, capture_output=True, text=True).stdout
+            commands.append("tools/bench-constant-cost.sh build/release/glintlab 512 10")
+            constant_cost = ("\n## deng2022's constant cost against yan2016\n\n`tools/bench-constant-cost.sh` at "
+                             "512x512 (docs/results.md, \"Prefiltered glints\", says what it sweeps):\n\n" + out)
+
+    checks = ["| target | measured | holds |", "| --- | ---: | --- |"]
+    for label, method, baseline, limit in (QUICK_TARGETS if args.quick else TARGETS):
+        r = ratio(results[label], method, baseline)
+        checks.append(f"| {method} <= {limit}x {baseline} on {label} | {r:.2f}x | {'yes' if r <= limit else 'no'} |")
+
+    title = "Timings on llvmpipe" if args.quick else "GPU timings"
+    doc = f"""# {title} ({device})
+
+Generated by `tools/gpu-timings.py{' --quick' if args.quick else ''}` on {device} through EGL, headless, {args.width}x{args.height}: GPU time
+from GL timer queries, median of {args.frames} timed frames per method, the methods of a table taking turns
+frame by frame; "/ first" is the ratio to the table's first method, "wall ms" the CPU's wall clock
+around the same frames. `(unshaded)` is the same frame with a module that shades nothing (clears, vertex
+work, rasterisation, the surface record, and the two RGBA32F colour targets, total and specular, written
+at every fragment): the floor under every method. On GH100 (H100/H200) rasterisation and fragment
+shading run on a couple of graphics-capable TPCs, so absolute fragment times there are low; the ratios
+carry over to other GPUs. Commands:
+
+```sh
+{chr(10).join(commands)}
+```
+
+## Cost targets (issue 28)
+
+{chr(10).join(checks)}
+
+## Every method
+
+{(chr(10) * 2).join(sections)}
+{constant_cost}"""
+    Path(args.out).write_text(doc.rstrip() + "\n")
+    print(f"wrote {args.out}", file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()

@@ -164,12 +164,20 @@ class Program:
         return 0
 
     def write_reports(self):
-        """Every run under <out>: <out>/report/; the headline runs that exist: docs/report/."""
+        """Every run under <out>: <out>/report/; docs/report/ of the headline runs, only when every
+        one of them exists (a run of some sections would otherwise replace it by a part of it)."""
         out = self.out_dir.relative_to(REPO)
         check([self.glintlab, "report", "-o", str(out / "report"), str(out)])
-        runs = [str(out / r) for r in self.index.report_runs if (self.out_dir / r).is_dir()]
-        if runs and self.index.report_headline:
-            check([self.glintlab, "report", "-o", self.index.report_headline, *runs])
+        if not self.index.report_headline:
+            return
+        missing = [r for r in self.index.report_runs if not (self.out_dir / r).is_dir()]
+        if missing:
+            print(f"results: {self.index.report_headline} kept: {len(missing)} of its runs have not run here "
+                  f"({', '.join(missing[:4])}{', ...' if len(missing) > 4 else ''}; measure every section to "
+                  "rewrite it)", file=sys.stderr)
+            return
+        check([self.glintlab, "report", "-o", self.index.report_headline,
+               *[str(out / r) for r in self.index.report_runs]])
 
 
 def check(argv, quiet=False):

@@ -3,9 +3,9 @@
 // across. Under lights with extent it is Kneiphof & Klein 2024's model without its approximations
 // (docs/methods.md#kneiphof2024, "Two references"): the smooth GGX integrated over the light,
 // times the glint factor of the probability p that a facet reflects the light, p integrated
-// numerically. With REFERENCE_BINOMIAL_REALISATION (the raster-realisation backend) it is one
+// numerically. With REFERENCE_SURFACE_REALISATION (the raster-realisation backend) it is one
 // fixed realisation of the microfacets instead (glints/binomial/realisation.glsl), and with
-// REFERENCE_BINOMIAL_FACETS (the raster-facets backend) a fixed field of mirror facets, one per uv
+// REFERENCE_SURFACE_FACETS (the raster-facets backend) a fixed field of mirror facets, one per uv
 // cell, that shares nothing with the counting model (glints/binomial/facets.glsl). Sampled as its
 // smooth limit, the GGX lobe of alpha (a facet: its own lobe).
 #include "core/brdf.glsl"
@@ -19,7 +19,7 @@
 // from every later file (functions no program calls cost nothing).
 #include "glints/binomial/realisation.glsl"
 #include "glints/binomial/facets.glsl"
-#if REFERENCE_BINOMIAL_FACETS
+#if REFERENCE_SURFACE == REFERENCE_SURFACE_FACETS
 BinomialFacet gBinomialFacet;  // the facet this sample lands on
 #endif
 
@@ -32,7 +32,7 @@ const float BINOMIAL_MATERIAL_SCREEN_SPACE_SCALE = 1.0;
 const uint BINOMIAL_MATERIAL_P_SAMPLES = 128u;
 
 void binomialGlintsMaterialPrepare(inout Surface s, MaterialData m) {
-#if REFERENCE_BINOMIAL_FACETS
+#if REFERENCE_SURFACE == REFERENCE_SURFACE_FACETS
   gBinomialFacet = binomialFacetAt(s.uv / m.diffuse_tiling.a, binomialGlintsLogDensity(m), s.alpha,
                                    binomialGlintsMicrofacetRoughness(m));
 #else
@@ -42,9 +42,9 @@ void binomialGlintsMaterialPrepare(inout Surface s, MaterialData m) {
 
 // Under delta lights (and, in a realisation, under every light): the glinty BRDF itself.
 vec3 binomialGlintsMaterialSpecularCos(Surface s, vec3 wo, vec3 wi) {
-#if REFERENCE_BINOMIAL_FACETS
+#if REFERENCE_SURFACE == REFERENCE_SURFACE_FACETS
   return binomialFacetDeltaSpecularCos(gBinomialFacet, wo, wi, s.f0, s.alpha);
-#elif REFERENCE_BINOMIAL_REALISATION
+#elif REFERENCE_SURFACE == REFERENCE_SURFACE_REALISATION
   return binomialRealisationSpecularCos(gBinomialGlintsMaterial, wo, wi, s.f0, s.alpha);
 #else
   return binomialSpecularCos(gBinomialGlintsMaterial, wo, wi, s.f0, s.alpha, REMAINING_COUNT_LOGNORMAL);
@@ -54,7 +54,7 @@ vec3 binomialGlintsMaterialSpecularCos(Surface s, vec3 wo, vec3 wi) {
 vec3 binomialGlintsMaterialDiffuseCos(Surface s, vec3 wi) { return diffuseCos(s.diffuse, wi); }
 
 vec3 binomialGlintsMaterialSampleNormal(Surface s, vec3 wo, vec2 u) {
-#if REFERENCE_BINOMIAL_FACETS
+#if REFERENCE_SURFACE == REFERENCE_SURFACE_FACETS
   return binomialFacetSampleNormal(gBinomialFacet, u);
 #else
   return s.ndf == NDF_BECKMANN ? sampleBeckmannNormal(s.alpha, u) : sampleGGXVisibleNormal(wo, s.alpha, u);
@@ -62,7 +62,7 @@ vec3 binomialGlintsMaterialSampleNormal(Surface s, vec3 wo, vec2 u) {
 }
 
 float binomialGlintsMaterialSamplePdf(Surface s, vec3 wo, vec3 wi) {
-#if REFERENCE_BINOMIAL_FACETS
+#if REFERENCE_SURFACE == REFERENCE_SURFACE_FACETS
   return binomialFacetSamplePdf(gBinomialFacet, wo, wi);
 #else
   return s.ndf == NDF_BECKMANN ? beckmannReflectionPdf(wo, wi, s.alpha) : ggxVisibleReflectionPdf(wo, wi, s.alpha);
@@ -73,9 +73,9 @@ Lobe binomialGlintsMaterialSmoothLobe(Surface s) { return materialLobe(s); }
 
 // Lights with extent: the smooth GGX, whose integral the glint factor then scales.
 vec3 binomialGlintsMaterialLightIntegrand(Surface s, vec3 wo, vec3 wi) {
-#if REFERENCE_BINOMIAL_FACETS
+#if REFERENCE_SURFACE == REFERENCE_SURFACE_FACETS
   return binomialFacetSpecularCos(gBinomialFacet, wo, wi, s.f0, s.alpha);
-#elif REFERENCE_BINOMIAL_REALISATION
+#elif REFERENCE_SURFACE == REFERENCE_SURFACE_REALISATION
   return binomialGlintsMaterialSpecularCos(s, wo, wi);
 #else
   return specularCos(NDF_GGX, wo, wi, s.alpha, s.f0);
@@ -88,7 +88,7 @@ vec3 binomialGlintsMaterialLightIntegrand(Surface s, vec3 wo, vec3 wi) {
 // the pixel's sequence), then the glint factor at the half vector towards the light's centre, as
 // the method draws it.
 float binomialGlintsMaterialLightFactor(Surface s, LightData L, vec3 wo, uint sub, vec2 rotLight, vec2 rotBrdf) {
-#if REFERENCE_BINOMIAL_REALISATION || REFERENCE_BINOMIAL_FACETS
+#if REFERENCE_SURFACE != REFERENCE_SURFACE_MODEL
   return 1.0;
 #else
   float integral = lightNdfIntegral(s, L, wo, sub * BINOMIAL_MATERIAL_P_SAMPLES, BINOMIAL_MATERIAL_P_SAMPLES,

@@ -6,8 +6,8 @@
 // (lights/light_loop.glsl), MATERIAL_KIND (the kind's code: compare with MATERIAL_KIND_<ID>),
 // MATERIAL_NORMAL_MAP (1 when the material has a normal map), MATERIAL_TEXTURES (1 when its
 // parameters vary per texel), REFERENCE_PASS (1 for ground truth, which evaluates the surface
-// itself at each sample: textures at their base level), REFERENCE_BINOMIAL_REALISATION (1 for
-// the raster-realisation reference) and REFERENCE_BINOMIAL_FACETS (1 for the raster-facets one).
+// itself at each sample: textures at their base level), REFERENCE_SURFACE (the surface a
+// reference gives stochastic materials: REFERENCE_SURFACE_MODEL, _REALISATION or _FACETS).
 #include "core/frame.glsl"
 #include "core/fragment_inputs.glsl"
 #include "lights/lights.glsl"

@@ -54,6 +54,11 @@ inline constexpr int kFirstTableUnit = 10;
 inline constexpr int kNdfGgx = 0;
 inline constexpr int kNdfBeckmann = 1;
 
+/// The surface a reference pass gives stochastic materials (the forward pass's REFERENCE_SURFACE;
+/// docs/methods.md#kneiphof2024, "Two references" and "A surface of facets"): the material's own
+/// model, one fixed realisation of the binomial microfacets, or a fixed field of mirror facets.
+enum class ReferenceSurface { Model = 0, Realisation = 1, Facets = 2 };
+
 /// The std140 records below are each declared once, as a list of fields (type, name, meaning):
 /// the C++ struct is made from the list here, and the GLSL struct of the same name and fields by
 /// src/render/shader_contract.cpp (generated/gpu_structs.glsl), so that neither side restates the

@@ -38,8 +38,7 @@ ShaderDefines forward_variant(const std::string& module, const LightRanges& ligh
           {"MATERIAL_NORMAL_MAP", material.normal_map ? "1" : "0"},
           {"MATERIAL_TEXTURES", material.textures ? "1" : "0"},
           {"REFERENCE_PASS", is_reference_module(module) ? "1" : "0"},
-          {"REFERENCE_BINOMIAL_REALISATION", module == kRealisationReferenceModule ? "1" : "0"},
-          {"REFERENCE_BINOMIAL_FACETS", module == kFacetsReferenceModule ? "1" : "0"}};
+          {"REFERENCE_SURFACE", std::to_string(static_cast<int>(reference_surface(module)))}};
   for (std::size_t k = 0; k < light_ranges.size(); ++k)
     defines.emplace_back(light_count_define(all_light_kinds().at(k)), std::to_string(light_ranges[k].y - light_ranges[k].x));
   if (const MethodDescriptor* method = method_of_generated_module(module))

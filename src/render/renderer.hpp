@@ -4,6 +4,7 @@
 #include <map>
 #include <memory>
 
+#include "core/gpu_contract.hpp"
 #include "core/image.hpp"
 #include "gl/shader_library.hpp"
 #include "render/gpu_scene.hpp"
@@ -35,6 +36,12 @@ inline constexpr const char* kRealisationReferenceModule = "passes/reference_rea
 inline constexpr const char* kFacetsReferenceModule = "passes/reference_facets.glsl";
 /// Is `module` the reference or one of its variants (the passes' REFERENCE_PASS)?
 inline bool is_reference_module(const std::string& module) { return module.starts_with("passes/reference"); }
+/// The surface a reference module gives stochastic materials (the passes' REFERENCE_SURFACE).
+inline ReferenceSurface reference_surface(const std::string& module) {
+  if (module == kRealisationReferenceModule) return ReferenceSurface::Realisation;
+  if (module == kFacetsReferenceModule) return ReferenceSurface::Facets;
+  return ReferenceSurface::Model;
+}
 
 /// Defines of one variant of the forward pass (shaders/passes/forward.frag): the shading module
 /// (a method's or the reference's), the index range and count of each light kind in the light

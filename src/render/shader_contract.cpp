@@ -310,6 +310,9 @@ ShaderDefines contract_defines() {
       {"LIGHT_FORM_DISK", std::to_string(static_cast<int>(LightForm::Disk))},
       {"LIGHT_FORM_POLYGON", std::to_string(static_cast<int>(LightForm::Polygon))},
       {"PIXEL_FILTER_SIGMA", glsl_float(kPixelFilterSigma)},
+      {"REFERENCE_SURFACE_MODEL", std::to_string(static_cast<int>(ReferenceSurface::Model))},
+      {"REFERENCE_SURFACE_REALISATION", std::to_string(static_cast<int>(ReferenceSurface::Realisation))},
+      {"REFERENCE_SURFACE_FACETS", std::to_string(static_cast<int>(ReferenceSurface::Facets))},
   };
   for (const LightKind& k : all_light_kinds()) d.emplace_back(code_name(k), std::to_string(k.code()));
   d.emplace_back("LIGHT_KIND_COUNT", std::to_string(all_light_kinds().size()));

@@ -134,6 +134,9 @@ TEST(GpuContract, GeneratedDefinesAreTheCppConstants) {
       {"LIGHT_FORM_NONE", static_cast<int>(LightForm::None)},
       {"LIGHT_FORM_DISK", static_cast<int>(LightForm::Disk)},
       {"LIGHT_FORM_POLYGON", static_cast<int>(LightForm::Polygon)},
+      {"REFERENCE_SURFACE_MODEL", static_cast<int>(ReferenceSurface::Model)},
+      {"REFERENCE_SURFACE_REALISATION", static_cast<int>(ReferenceSurface::Realisation)},
+      {"REFERENCE_SURFACE_FACETS", static_cast<int>(ReferenceSurface::Facets)},
       {"LIGHT_KIND_COUNT", static_cast<int>(all_light_kinds().size())},
   };
   std::vector<std::string> table_units;  // kept alive: Expected holds the names' pointers

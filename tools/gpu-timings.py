@@ -29,6 +29,8 @@ TABLES = [
 AREA_METHODS = ("conventional,conventional{area_lights=representative-point},deliot2023,kneiphof2024,"
                 "kneiphof2024{light_probability=ggx-ltc},kneiphof2024{subdivision=4x4}")
 LIGHT_KINDS = ("quad", "disk", "sphere")
+# The scene whose bench also takes the unshaded floor apart (--floor-breakdown).
+FLOOR_SCENE = "builtin:spheres"
 
 # Issue 28's targets: (scene label, method, baseline, largest ratio); on a GPU, and on llvmpipe at
 # 640x360 (--quick).
@@ -40,9 +42,11 @@ QUICK_TARGETS = [("builtin:glint-area-lights", "kneiphof2024", "conventional", 2
                  ("builtin:glint-area-lights", "conventional", "conventional{area_lights=representative-point}", 2.0)]
 
 
-def bench(glintlab, scene, methods, args):
+def bench(glintlab, scene, methods, args, floor_breakdown=False):
     command = [str(glintlab), "bench", "--scene", str(scene), "--methods", methods, "--width", str(args.width),
                "--height", str(args.height), "--bench-frames", str(args.frames)]
+    if floor_breakdown:
+        command.append("--floor-breakdown")
     print("+", " ".join(command), file=sys.stderr, flush=True)
     run = subprocess.run(command, check=True, capture_output=True, text=True)
     return json.loads(run.stdout), " ".join(["glintlab"] + command[1:])
@@ -74,6 +78,18 @@ def ratio(result, method, baseline, key):
     return times[method] / max(times[baseline], 1e-9)
 
 
+def floor_paragraph(result, key):
+    """What the unshaded floor is made of, from the --floor-breakdown rows of one bench."""
+    times = {m["method"]: m[key] for m in result["methods"]}
+    floor, depth = times["(unshaded)"], times["(unshaded, depth only)"]
+    half, one = times["(unshaded, two RGBA16F targets)"], times["(unshaded, one RGBA32F target)"]
+    return (f"The floor taken apart (`--floor-breakdown`, the same table): the unshaded frame into two RGBA32F "
+            f"colour targets takes {floor:.3g} ms, into one {one:.3g} ms, into two RGBA16F {half:.3g} ms, and with "
+            f"no colour target (depth only) {depth:.3g} ms: the colour targets are {max(floor - depth, 0) / max(floor, 1e-9):.0%} "
+            f"of the floor, and the rest ({depth:.3g} ms) is clears, vertex work, rasterisation and the fragment "
+            f"shader's surface record.")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--glintlab", default=str(ROOT / "build/release/glintlab"))
@@ -81,6 +97,7 @@ def main():
     parser.add_argument("--width", type=int, default=1920)
     parser.add_argument("--height", type=int, default=1080)
     parser.add_argument("--frames", type=int, default=20)
+    parser.add_argument("--sweep-frames", type=int, default=10, help="frames per point of the constant-cost sweep")
     parser.add_argument("--quick", action="store_true", help="640x360, 3 frames, no constant-cost sweep (llvmpipe)")
     args = parser.parse_args()
     if args.quick:
@@ -90,38 +107,23 @@ def main():
     key = "wall_ms_median" if args.quick else "gpu_ms_median"
 
     sections, commands, results = [], [], {}
-    with tempfile.TemporaryDirectory() as work:
-        scenes = [(scene, methods, title) for scene, methods, title in TABLES]
-        scenes.append(("builtin:glint-area-lights", AREA_METHODS,
-                       "builtin:glint-area-lights (binomial glints under a quad, a disk and a sphere light)"))
-        for kind in LIGHT_KINDS:
-            scenes.append((one_light_scene(kind, work), AREA_METHODS,
-                           f"glint-area-lights, {kind} light only (scenes/glint-area-lights.toml without the others)"))
-        for scene, methods, title in scenes:
-            result, command = bench(args.glintlab, scene, methods, args)
-            label = title.split(" (")[0]
-            results[label] = result
-            commands.append(command.replace(str(Path(work)) + "/", ""))
-            sections.append(f"{title}:\n\n{table(result, key)}")
-        device = result["device"]
-        constant_cost = ""
-        if not args.quick:
-            sweep = [str(ROOT / "tools/bench-constant-cost.sh"), args.glintlab, "512", "10"]
-            print("+", " ".join(sweep), file=sys.stderr, flush=True)
-            out = subprocess.run(sweep, check=True, capture_output=True, text=True).stdout
-            commands.append("tools/bench-constant-cost.sh build/release/glintlab 512 10")
-            constant_cost = ("\n## deng2022's constant cost against yan2016\n\n`tools/bench-constant-cost.sh` at "
-                             "512x512 (docs/results.md, \"Prefiltered glints\", says what it sweeps):\n\n" + out)
+    state = {"device": "", "constant_cost": "", "floor": ""}
 
-    checks = ["| target | measured | holds |", "| --- | ---: | --- |"]
-    for label, method, baseline, limit in (QUICK_TARGETS if args.quick else TARGETS):
-        r = ratio(results[label], method, baseline, key)
-        checks.append(f"| {method} <= {limit}x {baseline} on {label} | {r:.2f}x | {'yes' if r <= limit else 'no'} |")
-
-    title = "Timings on llvmpipe" if args.quick else "GPU timings"
-    doc = f"""# {title} ({device})
-
-Generated by `tools/gpu-timings.py{' --quick' if args.quick else ''}` on {device} through EGL, headless, {args.width}x{args.height}: GPU time
+    def write(complete):
+        """The document from what has been measured so far: written after every bench, so that a
+        run cut short keeps its tables (and says it was cut short)."""
+        checks = ["| target | measured | holds |", "| --- | ---: | --- |"]
+        for label, method, baseline, limit in (QUICK_TARGETS if args.quick else TARGETS):
+            if label not in results:
+                checks.append(f"| {method} <= {limit}x {baseline} on {label} | not measured | |")
+                continue
+            r = ratio(results[label], method, baseline, key)
+            checks.append(f"| {method} <= {limit}x {baseline} on {label} | {r:.2f}x | {'yes' if r <= limit else 'no'} |")
+        title = "Timings on llvmpipe" if args.quick else "GPU timings"
+        partial = "" if complete else "\n**This run was cut short: the tables below are those it finished.**\n"
+        doc = f"""# {title} ({state['device']})
+{partial}
+Generated by `tools/gpu-timings.py{' --quick' if args.quick else ''}` on {state['device']} through EGL, headless, {args.width}x{args.height}: GPU time
 from GL timer queries and the CPU's wall clock around the same frames, medians of {args.frames} timed frames
 per method, the methods of a table taking turns frame by frame; "/ first" and the targets are ratios of
 {'the wall clock (llvmpipe renders on the CPU at the flush, which its timer queries do not time)' if args.quick else 'GPU time'}
@@ -142,8 +144,37 @@ carry over to other GPUs. Commands:
 ## Every method
 
 {(chr(10) * 2).join(sections)}
-{constant_cost}"""
-    Path(args.out).write_text(doc.rstrip() + "\n")
+
+{state['floor']}
+{state['constant_cost']}"""
+        Path(args.out).write_text(doc.rstrip() + "\n")
+
+    with tempfile.TemporaryDirectory() as work:
+        scenes = [(scene, methods, title) for scene, methods, title in TABLES]
+        scenes.append(("builtin:glint-area-lights", AREA_METHODS,
+                       "builtin:glint-area-lights (binomial glints under a quad, a disk and a sphere light)"))
+        for kind in LIGHT_KINDS:
+            scenes.append((one_light_scene(kind, work), AREA_METHODS,
+                           f"glint-area-lights, {kind} light only (scenes/glint-area-lights.toml without the others)"))
+        for scene, methods, title in scenes:
+            breakdown = scene == FLOOR_SCENE
+            result, command = bench(args.glintlab, scene, methods, args, breakdown)
+            label = title.split(" (")[0]
+            results[label] = result
+            commands.append(command.replace(str(Path(work)) + "/", ""))
+            sections.append(f"{title}:\n\n{table(result, key)}")
+            state["device"] = result["device"]
+            if breakdown:
+                state["floor"] = floor_paragraph(result, key)
+            write(complete=False)
+        if not args.quick:
+            sweep = [str(ROOT / "tools/bench-constant-cost.sh"), args.glintlab, "512", str(args.sweep_frames)]
+            print("+", " ".join(sweep), file=sys.stderr, flush=True)
+            out = subprocess.run(sweep, check=True, capture_output=True, text=True).stdout
+            commands.append(f"tools/bench-constant-cost.sh build/release/glintlab 512 {args.sweep_frames}")
+            state["constant_cost"] = ("\n## deng2022's constant cost against yan2016\n\n`tools/bench-constant-cost.sh` at "
+                                      "512x512 (docs/results.md, \"Prefiltered glints\", says what it sweeps):\n\n" + out)
+    write(complete=True)
     print(f"wrote {args.out}", file=sys.stderr)
 
 

@@ -215,6 +215,9 @@ int run_cli(int argc, char** argv) {
   bench->add_option("--bench-frames", bench_frames, "timed frames per method")->default_str("30")->check(CLI::Range(1, 100000));
   bench->add_option("--warmup", bench_warmup, "untimed frames first (at least one is drawn: it compiles the programs)")->default_str("3")->check(CLI::Range(0, 1000));
   bench->add_option("-o,--out", bench_o.out, "also write bench.json into this directory");
+  bool floor_breakdown = false;
+  bench->add_flag("--floor-breakdown", floor_breakdown,
+                  "also time the unshaded floor into two RGBA16F targets, one RGBA32F target and depth only");
 
   CommonOptions view_o;
   ViewOptions view_options;
@@ -343,7 +346,7 @@ int run_cli(int argc, char** argv) {
       const auto methods = resolve_methods(bench_o.methods, bench_o.params);
       if (!bench_o.out.empty()) check_output_file(std::filesystem::path(bench_o.out) / "bench.json", "-o");
       Session session(bench_o, Workload{.methods = 1});
-      run_bench(session, methods, bench_frames, bench_warmup, bench_o.out);
+      run_bench(session, methods, bench_frames, bench_warmup, bench_o.out, floor_breakdown);
     }
   } catch (const InputError& e) {
     std::cerr << "glintlab: error: " << e.what() << "\n";

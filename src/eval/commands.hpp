@@ -77,8 +77,10 @@ struct BenchResult {
   int frames = 0;
 };
 
-/// Times every method's frame; writes bench.json under `out` if it is not empty.
+/// Times every method's frame and the unshaded floor (with `floor_breakdown`, also the floor into
+/// cheaper colour targets: two RGBA16F, one RGBA32F, depth only); writes bench.json under `out` if
+/// it is not empty.
 std::vector<BenchResult> run_bench(Session& session, const std::vector<MethodChoice>& methods, int frames, int warmup,
-                                   const std::filesystem::path& out);
+                                   const std::filesystem::path& out, bool floor_breakdown = false);
 
 }  // namespace glintlab

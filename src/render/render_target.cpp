@@ -8,19 +8,24 @@
 
 namespace glintlab {
 
-RenderTarget::RenderTarget(int width, int height) : width_(width), height_(height) {
-  total_ = gl::make_texture(GL_TEXTURE_2D);
-  specular_ = gl::make_texture(GL_TEXTURE_2D);
-  depth_ = gl::make_texture(GL_TEXTURE_2D);
-  glTextureStorage2D(total_.id(), 1, GL_RGBA32F, width, height);
-  glTextureStorage2D(specular_.id(), 1, GL_RGBA32F, width, height);
-  glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, width, height);
+RenderTarget::RenderTarget(int width, int height, TargetLayout layout)
+    : width_(width), height_(height), layout_(layout) {
+  if (layout.colour_targets < 0 || layout.colour_targets > 2)
+    throw RuntimeFailure("RenderTarget: " + std::to_string(layout.colour_targets) + " colour targets (0 to 2 allowed)");
   fbo_ = gl::make_framebuffer();
-  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, total_.id(), 0);
-  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT1, specular_.id(), 0);
-  glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
-  const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  gl::Texture* colour[] = {&total_, &specular_};
+  GLenum buffers[] = {GL_NONE, GL_NONE};
+  for (int i = 0; i < layout.colour_targets; ++i) {
+    *colour[i] = gl::make_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(colour[i]->id(), 1, layout.colour_format, width, height);
+    buffers[i] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
+    glNamedFramebufferTexture(fbo_.id(), buffers[i], colour[i]->id(), 0);
+  }
+  // The forward pass writes both outputs; an output whose draw buffer is GL_NONE is discarded.
   glNamedFramebufferDrawBuffers(fbo_.id(), 2, buffers);
+  depth_ = gl::make_texture(GL_TEXTURE_2D);
+  glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, width, height);
+  glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
   if (glCheckNamedFramebufferStatus(fbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw RuntimeFailure("cannot create a " + std::to_string(width) + "x" + std::to_string(height) +
                          " float render target (out of GPU memory?)");
@@ -32,8 +37,7 @@ void RenderTarget::bind_and_clear(int viewport_width, int viewport_height) const
   glViewport(0, 0, viewport_width > 0 ? viewport_width : width_, viewport_height > 0 ? viewport_height : height_);
   const float zero[4] = {0, 0, 0, 0};
   const float far = 1.0f;
-  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, zero);
-  glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 1, zero);
+  for (int i = 0; i < layout_.colour_targets; ++i) glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, i, zero);
   glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &far);
 }
 

@@ -172,8 +172,13 @@ void Renderer::draw(const MethodDescriptor& method, const ParamValues& params, c
 
 void Renderer::draw_module(const std::string& module, const ParamValues& params, const Camera& camera, int width,
                            int height) {
-  RenderTarget& rt = target(width, height);
-  rt.bind_and_clear();
+  draw_module(module, params, camera, target(width, height));
+}
+
+void Renderer::draw_module(const std::string& module, const ParamValues& params, const Camera& camera,
+                           RenderTarget& target) {
+  const int width = target.width(), height = target.height();
+  target.bind_and_clear();
   draw_scene(module, params,
              frame_uniforms(camera, camera.projection_matrix(static_cast<float>(width) / static_cast<float>(height)),
                             {width, height, 1, 0}, {0, 0, 1, 0}));

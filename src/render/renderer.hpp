@@ -68,6 +68,9 @@ class Renderer {
   [[nodiscard]] Frame read_frame() const;
   /// The same with any shading module in the method slot (e.g. passes/unshaded.glsl).
   void draw_module(const std::string& module, const ParamValues& params, const Camera& camera, int width, int height);
+  /// draw_module into `target` instead of the internal target (the floor's layouts of `glintlab
+  /// bench --floor-breakdown`); read_frame() does not see it.
+  void draw_module(const std::string& module, const ParamValues& params, const Camera& camera, RenderTarget& target);
   /// draw_module, read back (e.g. the diagnostics of glints/chermain/glint_cells.glsl).
   Frame render_module(const std::string& module, const ParamValues& params, const Camera& camera, int width,
                       int height);

@@ -48,7 +48,8 @@ float atanSlope(float c, float h) {
 // the inner axis u = c tan t with c^2 = 1 + v^2 (p du = cos^2 t / (pi c^3) dt), the outer axis
 // v = C tan T with C^2 = 1 + u_near^2 (u_near: the box's u closest to the peak), so that the
 // marginal of v becomes about cos T / C^2. The outer axis is the one nearer the peak (where the
-// density is flattest). 4x4 Gauss-Legendre, accurate for boxes of any width far from the peak.
+// density is flattest): 4-point Gauss-Legendre; the inner integral of cos^2 t in closed form.
+// Accurate for boxes of any width far from the peak.
 float ggxTailAverage(vec2 c, vec2 h) {
   vec2 near = max(abs(c) - h, vec2(0.0));
   bool outerV = near.y <= near.x;
@@ -63,11 +64,10 @@ float ggxTailAverage(vec2 c, vec2 h) {
     float cv = sqrt(1.0 + v * v);
     float t0 = atan((co.x - ho.x) / cv);
     float innerSlope = atanSlope(co.x / cv, ho.x / cv) / cv;  // (t1 - t0) / (2 h_u)
-    float inner = 0.0;
-    for (int j = 0; j < 4; ++j) {
-      float ct = cos(t0 + innerSlope * ho.x * (1.0 + GL4_NODES[j]));
-      inner += GL4_WEIGHTS[j] * ct * ct;
-    }
+    // The mean of cos^2 over [t0, t1] in closed form: 1/2 + cos(t0 + t1) sin(D) / (2 D), D = t1 - t0.
+    float span = 2.0 * innerSlope * ho.x;
+    float sinc = span > 1e-4 ? sin(span) / span : 1.0 - span * span / 6.0;
+    float inner = 0.5 + 0.5 * cos(2.0 * t0 + span) * sinc;
     sum += GL4_WEIGHTS[i] * (C / (cosT * cosT)) * innerSlope * inner / (PI * cv * cv * cv);
   }
   return sum * outerSlope;
@@ -111,9 +111,26 @@ float gaussianAxisAverage(float c, float h) {
   return dot(GL4_WEIGHTS, exp(-u * u));
 }
 
+// atan(x) / x for x >= 0, and its limit 1 at 0.
+float atanOverX(float x) { return x > 1e-4 ? atan(x) / x : 1.0 - x * x / 3.0; }
+
+// GGX in alpha units: the average of p over the box of half sides h centred on the peak, the
+// quadrant mass over the quadrant's area (ggxQuadrantMass / (h.x h.y)) written so that nothing
+// cancels (a sum of positive terms: exact for boxes of any size, 1 / pi as h -> 0).
+float ggxPeakBoxAverage(vec2 h) {
+  float su2 = 1.0 + h.x * h.x, sv2 = 1.0 + h.y * h.y;
+  return (atanOverX(h.y * inversesqrt(su2)) / su2 + atanOverX(h.x * inversesqrt(sv2)) / sv2) / TWO_PI;
+}
+
 float boxAveragedSlopeDensity(int ndf, vec2 centre, vec2 halfSize, vec2 alpha) {
   vec2 c = centre / alpha, h = halfSize / alpha;
   float average = ndf == NDF_BECKMANN ? gaussianAxisAverage(c.x, h.x) * gaussianAxisAverage(c.y, h.y) / PI
                                       : ggxBoxAverage(c, h);
   return max(average, 0.0) / (alpha.x * alpha.y);
+}
+
+// boxAveragedSlopeDensity of a box centred on the peak (the box lobe's peak density).
+float peakBoxAveragedSlopeDensity(int ndf, vec2 halfSize, vec2 alpha) {
+  if (ndf == NDF_BECKMANN) return boxAveragedSlopeDensity(ndf, vec2(0.0), halfSize, alpha);
+  return ggxPeakBoxAverage(halfSize / alpha) / (alpha.x * alpha.y);
 }

@@ -130,7 +130,8 @@ vec3 lobeLightDirection(Surface s, LightData L) {
 //   it), so this share also falls to 0 as the light's lowest point comes down to the horizon (its
 //   elevation's sine from 0.1 to 0). Smooth in all three, so no seam runs across a surface.
 // The two shares combine as independent: 1 - (1 - box)(1 - anisotropic).
-float ltcRepresentativePointWeight(Surface s, LightData L, Lobe lobe, vec3 wo) {
+// A: the LTC's roughness matrix (ltcLobeMatrix of the lobe).
+float ltcRepresentativePointWeight(Surface s, LightData L, Lobe lobe, mat2 A, vec3 wo) {
   vec3 centreDir = lightCentreDirection(L, s.position);
   float solidAngle = lightSolidAngle(L, s.position, centreDir);
   vec3 dl1, dl2;
@@ -142,7 +143,6 @@ float ltcRepresentativePointWeight(Surface s, LightData L, Lobe lobe, vec3 wo) {
     float boxArea = 4.0 * lobe.footprint.x * lobe.footprint.y;
     box = boxArea * boxArea / max(boxArea * boxArea + imageArea * imageArea, 1e-37);
   }
-  mat2 A = ltcLobeMatrix(lobe);
   float halfTrace = 0.5 * (A[0][0] + A[1][1]), halfDiff = 0.5 * (A[0][0] - A[1][1]);
   float root = sqrt(halfDiff * halfDiff + A[0][1] * A[0][1]);
   float largest = halfTrace + root, smallest = max(halfTrace - root, 1e-36);
@@ -164,8 +164,9 @@ Radiance shadeLobe(Surface s, LightData L, Lobe lobe, int areaLights) {
   if (areaLights == AREA_LIGHTS_LTC && lightHasExtent(L) && lobe.ndf == NDF_GGX) {
     vec3 wo = toLocal(s, s.view);
     if (wo.z <= 0.0) return Radiance(vec3(0.0), vec3(0.0));
-    Radiance result = shadeLobeLtc(s, L, lobe, wo);
-    float w = ltcRepresentativePointWeight(s, L, lobe, wo);
+    mat2 A = ltcLobeMatrix(lobe);
+    Radiance result = shadeLobeLtc(s, L, A, wo);
+    float w = ltcRepresentativePointWeight(s, L, lobe, A, wo);
     result.specular *= 1.0 - w;
     if (blendSideNeeded(w > 0.0)) result.specular += w * shadeLobe(s, L, lobe).specular;
     return result;

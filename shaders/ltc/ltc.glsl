@@ -75,18 +75,25 @@ float ltcEdgesFormFactor(LtcPolygonEdges e) {
   return abs(sum) / TWO_PI;
 }
 
-// The polygon's integral under the lobe M^-1: clipped to the surface's horizon (the lobe it
-// replaces is zero below it, while the fitted LTC may reach there), mapped by M^-1, and clipped to
-// the cosine's horizon. M^-1 = identity gives the Lambert form factor.
-float ltcPolygonIntegral(mat3 Minv, vec3 v[LIGHT_POLYGON_MAX_VERTICES], int count) {
-  LtcPolygonEdges e = ltcPolygonSides(v, count);
-  ltcClipEdges(e, LIGHT_POLYGON_MAX_VERTICES);
+// The integral under the lobe M^-1 of a polygon already clipped to the surface's horizon (slots
+// [0, LIGHT_POLYGON_MAX_VERTICES] of ltcClipEdges): mapped by M^-1 and clipped to the cosine's
+// horizon. The surface's horizon comes first because the lobe the LTC replaces is zero below it,
+// while the fitted LTC may reach there.
+float ltcClippedPolygonIntegral(mat3 Minv, LtcPolygonEdges e) {
   for (int i = 0; i <= LIGHT_POLYGON_MAX_VERTICES; ++i) {
     e.from[i] = Minv * e.from[i];
     e.to[i] = Minv * e.to[i];
   }
   ltcClipEdges(e, LIGHT_POLYGON_MAX_VERTICES + 1);
   return ltcEdgesFormFactor(e);
+}
+
+// The polygon's integral under the lobe M^-1, clipped at both horizons. M^-1 = identity gives
+// the Lambert form factor.
+float ltcPolygonIntegral(mat3 Minv, vec3 v[LIGHT_POLYGON_MAX_VERTICES], int count) {
+  LtcPolygonEdges e = ltcPolygonSides(v, count);
+  ltcClipEdges(e, LIGHT_POLYGON_MAX_VERTICES);
+  return ltcClippedPolygonIntegral(Minv, e);
 }
 
 // The Lambert form factor of the polygon (M^-1 = identity: one clip).

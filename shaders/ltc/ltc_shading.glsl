@@ -30,7 +30,7 @@
 mat2 ltcLobeMatrix(Lobe lobe) {
   if (lobe.footprint == vec2(0.0)) return lobe.A;
   vec2 alpha = sqrt(vec2(lobe.A[0][0], lobe.A[1][1]));
-  float peak = boxAveragedSlopeDensity(lobe.ndf, vec2(0.0), lobe.footprint, alpha);
+  float peak = peakBoxAveragedSlopeDensity(lobe.ndf, lobe.footprint, alpha);
   float target = 1.0 / max(PI * PI * peak * peak, 1e-36);  // det A'
   vec2 f2 = lobe.footprint * lobe.footprint;
   // det(A + k F) = f2.x f2.y k^2 + (a00 f2.y + a11 f2.x) k + det A: the positive root of = target.
@@ -56,7 +56,7 @@ struct LtcLobe {
   vec4 terms;
 };
 
-// The isotropic table made to hold a lobe of roughness matrix A (docs/methods.md, "Area lights by
+// The isotropic table made to hold a lobe of roughness matrix A (ltcLobeMatrix; docs/methods.md, "Area lights by
 // LTC"). In the view's frame A = [[a00, a01], [a01, a11]] (x along the view's azimuth). The table
 // is read at alpha = sqrt(a00), the lobe's roughness along the view, whose plane carries the
 // table's view-dependent shape (and the view's masking); B = alpha A^-1/2 (symmetric) maps the
@@ -71,8 +71,7 @@ struct LtcLobe {
 // 70 degrees from the normal along the narrow axis of a lobe with an axis of alpha 1), where the
 // peak-equivalent (det A)^(1/4) overestimates it up to 1.6-fold (a wide axis of alpha 1 loses
 // energy to masking and the horizon).
-LtcLobe ltcLobe(Lobe lobe, vec3 wo) {
-  mat2 A = ltcLobeMatrix(lobe);
+LtcLobe ltcLobe(mat2 A, vec3 wo) {
   mat3 frame = ltcViewFrame(wo);
   vec2 x = vec2(frame[0][0], frame[1][0]), y = vec2(frame[0][1], frame[1][1]);  // its rows
   float a00 = dot(x, A * x), a01 = dot(x, A * y), a11 = dot(y, A * y);
@@ -91,47 +90,74 @@ LtcLobe ltcLobe(Lobe lobe, vec3 wo) {
   return LtcLobe(ltcInverseMatrix(uLtcGgx, min(alpha, 1.0), wo.z) * T * frame, ltcTerms(uLtcGgx, min(rms, 1.0), wo.z));
 }
 
-// The form factor of the light seen from s.position under the lobe M^-1 (a matrix acting on
-// local-frame vectors), clipped at the horizon. `lambert` (a constant at every call): M^-1 is the
-// identity, so a polygon needs one clip and a disk form facing the point (spheres, suns) is a
-// circular cone, whose vector form factor is sin^2 of its half-angle along its axis.
-float ltcLightIntegral(Surface s, LightData L, mat3 Minv, const bool lambert) {
+// A light with extent as the LTC integrals see it from one shading point, in the local frame,
+// made once per light and shared by every integral over it (the diffuse form factor and each
+// lobe's): a polygon's sides clipped at the surface's horizon, or a disk form scaled to unit size
+// (only the cone matters: far and wide lights stay within float range).
+struct LtcLightForm {
+  LtcPolygonEdges edges;  // polygon forms (lightHasPolygonForm, a constant for a light of known kind)
+  bool surrounds;         // inside a sphere light: every direction sees it, every integral is 1
+  bool facing;            // a disk form facing the point (spheres, suns): a circular cone
+  float sinHalf;          // the sine of that cone's half-angle
+  vec3 centre, u, w;      // the disk's centre and orthogonal semi-axes
+};
+
+LtcLightForm ltcLightForm(Surface s, LightData L) {
+  LtcLightForm f;
   if (lightHasPolygonForm(L)) {
     vec3 vertex[LIGHT_POLYGON_MAX_VERTICES];
     int count = lightPolygonForm(L, vertex);
     for (int i = 0; i < LIGHT_POLYGON_MAX_VERTICES; ++i) vertex[i] = toLocal(s, vertex[i] - s.position);
-    return lambert ? ltcPolygonFormFactorClipped(vertex, count) : ltcPolygonIntegral(Minv, vertex, count);
+    f.edges = ltcPolygonSides(vertex, count);
+    ltcClipEdges(f.edges, LIGHT_POLYGON_MAX_VERTICES);
+    return f;
   }
   LightDisk disk = lightDiskForm(L, s.position);
-  // Inside a sphere light every direction sees it: the LTC integrates to 1 over the hemisphere.
-  if (disk.angularRadius >= 0.5 * PI - 1e-4) return 1.0;
+  f.surrounds = disk.angularRadius >= 0.5 * PI - 1e-4;
+  f.facing = disk.facing;
+  f.sinHalf = sin(disk.angularRadius);
   vec3 c = disk.centre - s.position;
-  if (lambert && disk.facing) {
-    float sinHalf = sin(disk.angularRadius);
-    return ltcSphereFormFactor(sinHalf * sinHalf * normalize(toLocal(s, c)));
-  }
   vec3 n = disk.normal;
   vec3 u = normalize(abs(n.x) < 0.9 ? cross(n, vec3(1.0, 0.0, 0.0)) : cross(n, vec3(0.0, 1.0, 0.0)));
-  vec3 w = cross(n, u);
-  // Only the cone matters: the disk scaled to unit size keeps far and wide lights within float range.
   float scale = 1.0 / max(length(c), disk.radius);
-  vec3 F = ltcDiskVectorFormFactor(Minv, toLocal(s, c * scale), toLocal(s, u * (disk.radius * scale)),
-                                   toLocal(s, w * (disk.radius * scale)));
-  return ltcSphereFormFactor(F);
+  f.centre = toLocal(s, c * scale);
+  f.u = toLocal(s, u * (disk.radius * scale));
+  f.w = toLocal(s, cross(n, u) * (disk.radius * scale));
+  return f;
 }
 
-// Specular and diffuse radiance of one light with extent, or zero when the light is behind the
-// surface or the surface faces away from the viewer.
-Radiance shadeLobeLtc(Surface s, LightData L, Lobe lobe, vec3 wo) {
+// The light's integral under the lobe M^-1 (a matrix acting on local-frame vectors), clipped at
+// the horizon: the polygon by ltcClippedPolygonIntegral, the disk's ellipse through the sphere table.
+float ltcLightIntegral(LtcLightForm f, LightData L, mat3 Minv) {
+  if (lightHasPolygonForm(L)) return ltcClippedPolygonIntegral(Minv, f.edges);
+  if (f.surrounds) return 1.0;
+  return ltcSphereFormFactor(ltcDiskVectorFormFactor(Minv, f.centre, f.u, f.w));
+}
+
+// The light's Lambert form factor (M^-1 = identity): a polygon needs only the horizon's clip, and
+// a disk form facing the point is a circular cone, whose vector form factor is sin^2 of its
+// half-angle along its axis.
+float ltcLightFormFactor(LtcLightForm f, LightData L) {
+  if (lightHasPolygonForm(L)) return ltcEdgesFormFactor(f.edges);
+  if (f.surrounds) return 1.0;
+  if (f.facing) return ltcSphereFormFactor(f.sinHalf * f.sinHalf * normalize(f.centre));
+  return ltcSphereFormFactor(ltcDiskVectorFormFactor(mat3(1.0), f.centre, f.u, f.w));
+}
+
+// Specular and diffuse radiance of one light with extent under the LTC of roughness matrix A
+// (ltcLobeMatrix of the lobe), or zero when the light is behind the surface or the surface faces
+// away from the viewer.
+Radiance shadeLobeLtc(Surface s, LightData L, mat2 A, vec3 wo) {
   Radiance result = Radiance(vec3(0.0), vec3(0.0));
   vec3 centreDir = lightCentreDirection(L, s.position);
   if (lightSolidAngle(L, s.position, centreDir) <= 0.0) return result;  // the emitting side faces away
   vec3 radiance = lightRadiance(L);
-  result.diffuse = s.diffuse * ltcLightIntegral(s, L, mat3(1.0), true) * radiance;
+  LtcLightForm form = ltcLightForm(s, L);
+  result.diffuse = s.diffuse * ltcLightFormFactor(form, L) * radiance;
 
-  LtcLobe ltc = ltcLobe(lobe, wo);
+  LtcLobe ltc = ltcLobe(A, wo);
   // The lobe times Schlick's Fresnel integrated over the hemisphere (the tables' magnitude and Fresnel terms).
   vec3 albedo = ltcSpecularScale(ltc.terms, s.f0);
-  result.specular = albedo * ltcLightIntegral(s, L, ltc.Minv, false) * radiance;
+  result.specular = albedo * ltcLightIntegral(form, L, ltc.Minv) * radiance;
   return result;
 }

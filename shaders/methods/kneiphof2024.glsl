@@ -33,11 +33,12 @@ Radiance shadeLight(Surface s, LightData L) {
   float solidAngle = lightSolidAngle(L, s.position, centreDir);
   if (wo.z <= 0.0 || solidAngle <= 0.0) return result;
   vec3 radiance = lightRadiance(L);
-  result.diffuse = s.diffuse * ltcLightIntegral(s, L, mat3(1.0), true) * radiance;
+  LtcLightForm form = ltcLightForm(s, L);  // shared by the diffuse and the specular integrals
+  result.diffuse = s.diffuse * ltcLightFormFactor(form, L) * radiance;
   if (LIGHT_CELLS > 1 && lightHasPolygonForm(L)) {
     result.specular = subdividedGlintSpecular(s, gLtc, gBinomial, L, wo, model, reuseGgxShape) * radiance;
   } else {
-    GlintLightIntegral g = glintLightIntegral(s, gLtc, L, wo, centreDir, solidAngle, reuseGgxShape);
+    GlintLightIntegral g = glintLightIntegral(s, gLtc, L, form, wo, centreDir, solidAngle, reuseGgxShape);
     result.specular = glintFactor(gBinomial, g.hCentre, g.p, model) * g.specular * radiance;
   }
   return result;

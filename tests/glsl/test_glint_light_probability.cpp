@@ -201,10 +201,10 @@ vec4 evaluate(vec4 a, vec4 b) {
   GlintLtc ltc = glintLtc(s);
   float solidAngle = lightSolidAngle(L, s.position, centreDir);
   if (b.y > 0.5) {  // the GGX lobe's LTC integral with the D-only magnitude (light_probability = ggx-ltc)
-    vec3 p = glintProbabilityEstimates(s, ltc, L, wo, centreDir, solidAngle, ltcLightIntegral(s, L, ltc.ggxMinv, false));
+    vec3 p = glintProbabilityEstimates(s, ltc, L, wo, centreDir, solidAngle, ltcLightIntegral(ltcLightForm(s, L), L, ltc.ggxMinv));
     return vec4(p.x, mix(p.x, p.y, p.z), 0.0, 0.0);
   }
-  vec3 p = glintProbabilityEstimates(s, ltc, L, wo, centreDir, solidAngle, ltcLightIntegral(s, L, ltc.ndfMinv, false));
+  vec3 p = glintProbabilityEstimates(s, ltc, L, wo, centreDir, solidAngle, ltcLightIntegral(ltcLightForm(s, L), L, ltc.ndfMinv));
   uint seed = hash3(uvec3(uint(b.x), uint(a.x * 1000.0), 7u));
   float numerical = lightNdfIntegral(s, L, wo, 0u, 128u, hashToUnit2(seed), hashToUnit2(pcgHash(seed + 1u))) /
                     ggxTotalNdf(a.x);
@@ -444,8 +444,8 @@ vec4 evaluate(vec4 a, vec4 b) {
   shadingPointAndLight(a, b, s, L, wo, centreDir);
   float solidAngle = lightSolidAngle(L, s.position, centreDir);
   GlintLtc ltc = glintLtc(s);
-  vec3 p = glintProbabilityEstimates(s, ltc, L, wo, centreDir, solidAngle, ltcLightIntegral(s, L, ltc.ndfMinv, false));
-  GlintLightIntegral g = glintLightIntegral(s, ltc, L, wo, centreDir, solidAngle, false);
+  vec3 p = glintProbabilityEstimates(s, ltc, L, wo, centreDir, solidAngle, ltcLightIntegral(ltcLightForm(s, L), L, ltc.ndfMinv));
+  GlintLightIntegral g = glintLightIntegral(s, ltc, L, ltcLightForm(s, L), wo, centreDir, solidAngle, false);
   return vec4(g.p, p.y, p.z, g.specular.r);
 })", a, b);
   std::size_t k = 0;

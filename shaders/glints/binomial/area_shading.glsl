@@ -59,14 +59,14 @@ vec3 glintProbabilityEstimates(Surface s, GlintLtc ltc, LightData L, vec3 wo, ve
 // of the LTC's and the cap's terms by the cap's weight w is a weighted sum whose sides are
 // computed where their weight is not 0 (core/driver_profile.glsl: the hardware profile skips the
 // LTC's integrals for small lights and the cap's terms for large ones).
-GlintLightIntegral glintLightIntegral(Surface s, GlintLtc ltc, LightData L, vec3 wo, vec3 centreDir, float solidAngle,
-                                      const bool reuseGgxShape) {
+GlintLightIntegral glintLightIntegral(Surface s, GlintLtc ltc, LightData L, LtcLightForm form, vec3 wo,
+                                      vec3 centreDir, float solidAngle, const bool reuseGgxShape) {
   vec3 wi = toLocal(s, centreDir);
   float w = glintLightCapWeight(s, ltc, L, wo, wi, centreDir, solidAngle);
   GlintLightIntegral g = GlintLightIntegral(vec3(0.0), 0.0, normalize(wo + wi));
   if (blendSideNeeded(w < 1.0)) {
-    float ggxIntegral = ltcLightIntegral(s, L, ltc.ggxMinv, false);
-    float shape = reuseGgxShape ? ggxIntegral : ltcLightIntegral(s, L, ltc.ndfMinv, false);
+    float ggxIntegral = ltcLightIntegral(form, L, ltc.ggxMinv);
+    float shape = reuseGgxShape ? ggxIntegral : ltcLightIntegral(form, L, ltc.ndfMinv);
     g.specular += (1.0 - w) * (ltc.ggxScale * ggxIntegral);
     g.p += (1.0 - w) * (ltc.ndfScale * shape);
   }

@@ -77,8 +77,9 @@ float ggxDensity(float u, float v) {
   return 1.0 / (PI * e * e);
 }
 
-// Average of p over the box centre c +- half h (alpha units).
-float ggxBoxAverage(vec2 c, vec2 h) {
+// Average of p over the box centre c +- half h (alpha units); `relativeTails` as for
+// boxAveragedSlopeDensity.
+float ggxBoxAverage(vec2 c, vec2 h, const bool relativeTails) {
   bool narrowU = h.x < NARROW_BOX, narrowV = h.y < NARROW_BOX;
   float average = 0.0;
   if (narrowU && narrowV) {
@@ -100,7 +101,7 @@ float ggxBoxAverage(vec2 c, vec2 h) {
     average /= 2.0 * hn.y;
   }
   // The box's mass decides, not its average density: a wide box on the peak has a small average.
-  return average * 4.0 * h.x * h.y < TAIL_MASS ? ggxTailAverage(c, h) : average;
+  return relativeTails && average * 4.0 * h.x * h.y < TAIL_MASS ? ggxTailAverage(c, h) : average;
 }
 
 // Beckmann is separable: the average of exp(-u^2) along one axis.
@@ -122,11 +123,18 @@ float ggxPeakBoxAverage(vec2 h) {
   return (atanOverX(h.y * inversesqrt(su2)) / su2 + atanOverX(h.x * inversesqrt(sv2)) / sv2) / TWO_PI;
 }
 
-float boxAveragedSlopeDensity(int ndf, vec2 centre, vec2 halfSize, vec2 alpha) {
+// `relativeTails` (a constant at every call): whether boxes in the tails need relative precision,
+// as a density does (D = P22 / cos^4 magnifies it at grazing half vectors). A mass summed over a
+// light's image needs only absolute precision, which the closed forms' ~1e-7 gives everywhere:
+// there the GGX tails' quadrature is not compiled (it is a third of the function's work).
+float boxAveragedSlopeDensity(int ndf, vec2 centre, vec2 halfSize, vec2 alpha, const bool relativeTails) {
   vec2 c = centre / alpha, h = halfSize / alpha;
   float average = ndf == NDF_BECKMANN ? gaussianAxisAverage(c.x, h.x) * gaussianAxisAverage(c.y, h.y) / PI
-                                      : ggxBoxAverage(c, h);
+                                      : ggxBoxAverage(c, h, relativeTails);
   return max(average, 0.0) / (alpha.x * alpha.y);
+}
+float boxAveragedSlopeDensity(int ndf, vec2 centre, vec2 halfSize, vec2 alpha) {
+  return boxAveragedSlopeDensity(ndf, centre, halfSize, alpha, true);
 }
 
 // boxAveragedSlopeDensity of a box centred on the peak (the box lobe's peak density).

@@ -54,7 +54,8 @@ float lobeMassOnImage(Lobe lobe, LightImage image) {
     vec2 extent = sqrt(K[0] * K[0] + K[1] * K[1]) + 1e-20;  // bounding half sides
     vec2 imageHalf = extent * sqrt(0.25 * area / (extent.x * extent.y));
     // The box-averaged density averaged again over the image's box: per axis the larger of the
-    // two boxes in closed form, the smaller by 2-point Gauss-Legendre (exact for cubics). The
+    // two boxes in closed form, the smaller by 2-point Gauss-Legendre (exact for cubics); a mass,
+    // so the tails need no relative precision (boxAveragedSlopeDensity). The
     // convolution of the footprint box with anything normalised keeps its partition of unity
     // over neighbouring pixels, so the image's energy is kept however the boxes compare.
     vec2 b = lobe.footprint / alpha;
@@ -63,7 +64,7 @@ float lobeMassOnImage(Lobe lobe, LightImage image) {
     for (int i = 0; i < 2; ++i)
       for (int j = 0; j < 2; ++j) {
         vec2 offset = small * vec2(i == 0 ? -0.5773503 : 0.5773503, j == 0 ? -0.5773503 : 0.5773503);
-        sum += 0.25 * boxAveragedSlopeDensity(lobe.ndf, image.centre + offset * alpha, large * alpha, alpha);
+        sum += 0.25 * boxAveragedSlopeDensity(lobe.ndf, image.centre + offset * alpha, large * alpha, alpha, false);
       }
     return min(area * sum * alpha.x * alpha.y, 1.0);
   }

@@ -12,6 +12,18 @@
 #include "ltc/ltc_shading.glsl"
 #include "core/surface.glsl"
 
+// Whether the lobes given to the area-light shadeLobe below can be anisotropic. A module whose
+// lobes are isotropic wherever the material's is says so (`#define METHOD_LOBES_KEEP_ISOTROPY`:
+// the material's own lobe, or its alpha widened alike along both axes); then only an anisotropic
+// material's lobes can be (the program variant MATERIAL_ANISOTROPIC), and an isotropic material's
+// program compiles no hand-over to the representative point, which llvmpipe would otherwise run
+// for every light whatever its weight.
+#if defined(METHOD_LOBES_KEEP_ISOTROPY) && !MATERIAL_ANISOTROPIC
+const bool LOBES_MAY_BE_ANISOTROPIC = false;
+#else
+const bool LOBES_MAY_BE_ANISOTROPIC = true;
+#endif
+
 // dl1, dl2: conjugate semi-axes of the light's outline as seen from p, as changes of the unit
 // direction lc to its centre (perpendicular to lc; local frame).
 //
@@ -147,8 +159,9 @@ float ltcRepresentativePointWeight(Surface s, LightData L, Lobe lobe, mat2 A, ve
   float root = sqrt(halfDiff * halfDiff + A[0][1] * A[0][1]);
   float largest = halfTrace + root, smallest = max(halfTrace - root, 1e-36);
   float lowest = dot(centreDir, s.normal) - length(vec2(dot(dl1, s.normal), dot(dl2, s.normal)));
-  float anisotropic = smoothstep(1.25, 2.0, sqrt(largest / smallest)) * smoothstep(0.45, 0.6, sqrt(largest)) *
-                      smoothstep(0.0, 0.1, lowest);
+  float anisotropic = LOBES_MAY_BE_ANISOTROPIC ? smoothstep(1.25, 2.0, sqrt(largest / smallest)) *
+                                                    smoothstep(0.45, 0.6, sqrt(largest)) * smoothstep(0.0, 0.1, lowest)
+                                              : 0.0;
   return 1.0 - (1.0 - box) * (1.0 - anisotropic);
 }
 
@@ -164,11 +177,16 @@ Radiance shadeLobe(Surface s, LightData L, Lobe lobe, int areaLights) {
   if (areaLights == AREA_LIGHTS_LTC && lightHasExtent(L) && lobe.ndf == NDF_GGX) {
     vec3 wo = toLocal(s, s.view);
     if (wo.z <= 0.0) return Radiance(vec3(0.0), vec3(0.0));
+    // Box lobes and anisotropic ones: where neither can come, a constant false, and the lobe is the
+    // table's own LTC, handing nothing over.
+    bool mayHandOver = LOBES_MAY_BE_ANISOTROPIC || lobe.footprint != vec2(0.0);
     mat2 A = ltcLobeMatrix(lobe);
-    Radiance result = shadeLobeLtc(s, L, A, wo);
-    float w = ltcRepresentativePointWeight(s, L, lobe, A, wo);
-    result.specular *= 1.0 - w;
-    if (blendSideNeeded(w > 0.0)) result.specular += w * shadeLobe(s, L, lobe).specular;
+    Radiance result = shadeLobeLtc(s, L, A, wo, mayHandOver);
+    if (mayHandOver) {
+      float w = ltcRepresentativePointWeight(s, L, lobe, A, wo);
+      result.specular *= 1.0 - w;
+      if (blendSideNeeded(w > 0.0)) result.specular += w * shadeLobe(s, L, lobe).specular;
+    }
     return result;
   }
   return shadeLobe(s, L, lobe);

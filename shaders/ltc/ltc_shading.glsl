@@ -71,8 +71,14 @@ struct LtcLobe {
 // 70 degrees from the normal along the narrow axis of a lobe with an axis of alpha 1), where the
 // peak-equivalent (det A)^(1/4) overestimates it up to 1.6-fold (a wide axis of alpha 1 loses
 // energy to masking and the horizon).
-LtcLobe ltcLobe(mat2 A, vec3 wo) {
+// `anisotropic` (a constant at every call): false where A is known to be alpha^2 I, whose B and T
+// are the identity and whose rms roughness is alpha: the table's own LTC, without the stretch.
+LtcLobe ltcLobe(mat2 A, vec3 wo, const bool anisotropic) {
   mat3 frame = ltcViewFrame(wo);
+  if (!anisotropic) {
+    float a = min(sqrt(A[0][0]), 1.0);
+    return LtcLobe(ltcInverseMatrix(uLtcGgx, a, wo.z) * frame, ltcTerms(uLtcGgx, a, wo.z));
+  }
   vec2 x = vec2(frame[0][0], frame[1][0]), y = vec2(frame[0][1], frame[1][1]);  // its rows
   float a00 = dot(x, A * x), a01 = dot(x, A * y), a11 = dot(y, A * y);
   // det A from the local frame (rotation-invariant; exact for a diagonal A, where the view frame's
@@ -145,9 +151,9 @@ float ltcLightFormFactor(LtcLightForm f, LightData L) {
 }
 
 // Specular and diffuse radiance of one light with extent under the LTC of roughness matrix A
-// (ltcLobeMatrix of the lobe), or zero when the light is behind the surface or the surface faces
-// away from the viewer.
-Radiance shadeLobeLtc(Surface s, LightData L, mat2 A, vec3 wo) {
+// (ltcLobeMatrix of the lobe; `anisotropic` as for ltcLobe), or zero when the light is behind the
+// surface or the surface faces away from the viewer.
+Radiance shadeLobeLtc(Surface s, LightData L, mat2 A, vec3 wo, const bool anisotropic) {
   Radiance result = Radiance(vec3(0.0), vec3(0.0));
   vec3 centreDir = lightCentreDirection(L, s.position);
   if (lightSolidAngle(L, s.position, centreDir) <= 0.0) return result;  // the emitting side faces away
@@ -155,7 +161,7 @@ Radiance shadeLobeLtc(Surface s, LightData L, mat2 A, vec3 wo) {
   LtcLightForm form = ltcLightForm(s, L);
   result.diffuse = s.diffuse * ltcLightFormFactor(form, L) * radiance;
 
-  LtcLobe ltc = ltcLobe(A, wo);
+  LtcLobe ltc = ltcLobe(A, wo, anisotropic);
   // The lobe times Schlick's Fresnel integrated over the hemisphere (the tables' magnitude and Fresnel terms).
   vec3 albedo = ltcSpecularScale(ltc.terms, s.f0);
   result.specular = albedo * ltcLightIntegral(form, L, ltc.Minv) * radiance;

@@ -2,6 +2,7 @@
 // anisotropic grids, with the fixes of Kneiphof & Klein's code (glints/binomial/*.glsl). Its
 // material is the binomial-glints kind (MATERIAL_KIND_BINOMIAL_GLINTS); every other material is shaded
 // as by `conventional`. Descriptor: src/shading/methods/deliot2023.cpp; docs/methods.md#deliot2023.
+#define METHOD_LOBES_KEEP_ISOTROPY  // its lobes are the material's own (lobe/lobe_shading.glsl)
 #include "glints/binomial/shading.glsl"
 #include "lobe/lobe.glsl"
 #include "lobe/lobe_shading.glsl"

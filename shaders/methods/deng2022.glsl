@@ -7,6 +7,7 @@
 // paper's switch, sec. 5.1), at a cost bounded by that level's size. Other
 // materials are shaded as by `conventional` (lights with extent by LTC).
 // Descriptor: src/shading/methods/deng2022.cpp; docs/methods.md#deng2022.
+#define METHOD_LOBES_KEEP_ISOTROPY  // its lobes are the material's own (lobe/lobe_shading.glsl)
 #include "lobe/lobe.glsl"
 #include "lobe/lobe_shading.glsl"
 

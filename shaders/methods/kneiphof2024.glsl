@@ -4,6 +4,7 @@
 // the glint factor scaling the light's LTC integral; optionally the light cut into 2 x 2 or 4 x 4
 // cells split hierarchically. Other materials are shaded as by `conventional`. Descriptor:
 // src/shading/methods/kneiphof2024.cpp; docs/methods.md#kneiphof2024.
+#define METHOD_LOBES_KEEP_ISOTROPY  // its lobes are the material's own (lobe/lobe_shading.glsl)
 #include "lobe/lobe.glsl"
 #include "lobe/lobe_shading.glsl"
 

@@ -1,6 +1,7 @@
 // Method `toksvig`: Toksvig's (2005) roughness from the length of the mip-filtered normal-map
 // normal. Descriptor: src/shading/methods/toksvig.cpp; docs/methods.md#toksvig.
 #define METHOD_SHADES_ENVIRONMENT  // through shadeLobe, at its own lobe
+#define METHOD_LOBES_KEEP_ISOTROPY  // the material's alpha widened alike along both axes (lobe/lobe_shading.glsl)
 #include "lobe/lobe_shading.glsl"
 #include "lobe/roughness_filtering.glsl"
 

@@ -4,6 +4,7 @@
 // take P at the half vector; lights with extent its mean over their half-vector box. Other
 // materials are shaded as by `conventional` (lights with extent by LTC).
 // Descriptor: src/shading/methods/yan2016.cpp; docs/methods.md#yan2016.
+#define METHOD_LOBES_KEEP_ISOTROPY  // its lobes are the material's own (lobe/lobe_shading.glsl)
 #include "lobe/lobe.glsl"
 #include "lobe/lobe_shading.glsl"
 

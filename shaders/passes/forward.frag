@@ -5,7 +5,8 @@
 // method or a kind. Variant defines (src/render/renderer.cpp, forward_variant): LIGHT_RANGES
 // (lights/light_loop.glsl), MATERIAL_KIND (the kind's code: compare with MATERIAL_KIND_<ID>),
 // MATERIAL_NORMAL_MAP (1 when the material has a normal map), MATERIAL_TEXTURES (1 when its
-// parameters vary per texel), REFERENCE_PASS (1 for ground truth, which evaluates the surface
+// parameters vary per texel), MATERIAL_ANISOTROPIC (1 when its smooth lobe can be anisotropic:
+// lobe/lobe_shading.glsl), REFERENCE_PASS (1 for ground truth, which evaluates the surface
 // itself at each sample: textures at their base level), REFERENCE_SURFACE (the surface a
 // reference gives stochastic materials: REFERENCE_SURFACE_MODEL, _REALISATION or _FACETS).
 #include "core/frame.glsl"

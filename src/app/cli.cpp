@@ -277,6 +277,8 @@ int run_cli(int argc, char** argv) {
       ->default_str(default_material_kind().id);
   program->add_flag("--normal-map", program_o.normal_map, "the material has a normal map");
   program->add_flag("--textures", program_o.textures, "the material's parameters vary per texel (glTF's textures)");
+  program->add_flag("--anisotropic", program_o.anisotropic,
+                    "the material's lobe can be anisotropic (unequal alphas, a slope correlation, glTF's anisotropy)");
   program->add_option("--lights", program_o.lights, "lights of each kind, KIND=COUNT,...")->default_str(program_o.lights);
   program->add_option("--stage", program_o.stage, "fragment or vertex")->default_str(program_o.stage);
   program->add_option("--driver-profile", program_o.driver_profile,

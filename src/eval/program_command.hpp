@@ -15,6 +15,7 @@ struct ProgramOptions {
   std::string material_kind;            ///< empty: the default kind
   bool normal_map = false;
   bool textures = false;
+  bool anisotropic = false;
   std::string lights = "point=1";       ///< parse_light_counts
   std::string stage = "fragment";       ///< fragment or vertex
   std::string driver_profile = "software";
@@ -35,9 +36,10 @@ inline constexpr ProgramPass kProgramPasses[] = {{"reference", kReferenceModule}
 /// resolve_methods does, naming the passes too.
 std::string program_module(ShaderLibrary& shaders, const std::string& method, const std::vector<std::string>& params);
 
-/// The material variant of --material-kind/--normal-map/--textures; throws InputError for an
+/// The material variant of --material-kind/--normal-map/--textures/--anisotropic; throws InputError for an
 /// unknown kind or a kind that requires a normal map without one.
-MaterialVariant program_material_variant(const std::string& kind, bool normal_map, bool textures);
+MaterialVariant program_material_variant(const std::string& kind, bool normal_map, bool textures,
+                                         bool anisotropic = false);
 
 /// The program's text; throws InputError naming the option for a bad value.
 std::string program_source(const ProgramOptions& options);

@@ -170,6 +170,7 @@ GpuScene::GpuScene(const Scene& scene, TableCache tables)
     normal_maps_.push_back(m.normal_map ? upload_normal_map(*m.normal_map) : NormalMapTextures{});
     kinds_.push_back(m.kind);
     textures_.push_back(material_textures(m));
+    anisotropic_.push_back(m.anisotropic());
   }
   resources_.require(scene_resource_ids_, resource_context());
   materials.resize(kMaxMaterials);  // the uniform block's declared size

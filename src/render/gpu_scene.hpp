@@ -56,6 +56,8 @@ class GpuScene {
   [[nodiscard]] const MaterialKind& kind(int material) const { return *kinds_[index(material)]; }
   /// Whether the material's parameters vary per texel (Material::textures).
   [[nodiscard]] bool textured(int material) const { return textures_[index(material)].textured; }
+  /// Whether the material's smooth lobe can be anisotropic (Material::anisotropic).
+  [[nodiscard]] bool anisotropic(int material) const { return anisotropic_[index(material)]; }
   /// Binds a material's textures to their units and sets `program`'s per-draw texture transforms
   /// (uTextureTransforms, shaders/core/material.glsl); uMaterial selects its uniform-block entry.
   void bind_material(GLuint program, int material) const;
@@ -102,6 +104,7 @@ class GpuScene {
   std::vector<NormalMapTextures> normal_maps_;
   std::vector<const MaterialKind*> kinds_;
   std::vector<MaterialTextures> textures_;
+  std::vector<bool> anisotropic_;
   std::map<const MaterialTexture*, gl::Texture> texture_objects_;  // shared between materials
   gl::Texture white_;  // 1x1 white: the texel of an absent texture
   const Scene& scene_;

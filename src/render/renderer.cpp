@@ -37,6 +37,7 @@ ShaderDefines forward_variant(const std::string& module, const LightRanges& ligh
           {"MATERIAL_KIND", std::to_string(kind.code())},  // compare with MATERIAL_KIND_<ID> (the contract)
           {"MATERIAL_NORMAL_MAP", material.normal_map ? "1" : "0"},
           {"MATERIAL_TEXTURES", material.textures ? "1" : "0"},
+          {"MATERIAL_ANISOTROPIC", material.anisotropic ? "1" : "0"},
           {"REFERENCE_PASS", is_reference_module(module) ? "1" : "0"},
           {"REFERENCE_SURFACE", std::to_string(static_cast<int>(reference_surface(module)))}};
   for (std::size_t k = 0; k < light_ranges.size(); ++k)
@@ -47,7 +48,8 @@ ShaderDefines forward_variant(const std::string& module, const LightRanges& ligh
 }
 
 MaterialVariant material_variant(const GpuScene& scene, int material) {
-  return {scene.kind(material).code(), scene.normal_map(material) != 0, scene.textured(material)};
+  return {scene.kind(material).code(), scene.normal_map(material) != 0, scene.textured(material),
+          scene.anisotropic(material)};
 }
 
 std::string method_program_module(ShaderLibrary& shaders, const MethodDescriptor& method, const ParamValues& params) {

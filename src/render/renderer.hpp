@@ -16,11 +16,12 @@
 namespace glintlab {
 
 /// What of a material changes the forward program: its kind (MATERIAL_KIND, and the kind's module
-/// in the $MATERIAL slot), MATERIAL_NORMAL_MAP and MATERIAL_TEXTURES.
+/// in the $MATERIAL slot), MATERIAL_NORMAL_MAP, MATERIAL_TEXTURES and MATERIAL_ANISOTROPIC.
 struct MaterialVariant {
   int kind = 0;  ///< the kind's code (MaterialKind::code)
   bool normal_map = false;
   bool textures = false;
+  bool anisotropic = false;  ///< Material::anisotropic: an isotropic material's program can skip what only anisotropic lobes need
   auto operator<=>(const MaterialVariant&) const = default;
 };
 MaterialVariant material_variant(const GpuScene& scene, int material);

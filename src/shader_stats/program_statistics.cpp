@@ -19,6 +19,7 @@ std::string ProgramRow::material_label() const {
   std::string label = all_material_kinds().at(static_cast<std::size_t>(material.kind)).id;
   if (material.normal_map) label += " + normal map";
   if (material.textures) label += ", textured";
+  if (material.anisotropic) label += ", anisotropic";
   return label;
 }
 

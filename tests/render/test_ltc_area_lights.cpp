@@ -142,6 +142,35 @@ TEST(LtcAnisotropicLobes, RoughWideAxisKeepsTheReferenceEnergy) {
   }
 }
 
+// An isotropic material's program (MATERIAL_ANISOTROPIC 0) compiles the table's own LTC and no
+// hand-over to the representative point; that shortcut must change nothing. The same plane at an
+// alpha a hair off isotropic is drawn by the anisotropic program (stretch, hand-over weight 0):
+// equal within rounding. And the variant follows the material: unequal alphas and glTF's
+// anisotropy are anisotropic, equal ones are not.
+TEST(LtcAnisotropicLobes, AnIsotropicMaterialsProgramDrawsWhatTheAnisotropicOneDraws) {
+  for (const std::string kind : {"sphere", "quad"}) {
+    SceneFixture isotropic(anisotropic_plane_under(kind, 0.3, 0.3));
+    SceneFixture nearly(anisotropic_plane_under(kind, 0.3, 0.3 * (1 + 1e-6)));
+    ASSERT_FALSE(material_variant(*isotropic.gpu, 0).anisotropic);
+    ASSERT_TRUE(material_variant(*nearly.gpu, 0).anisotropic);
+    for (const std::string method : {"conventional", "toksvig", "vlachos"}) {
+      const Frame a = isotropic.method(method), b = nearly.method(method);
+      const double scale = luminance_sum(a.specular) / double(a.specular.pixel_count());
+      ASSERT_GT(scale, 0.0) << kind;
+      EXPECT_LT(rmse(a.specular, b.specular) / scale, 1e-5) << method << " under a " << kind;
+      EXPECT_LT(rmse(a.total, b.total) / scale, 1e-5) << method << " under a " << kind;
+    }
+  }
+  Material textured;
+  textured.textures = TexturedMetalRough{};
+  EXPECT_FALSE(textured.anisotropic());
+  textured.textures->anisotropy = 0.5f;
+  EXPECT_TRUE(textured.anisotropic());
+  Material correlated;
+  correlated.rho = 0.2f;
+  EXPECT_TRUE(correlated.anisotropic());
+}
+
 class LtcAreaLights : public ::testing::TestWithParam<std::string> {};
 
 // The diffuse term under LTC is the light's exact form factor (M^-1 = identity), horizon clipped:

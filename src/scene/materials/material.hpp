@@ -71,6 +71,11 @@ struct Material {
   /// are those of the factors alone.
   std::optional<TexturedMetalRough> textures;
 
+  /// Whether its smooth lobe can be anisotropic anywhere on the surface (the program variant
+  /// MATERIAL_ANISOTROPIC): unequal alphas, a slope correlation, or glTF's anisotropy.
+  [[nodiscard]] bool anisotropic() const {
+    return rho != 0.0f || (textures ? textures->anisotropy != 0.0f : alpha.x != alpha.y);
+  }
   /// Whether the material is of the kind `id`.
   [[nodiscard]] bool is(std::string_view id) const { return kind->id == id; }
   /// One of the kind's parameters by key; throws std::logic_error if the kind declares none such.

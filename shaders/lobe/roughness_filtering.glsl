@@ -11,13 +11,28 @@ vec2 vlachosAlpha(vec2 alpha, vec3 dNdx, vec3 dNdy, float scale, float exponent)
   return max(alpha, vec2(floorRoughness * floorRoughness));
 }
 
+// The part of a filtered normal-map lookup's spread that lies inside the pixel (docs/methods.md,
+// "toksvig"): 1 where the footprint covers a texel or more (minification: the mip level averages
+// what the pixel sees), rho^2 where it covers rho < 1 texels. A magnified lookup blends texels a
+// whole texel apart bilinearly, so the spread it reports (a shortened normal, a variance of the
+// moments) is that of the texels it blends, t (1 - t) |n1 - n2|^2 at weight t, while the surface
+// inside the pixel is the interpolated field (the reference's), whose normals there differ by
+// rho |n1 - n2|: variance ~ rho^2 of it. Left whole, a rim between a flat texel and a steep one
+// reads as roughness alpha ~ 0.5 a magnified mirror does not have, which smears its highlights
+// into rings. rho is the GL's lod scale, the longer footprint axis in texels.
+float magnifiedSpreadShare(vec2 dUVdx, vec2 dUVdy, vec2 texels) {
+  vec2 x = dUVdx * texels, y = dUVdy * texels;
+  return min(max(dot(x, x), dot(y, y)), 1.0);
+}
+
 // Toksvig 2005: a mip-filtered normal of length N < 1 means a spread of normals of Gaussian
 // variance (1 - N) / N, which adds to the Blinn-Phong lobe's 1/s. With s = 2/alpha^2 - 2 this is
-// beta'^2 = beta^2 + 2 (1 - N) / N for beta^2 = alpha^2 / (1 - alpha^2), per axis.
-vec2 toksvigAlpha(vec2 alpha, float normalLength) {
+// beta'^2 = beta^2 + 2 (1 - N) / N for beta^2 = alpha^2 / (1 - alpha^2), per axis. spreadShare:
+// the part of that spread inside the pixel (magnifiedSpreadShare).
+vec2 toksvigAlpha(vec2 alpha, float normalLength, float spreadShare) {
   float n = clamp(normalLength, 1e-4, 1.0);
   vec2 a2 = min(alpha * alpha, vec2(1.0 - 1e-6));
-  vec2 beta2 = a2 / (1.0 - a2) + 2.0 * (1.0 - n) / n;
+  vec2 beta2 = a2 / (1.0 - a2) + 2.0 * spreadShare * (1.0 - n) / n;
   return sqrt(beta2 / (1.0 + beta2));
 }
 

@@ -9,13 +9,15 @@ layout(binding = SLOPE_MOMENTS_UNIT) uniform sampler2D uSlopeMoments;
 layout(binding = SLOPE_CROSS_MOMENT_UNIT) uniform sampler2D uSlopeCrossMoment;
 
 // Covariance of the normal map's slopes inside the pixel's footprint; meanSlope: their mean B.
-// Call in uniform control flow (textureGrad with the surface's uv derivatives is safe anywhere,
-// but callers take it with their other per-pixel work).
+// Where the map is magnified, only the part of the blended texels' covariance that lies inside
+// the pixel (magnifiedSpreadShare). Call in uniform control flow (textureGrad with the surface's uv
+// derivatives is safe anywhere, but callers take it with their other per-pixel work).
 mat2 footprintSlopeCovariance(Surface s, out vec2 meanSlope) {
   vec4 m = textureGrad(uSlopeMoments, s.uv, s.footprint.dUVdx, s.footprint.dUVdy);
   float mxy = textureGrad(uSlopeCrossMoment, s.uv, s.footprint.dUVdx, s.footprint.dUVdy).r;
   meanSlope = m.xy;
-  return leanSlopeCovariance(m.xy, vec3(m.zw, mxy));
+  float share = magnifiedSpreadShare(s.footprint.dUVdx, s.footprint.dUVdy, vec2(textureSize(uSlopeMoments, 0)));
+  return share * leanSlopeCovariance(m.xy, vec3(m.zw, mxy));
 }
 
 // Jacobian of the shading frame's slopes q = (m.t, m.b) / (m.n) with respect to the vertex frame's

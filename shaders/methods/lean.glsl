@@ -2,6 +2,9 @@
 // the texture hardware, give the mean normal and the slope covariance inside the pixel's
 // texture footprint. Descriptor: src/shading/methods/lean.cpp; docs/methods.md#lean.
 #define METHOD_SHADES_ENVIRONMENT  // through shadeLobe, at its own lobe
+#if !MATERIAL_NORMAL_MAP  // without a map the lobe is the material's own (lobe/lobe_shading.glsl)
+#define METHOD_LOBES_KEEP_ISOTROPY
+#endif
 #include "lobe/lobe_shading.glsl"
 #include "lobe/slope_moments.glsl"
 

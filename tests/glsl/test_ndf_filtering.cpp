@@ -184,7 +184,7 @@ vec4 applyFilter(int which, int ndf, vec2 alpha, vec2 dx, vec2 dy, vec3 dn) {
   if (which == 2) l = kaplanyanBoxLobe(base, dx, dy, 1.0);
   if (which == 3) l = tokuyoshiLobe(base, dx, dy, 0.25, 0.18);
   if (which == 4) { vec2 a = vlachosAlpha(alpha, dn, dn.yzx, 1.0, 1.0 / 3.0); l = axisAlignedLobe(ndf, a); }
-  if (which == 5) { vec2 a = toksvigAlpha(alpha, 1.0 - abs(dn.x)); l = axisAlignedLobe(ndf, a); }
+  if (which == 5) { vec2 a = toksvigAlpha(alpha, 1.0 - abs(dn.x), 1.0); l = axisAlignedLobe(ndf, a); }
   if (which == 6) l.A += 2.0 * leanSlopeCovariance(dx, vec3(dy, dn.x));
   return vec4(l.A[0][0], l.A[1][1], l.A[0][1], l.footprint.x);
 }

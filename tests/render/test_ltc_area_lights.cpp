@@ -153,7 +153,7 @@ TEST(LtcAnisotropicLobes, AnIsotropicMaterialsProgramDrawsWhatTheAnisotropicOneD
     SceneFixture nearly(anisotropic_plane_under(kind, 0.3, 0.3 * (1 + 1e-6)));
     ASSERT_FALSE(material_variant(*isotropic.gpu, 0).anisotropic);
     ASSERT_TRUE(material_variant(*nearly.gpu, 0).anisotropic);
-    for (const std::string method : {"conventional", "toksvig", "vlachos"}) {
+    for (const std::string method : {"conventional", "toksvig", "vlachos", "lean"}) {
       const Frame a = isotropic.method(method), b = nearly.method(method);
       const double scale = luminance_sum(a.specular) / double(a.specular.pixel_count());
       ASSERT_GT(scale, 0.0) << kind;

@@ -8,8 +8,9 @@
 #   make fuzz   run every fuzz target for FUZZ_SECONDS each (default 600; docs/fuzzing.md)
 #   make bench-tables  time generating and loading each precomputed table (Google Benchmark; not in test)
 #   make bench-normal-maps  time the procedural normal-map generators at their largest inputs (the same)
+#   make bench-rays  ray queries alone (Embree, no shading) on every built-in scene: rays per second per core
 #   make ltc-fit-report  fit both LTC tables: generation time and the fit error over the grid (markdown)
-.PHONY: all deps build build-fuzz build-demo demo view test fuzz bench bench-tables bench-normal-maps ltc-fit-report clean
+.PHONY: all deps build build-fuzz build-demo demo view test fuzz bench bench-tables bench-normal-maps bench-rays ltc-fit-report clean
 
 BUILD := build/release
 FUZZ_BUILD := build/fuzz
@@ -58,6 +59,9 @@ bench-tables: build
 
 bench-normal-maps: build
 	$(BUILD)/benchmarks/bench_normal_maps
+
+bench-rays: build
+	$(BUILD)/benchmarks/bench_ray_queries
 
 ltc-fit-report: build
 	$(BUILD)/benchmarks/ltc_fit_report

@@ -12,14 +12,15 @@
 set -euo pipefail
 
 # Building and running glintlab: the compiler and build tools, OpenGL through EGL on Mesa (llvmpipe
-# without a GPU), the header libraries, GLFW and Dear ImGui (the viewer is part of the binary) and
-# the font the worst-region crops are labelled with.
+# without a GPU), the header libraries, GLFW and Dear ImGui (the viewer is part of the binary),
+# Embree and TBB (the path tracer's rays) and the font the worst-region crops are labelled with.
 demo_packages=(
   build-essential cmake ninja-build pkg-config
   libepoxy-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   libglm-dev libopenexr-dev libstb-dev libtinygltf-dev libtinyobjloader-dev
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libeigen3-dev
   libglfw3-dev libimgui-dev
+  libembree-dev libtbb-dev
   fonts-dejavu-core
 )
 packages=("${demo_packages[@]}"

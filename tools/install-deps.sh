@@ -3,7 +3,8 @@
 # Usage: tools/install-deps.sh          what building, testing and running need (ffmpeg: animate's MP4s;
 #                                       clang and its libFuzzer runtime: the fuzz targets, docs/fuzzing.md;
 #                                       GLFW and Dear ImGui: the viewer; xvfb: its test on a virtual display;
-#                                       chromium: the HTML report's test in a real browser; glslang and
+#                                       chromium: the HTML report's test in a real browser; GNU parallel: the
+#                                       tiled-reference recipe's test; glslang and
 #                                       SPIRV-Tools: glintlab-shader-stats and shader tests)
 #        tools/install-deps.sh demo     only what building and running the glintlab binary need (make demo):
 #                                       no test, benchmark, fuzzing, video or browser packages
@@ -27,7 +28,7 @@ packages=("${demo_packages[@]}"
   libgtest-dev libgmock-dev libbenchmark-dev
   glslang-tools glslang-dev spirv-tools spirv-headers
   clang libclang-rt-dev
-  ffmpeg
+  ffmpeg parallel
   xvfb xauth chromium
 )
 case "${1:-}" in

@@ -14,6 +14,7 @@
 #include "prefilter/prefilter_params.hpp"
 #include "eval/program_command.hpp"
 #include "eval/progress.hpp"
+#include "eval/reference_tiles.hpp"
 #include "eval/report.hpp"
 #include "eval/session.hpp"
 #include "gl/driver_profile.hpp"
@@ -158,6 +159,8 @@ int render_command(const CommonOptions& o, const std::string& reference_arg, boo
   }
   const auto methods = resolve_methods(o.methods, o.params);
   if (methods.size() != 1) throw InputError("render: --method takes one method; use 'compare' for several");
+  if (!o.tile.empty() && !reference_given)
+    throw InputError("--tile " + o.tile + ": a tile is of a reference; allowed with --reference only");
   // Every output path is checked before the first frame is rendered.
   const std::string name = reference_given ? "reference" : methods[0].file_stem();
   const FrameOutput target = o.out.empty() ? FrameOutput{default_out("render", o), name} : frame_output(o.out, name);
@@ -166,6 +169,15 @@ int render_command(const CommonOptions& o, const std::string& reference_arg, boo
   Session session(opts, Workload{.methods = 1, .reference = reference_given});
   if (frame < 0 || frame >= session.frames())
     throw InputError("--frame " + std::to_string(frame) + ": allowed: 0 .. " + std::to_string(session.frames() - 1));
+  if (!o.tile.empty()) {
+    // One tile of a reference split over jobs (docs/past-one-machine.md): no method image is needed.
+    const ReferenceFrame reference = session.reference(frame);
+    write_reference_tile(dir, stem, reference, session.scene().film, reference_tile_identity(session, frame),
+                         session.reference_settings().region, session.context().info().renderer);
+    std::cout << describe_reference(reference) << ", tile " << o.tile << "\n";
+    std::cout << "written " << (dir / stem).string() << ".exr, .png and .json\n";
+    return 0;
+  }
   const Frame method = session.render(methods[0], frame);
   if (reference_given) {
     // --reference=auto sizes the reference by the method's own error (the --method, default conventional).
@@ -198,6 +210,15 @@ int run_cli(int argc, char** argv) {
   int render_frame = 0;
   render->add_option("--frame", render_frame, "frame of the camera path")->default_str("0");
   render->add_option("-o,--out", render_o.out, "output directory, or a .exr/.png file name");
+  render->add_option("--tile", render_o.tile,
+                     "INDEX/COLUMNSxROWS: with --reference, only tile INDEX of an even grid over the film, and a .json "
+                     "beside the .exr for merge-tiles (docs/past-one-machine.md)");
+
+  auto* merge_tiles = app.add_subcommand("merge-tiles", "put a reference's tiles (render --reference --tile) back together");
+  std::vector<std::string> merge_inputs;
+  std::string merge_out;
+  merge_tiles->add_option("tiles", merge_inputs, "the tiles' .exr files (each with its .json beside it)")->required();
+  merge_tiles->add_option("-o,--out", merge_out, "output directory, or a .exr/.png file name")->required();
 
   auto* compare = app.add_subcommand("compare", "render the reference and each method; images, error maps, metrics");
   add_common(compare, compare_o, true);
@@ -317,6 +338,8 @@ int run_cli(int argc, char** argv) {
       print_info();
     } else if (app.got_subcommand("render")) {
       return render_command(render_o, reference_arg, render->count("--reference") > 0, render_frame);
+    } else if (app.got_subcommand("merge-tiles")) {
+      run_merge_tiles(merge_inputs, merge_out);
     } else if (app.got_subcommand("compare")) {
       const auto methods = resolve_methods(compare_o.methods, compare_o.params);
       if (!compare_o.out.empty()) check_output_directory(compare_o.out);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <limits>
 
@@ -46,6 +47,20 @@ void parse_spp(const std::string& text, const std::string& flag, CommonOptions& 
                      std::to_string(4 * kProgressivePassSpp) + " .. " + std::to_string(kMaxReferenceSpp));
   if (!(options.noise_fraction > 0.0 && options.noise_fraction <= 1.0))
     throw InputError("--noise-fraction " + std::to_string(options.noise_fraction) + ": allowed: (0, 1]");
+}
+
+FilmRegion parse_tile(const std::string& text, int width, int height) {
+  const std::string allowed = "allowed: INDEX/COLUMNSxROWS with 1 <= COLUMNS <= " + std::to_string(width) +
+                              ", 1 <= ROWS <= " + std::to_string(height) + " (the " + std::to_string(width) + "x" +
+                              std::to_string(height) + " film) and 0 <= INDEX < COLUMNS x ROWS, e.g. 5/4x4";
+  long long index = -1, columns = 0, rows = 0;
+  char slash = 0, times = 0, extra = 0;
+  const int fields = std::sscanf(text.c_str(), "%lld%c%lld%c%lld%c", &index, &slash, &columns, &times, &rows, &extra);
+  if (fields != 5 || slash != '/' || times != 'x' || text.find_first_of(" +-") != std::string::npos)
+    throw InputError("--tile " + text + ": not INDEX/COLUMNSxROWS; " + allowed);
+  if (columns < 1 || columns > width || rows < 1 || rows > height || index < 0 || index >= columns * rows)
+    throw InputError("--tile " + text + ": " + allowed);
+  return FilmRegion::grid_tile(width, height, static_cast<int>(columns), static_cast<int>(rows), static_cast<int>(index));
 }
 
 void require_finite(const Frame& frame, const std::string& what) {
@@ -106,6 +121,11 @@ Session::Session(const CommonOptions& options, std::optional<Workload> workload,
     throw InputError("--frames " + std::to_string(options.frames) + ": allowed: 1 .. " + std::to_string(kMaxPathFrames));
   frames_ = options.frames > 0 ? options.frames : scene_.path.frames;
   if (options.frames > 0) scene_.path.frames = options.frames;
+  if (!options.tile.empty()) {
+    if (options.spp_auto)
+      throw InputError("--tile with --spp auto: the tiles of one reference must share their passes; allowed: --spp N");
+    reference_.region = parse_tile(options.tile, width_, height_);
+  }
   reference_.spp = options_.spp_auto ? kProgressivePassSpp * 4 : options_.spp;
   reference_.light_samples = options_.light_samples;
   if (!workload)
@@ -151,7 +171,8 @@ ReferenceFrame Session::reference(int frame, const std::vector<const Frame*>& ra
   const Camera cam = at.value_or(camera(frame));
   if (!options_.spp_auto) {
     const auto key = ReferenceCache::key(scene_, cam, width_, height_, settings, *reference_backend_, device_);
-    if (auto cached = cache_.load(key, width_, height_)) return *cached;
+    const FilmRegion region = settings.region.within(width_, height_);
+    if (auto cached = cache_.load(key, region.width, region.height)) return *cached;
     ProgressBar bar("reference " + std::to_string(settings.spp) + " spp, frame " + std::to_string(frame), !options_.quiet);
     ReferenceFrame r =
         render_reference(*reference_backend_, cam, width_, height_, settings, [&](int d, int t) { bar.update(d, t); });

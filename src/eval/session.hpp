@@ -40,6 +40,7 @@ struct CommonOptions {
   bool no_cache = false;
   std::string reference_backend = reference_backends().front().id;  ///< --reference-backend; default: the first
   std::string reference_filter = "box";  ///< --reference-filter: box or gaussian:S (PixelFilter::parse)
+  std::string tile;  ///< render --tile INDEX/COLUMNSxROWS: the reference of one tile of the film (parse_tile)
   bool quiet = false;
 };
 
@@ -103,6 +104,9 @@ constexpr int kProgressivePassSpp = 64;
 /// and of their pairwise differences larger than 1e-9 (identical methods are not a ranking).
 double reference_noise_target(const Frame& reference, const std::vector<const Frame*>& ranked, double fraction);
 
+/// Parses --tile INDEX/COLUMNSxROWS for a width x height film: tile INDEX (row-major, from 0) of
+/// an even grid; throws InputError naming --tile, the value and what is allowed.
+FilmRegion parse_tile(const std::string& text, int width, int height);
 /// Parses --spp (or --reference=): a sample count or "auto"; throws InputError naming `flag`.
 void parse_spp(const std::string& text, const std::string& flag, CommonOptions& options);
 

@@ -51,8 +51,9 @@ Frame RasterReference::render_pass(const Camera& camera, int width, int height, 
                                    const ProgressFn& progress) {
   const int k = pass.subpixels;
   if (k < 1 || k > 32) throw InputError("reference sub-pixels per axis " + std::to_string(k) + ": allowed: 1 .. 32");
+  const FilmRegion wanted = pass.region.within(width, height);
   const int tile = tile_side(k, pass.filter);
-  const int tiles_x = (width + tile - 1) / tile, tiles_y = (height + tile - 1) / tile;
+  const int tiles_x = (wanted.width + tile - 1) / tile, tiles_y = (wanted.height + tile - 1) / tile;
   // The pixels around a tile whose samples its filter weights too (none for the box).
   const int margin = pass.filter.support_pixels();
 
@@ -67,9 +68,11 @@ Frame RasterReference::render_pass(const Camera& camera, int width, int height, 
   for (int ty = 0; ty < tiles_y; ++ty)
     for (int tx = 0; tx < tiles_x; ++tx) {
       // Tile in output pixels, y down (film convention), and the region rendered for it: the
-      // tile and its margin inside the film.
-      const glm::ivec2 origin(tx * tile, ty * tile);
-      const glm::ivec2 size(std::min(tile, width - origin.x), std::min(tile, height - origin.y));
+      // tile and its margin inside the film (beyond the wanted region too: the filter sees the
+      // same samples as in the whole film's pass).
+      const glm::ivec2 origin(wanted.x + tx * tile, wanted.y + ty * tile);
+      const glm::ivec2 size(std::min(tile, wanted.x + wanted.width - origin.x),
+                            std::min(tile, wanted.y + wanted.height - origin.y));
       const glm::ivec2 region_origin = glm::max(origin - margin, glm::ivec2(0));
       const glm::ivec2 region_size = glm::min(origin + size + margin, film) - region_origin;
       const int gl_y = height - origin.y - size.y;  // the same tile in GL's y-up pixel rows
@@ -96,7 +99,11 @@ Frame RasterReference::render_pass(const Camera& camera, int width, int height, 
       check_gl("rendering a reference tile");
       if (progress) progress(++done, tiles_x * tiles_y);
     }
-  return {RenderTarget::read(out_total.id(), width, height), RenderTarget::read(out_specular.id(), width, height)};
+  const Image total = RenderTarget::read(out_total.id(), width, height);
+  const Image specular = RenderTarget::read(out_specular.id(), width, height);
+  if (wanted == FilmRegion{0, 0, width, height}) return {total, specular};
+  return {total.crop(wanted.x, wanted.y, wanted.width, wanted.height),
+          specular.crop(wanted.x, wanted.y, wanted.width, wanted.height)};
 }
 
 }  // namespace glintlab

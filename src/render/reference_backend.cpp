@@ -50,14 +50,29 @@ glm::vec2 reference_pass_jitter(int frame_seed, int pass) {
 
 ReferencePass ReferencePass::of(const ReferenceSettings& settings, int index) {
   return {settings.subpixels(), settings.effective_light_samples(), reference_pass_seed(settings.seed, index),
-          reference_pass_jitter(settings.seed, index), settings.filter};
+          reference_pass_jitter(settings.seed, index), settings.filter, settings.region};
+}
+
+FilmRegion FilmRegion::within(int film_width, int film_height) const {
+  return empty() ? FilmRegion{0, 0, film_width, film_height} : *this;
+}
+
+FilmRegion FilmRegion::grid_tile(int film_width, int film_height, int columns, int rows, int index) {
+  const int column = index % columns, row = index / columns;
+  auto edge = [](int size, int parts, int i) {
+    return static_cast<int>(static_cast<long long>(size) * i / parts);
+  };
+  const int x0 = edge(film_width, columns, column), x1 = edge(film_width, columns, column + 1);
+  const int y0 = edge(film_height, rows, row), y1 = edge(film_height, rows, row + 1);
+  return {x0, y0, x1 - x0, y1 - y0};
 }
 
 ReferenceFrame render_reference(ReferenceBackend& backend, const Camera& camera, int width, int height,
                                 const ReferenceSettings& settings, const ProgressFn& progress) {
   validate_spp(settings.spp);
   const int k = settings.subpixels(), passes = settings.passes();
-  ReferenceAccumulator accumulator(width, height, k * k);
+  const FilmRegion region = settings.region.within(width, height);
+  ReferenceAccumulator accumulator(region.width, region.height, k * k);
   for (int p = 0; p < passes; ++p)
     accumulator.add_pass(backend.render_pass(camera, width, height, ReferencePass::of(settings, p), [&](int done, int total) {
       if (progress) progress(p * total + done, passes * total);

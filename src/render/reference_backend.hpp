@@ -21,6 +21,20 @@ class GpuScene;
 class Renderer;
 class ShaderLibrary;
 
+/// A rectangle of the film in pixels from its top-left corner (y down): the part of a reference one
+/// job renders when a frame is split into tiles (`render --tile`). Empty (the default): the whole film.
+struct FilmRegion {
+  int x = 0, y = 0, width = 0, height = 0;
+
+  [[nodiscard]] bool empty() const { return width <= 0 || height <= 0; }
+  /// This region, or the whole width x height film when empty.
+  [[nodiscard]] FilmRegion within(int film_width, int film_height) const;
+  /// Tile `index` (row-major) of a columns x rows grid over the film, the film's pixels split as
+  /// evenly as whole pixels allow.
+  static FilmRegion grid_tile(int film_width, int film_height, int columns, int rows, int index);
+  bool operator==(const FilmRegion&) const = default;
+};
+
 /// How a reference is sampled: `spp` samples per pixel in all, rendered as passes() independent
 /// passes of k x k jittered sub-pixels (k = subpixels()), each reduced to pixels by `filter`.
 struct ReferenceSettings {
@@ -28,6 +42,8 @@ struct ReferenceSettings {
   int light_samples = 0;   ///< per sub-pixel and light with extent; 0: max(1, ceil(256 / spp))
   int seed = 0;            ///< decorrelates frames of an animation
   PixelFilter filter;      ///< --reference-filter; default: the box of each pixel's own samples
+  FilmRegion region;       ///< the pixels rendered (--tile); empty: the whole film. A pixel's samples
+                           ///< do not depend on the region: tiles put together are the whole frame.
   /// k: the largest k <= 32 with k * k dividing spp and at most spp / 4 (so that there are at
   /// least four passes to estimate the reference's own error from), or 1.
   [[nodiscard]] int subpixels() const;
@@ -51,6 +67,7 @@ struct ReferencePass {
   std::uint32_t seed = 0;
   glm::vec2 jitter{0.5f};
   PixelFilter filter;
+  FilmRegion region;  ///< the pixels to render; empty: the whole film
 
   /// Pass `index` of a frame's reference sampled with `settings`.
   static ReferencePass of(const ReferenceSettings& settings, int index);
@@ -67,13 +84,14 @@ class ReferenceBackend {
   /// Hash of the estimator's own code on this scene (its programs' full text, or a version):
   /// a cached reference is reused only while it is unchanged.
   [[nodiscard]] virtual std::uint64_t estimator_hash() const = 0;
-  /// One pass of the scene seen by `camera` on a width x height film; i.i.d. across seeds.
+  /// One pass of the scene seen by `camera` on a width x height film, i.i.d. across seeds: the
+  /// pixels of pass.region (the whole film when empty), each as the whole film's pass has it.
   virtual Frame render_pass(const Camera& camera, int width, int height, const ReferencePass& pass,
                             const ProgressFn& progress = {}) = 0;
 };
 
 /// Ground truth (docs/methods.md, "Ground truth"): settings.passes() passes of `backend`, their
-/// mean and standard error.
+/// mean and standard error, over settings.region of the film.
 ReferenceFrame render_reference(ReferenceBackend& backend, const Camera& camera, int width, int height,
                                 const ReferenceSettings& settings, const ProgressFn& progress = {});
 

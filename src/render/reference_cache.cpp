@@ -33,6 +33,11 @@ std::uint64_t ReferenceCache::key(const Scene& scene, const Camera& camera, int 
   h.value(settings.effective_light_samples());
   h.value(settings.seed);
   h.text(settings.filter.text());
+  // A tile's key differs from its film's (the whole film's keys are as before tiles existed).
+  if (const FilmRegion r = settings.region.within(width, height); r != FilmRegion{0, 0, width, height}) {
+    h.text("region");
+    for (int v : {r.x, r.y, r.width, r.height}) h.value(v);
+  }
   h.text(backend.id());
   h.value(backend.estimator_hash());
   h.text(renderer);

@@ -1,19 +1,12 @@
 // The forward pass's per-fragment inputs: interpolated vertex attributes (passes/forward.vert)
 // and the draw's material. Declared before the method module, so that a method may re-evaluate
 // the attributes elsewhere in the pixel (attributesAtOffset; see podee/pixel_corners.glsl).
-#include "core/material.glsl"
-#include "generated/gpu_contract.glsl"
+#include "core/material_inputs.glsl"
 
 in vec3 vPosition;
 in vec3 vNormal;
 in vec4 vTangent;
 in vec2 vUV;
-
-layout(binding = NORMAL_MAP_UNIT) uniform sampler2D uNormalMap;
-uniform int uMaterial;
-
-// Normal-map coordinates of a uv (the material's tiling and texture transform applied).
-vec2 normalMapCoordinates(vec2 uv) { return uTextureTransforms[TEXTURE_SLOT_NORMAL_MAP] * vec3(uv, 1.0); }
 
 // The vertex attributes at `offset` pixels from the pixel centre, perspective-correct, as
 // interpolateAtOffset would give them (extrapolated linearly beyond the triangle). An attribute

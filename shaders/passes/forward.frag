@@ -12,10 +12,7 @@
 #include "core/frame.glsl"
 #include "core/fragment_inputs.glsl"
 #include "lights/lights.glsl"
-#if MATERIAL_TEXTURES
-#include "core/material_textures.glsl"
-#endif
-#include "core/surface.glsl"
+#include "core/surface_record.glsl"
 #include "$MATERIAL"
 #include "$METHOD"
 #include "lights/light_loop.glsl"
@@ -51,45 +48,10 @@ void main() {
   vec3 mapped = vec3(0.0, 0.0, 1.0);
 #endif
 
-  Surface s;
-  s.position = vPosition;
-  s.view = view;
-  // Two-sided: flip the frame to the side of the triangle the camera sees (face normal from
-  // the position derivatives, so silhouettes of closed objects keep their vertex normals).
-  vec3 faceNormal = cross(footprint.dPdx, footprint.dPdy);
-  float faceLength = length(faceNormal);
-  vec3 n = normalize(vNormal);
-  float side = 1.0;
-  if (faceLength > 0.0 && dot(faceNormal, s.view) * dot(faceNormal, n) < 0.0) side = -1.0;
-  n *= side;
-  vec3 t, b;
-  vertexTangentFrame(n, vTangent, side, t, b);
-  s.vertexNormal = n;
-  s.vertexTangent = t;
-  s.vertexBitangent = b;
-  s.anisotropyRotation = m.alpha_rho.w;
-  s.mappedNormal = mapped;
-  setShadingNormal(s, mappedNormal(mapped, t, b, n));
-  s.uv = uv;
-  footprint.dNdx *= side;  // the seen side's, as the vertex normal
-  footprint.dNdy *= side;
-  s.footprint = footprint;
-  s.ndf = int(m.f0_ndf.a + 0.5);
-  s.alpha = m.alpha_rho.xy;
-  s.rho = m.alpha_rho.z;
-  s.f0 = m.f0_ndf.rgb;
-  s.diffuse = m.diffuse_tiling.rgb;
-  s.hasNormalMap = MATERIAL_NORMAL_MAP != 0;
-  vec3 emission = m.emission.rgb;
-#if MATERIAL_TEXTURES
-  // The parameters at this point of the surface, before any method widens the lobe.
-  TexturedParameters texel = texturedParameters(m, vUV, s.footprint.dVertexUVdx, s.footprint.dVertexUVdy,
-                                                REFERENCE_PASS != 0);
-  s.alpha = texel.alpha;
-  s.f0 = texel.f0;
-  s.diffuse = texel.diffuse;
-  emission = texel.emission;
-#endif
+  // The face normal from the position derivatives.
+  vec3 emission;
+  Surface s = surfaceRecord(m, vPosition, vNormal, vTangent, vUV, uv, view, cross(footprint.dPdx, footprint.dPdy),
+                            footprint, mapped, emission);
 
   prepareSurface(s);  // the method's per-pixel step (e.g. a filtered roughness), in uniform control flow
   Radiance sum = shadeAllLights(s);

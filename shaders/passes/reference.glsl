@@ -7,14 +7,7 @@
 // that are not compact (an environment) are integrated here too: their radiance is read per
 // direction (lightRadianceFrom), sampled by the light's own density.
 #define METHOD_SHADES_ENVIRONMENT
-#include "core/brdf.glsl"
-#include "core/frame.glsl"
-#include "lights/lights.glsl"
-#include "core/sampling.glsl"
-#include "core/surface.glsl"
-
-// Below this alpha the material is treated as a perfect mirror (a delta BRDF).
-const float REFERENCE_MIRROR_ALPHA = 1e-4;
+#include "passes/reference_estimator.glsl"
 
 uint gReferenceLightIndex = 0u;
 
@@ -22,6 +15,7 @@ uint gReferenceLightIndex = 0u;
 // that of the sub-pixel's footprint (the papers' protocol).
 void prepareSurface(inout Surface s) { materialPrepare(s, materials[uMaterial]); }
 
+// Every sample counts: the raster reference has no shadows.
 Radiance shadeLight(Surface s, LightData L) {
   uint lightIndex = gReferenceLightIndex++;
   Radiance result = Radiance(vec3(0.0), vec3(0.0));
@@ -35,53 +29,20 @@ Radiance shadeLight(Surface s, LightData L) {
     return Radiance(materialDiffuseCos(s, wi) * irradiance, materialSpecularCos(s, wo, wi) * irradiance);
   }
 
-  int k = frame.target.z;
-  ivec2 global = frame.tile.xy + ivec2(gl_FragCoord.xy);
-  ivec2 pixel = global / k;
-  ivec2 sub = global - pixel * k;
-  uint n = uint(max(frame.tile.z, 1));
-  uint first = uint(sub.y * k + sub.x) * n;  // this sub-pixel's slice of the pixel's sequence
-  uint seed = hash3(uvec3(uvec2(pixel), lightIndex * 9781u + uint(frame.tile.w)));
-  vec2 rotLight = hashToUnit2(seed);
-  vec2 rotBrdf = hashToUnit2(pcgHash(seed + 1u));
-  bool mirror = max(s.alpha.x, s.alpha.y) < REFERENCE_MIRROR_ALPHA;  // no glinty kind allows it
-
-  for (uint j = 0u; j < n; ++j) {
-    vec3 dir;
-    float dist, pdfLight;
-    if (sampleLightDirection(L, s.position, r2Point(first + j, rotLight), dir, dist, pdfLight) && pdfLight > 0.0) {
-      vec3 wi = toLocal(s, dir);
-      if (wi.z > 0.0) {
-        vec3 radiance = lightRadianceFrom(L, dir);
-        result.diffuse += materialDiffuseCos(s, wi) * radiance / pdfLight;
-        if (!mirror) {
-          float w = powerHeuristic(pdfLight, materialSamplePdf(s, wo, wi));
-          result.specular += materialLightIntegrand(s, wo, wi) * radiance * (w / pdfLight);
-        }
-      }
-    }
-    if (!mirror) {
-      vec3 h = materialSampleNormal(s, wo, r2Point(first + j, rotBrdf));
-      vec3 wi = reflect(-wo, h);
-      vec3 dirWorld = toWorld(s, wi);
-      if (wi.z > 0.0 && lightHit(L, s.position, dirWorld, dist)) {
-        float pdfBrdf = materialSamplePdf(s, wo, wi);
-        float pdfL = lightPdf(L, s.position, dirWorld, dist);
-        if (pdfBrdf > 0.0)
-          result.specular += materialLightIntegrand(s, wo, wi) * lightRadianceFrom(L, dirWorld) *
-                             (powerHeuristic(pdfBrdf, pdfL) / pdfBrdf);
-      }
-    }
+  ReferenceStream st = referenceStream(frame.tile.xy + ivec2(gl_FragCoord.xy), lightIndex);
+  bool mirror = referenceMirror(s);
+  for (uint j = 0u; j < st.count; ++j) {
+    ReferenceSample a = referenceLightSample(s, L, wo, mirror, st, j);
+    result.diffuse += a.diffuse;
+    result.specular += a.specular;
+    result.specular += referenceBrdfSample(s, L, wo, mirror, st, j).specular;
   }
-  result.diffuse /= float(n);
-  result.specular /= float(n);
-  // A kind's per-light factor (binomial glints' count of facets towards a compact light); under an
-  // environment the material's BRDF as evaluated (docs/methods.md, "Environment lights").
-  if (lightIsCompact(L)) result.specular *= materialLightFactor(s, L, wo, uint(sub.y * k + sub.x), rotLight, rotBrdf);
+  result.diffuse /= float(st.count);
+  result.specular /= float(st.count);
+  result.specular *= referenceSpecularFactor(s, L, wo, st);
   if (mirror) {
-    float dist;
-    vec3 r = reflect(-s.view, s.normal);
-    if (lightHit(L, s.position, r, dist)) result.specular = fresnelSchlick(s.f0, wo.z) * lightRadianceFrom(L, r);
+    ReferenceSample m = referenceMirrorSample(s, L, wo);
+    if (m.dist > 0.0) result.specular = m.specular;
   }
   return result;
 }

@@ -1,0 +1,11 @@
+// The draw's material as every pass that shades a surface reads it (the forward pass per fragment,
+// the path tracer's shading per hit): its entry in the material block, its normal map and the
+// normal map's coordinates.
+#include "core/material.glsl"
+#include "generated/gpu_contract.glsl"
+
+layout(binding = NORMAL_MAP_UNIT) uniform sampler2D uNormalMap;
+uniform int uMaterial;
+
+// Normal-map coordinates of a uv (the material's tiling and texture transform applied).
+vec2 normalMapCoordinates(vec2 uv) { return uTextureTransforms[TEXTURE_SLOT_NORMAL_MAP] * vec3(uv, 1.0); }

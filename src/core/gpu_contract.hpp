@@ -23,6 +23,11 @@ inline constexpr int kMaterialBlockBinding = 2;
 /// src/prefilter/prefiltered_ndf_layout.hpp, shaders/glints/normal-map/prefiltered_ndf.glsl).
 inline constexpr int kPrefilteredNdfRecordsBinding = 0;
 inline constexpr int kPrefilteredNdfValuesBinding = 1;
+/// Storage-buffer binding points of the path tracer's shading pass (passes/path_direct.comp,
+/// src/render/path_reference.cpp): its hits in, its shadow rays and the hits' emission out.
+inline constexpr int kPathHitsBinding = 4;
+inline constexpr int kPathShadowRaysBinding = 5;
+inline constexpr int kPathEmissionBinding = 6;
 
 /// Texture units of a material's maps (shaders/core/fragment_inputs.glsl, slope_moments.glsl).
 inline constexpr int kNormalMapUnit = 0;

@@ -8,6 +8,7 @@
 #include <string>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <type_traits>
 
 namespace glintlab {
 namespace {
@@ -48,7 +49,7 @@ RTCRay to_embree(const Ray& ray) {
   r.dir_y = ray.direction.y;
   r.dir_z = ray.direction.z;
   r.tfar = ray.t_far;
-  r.mask = std::numeric_limits<unsigned>::max();
+  r.mask = ray.sees;
   return r;
 }
 
@@ -63,40 +64,89 @@ RayScene::RayScene(const Scene& scene) : device_(rtcNewDevice(nullptr)) {
   check(device_.get(), "creating a scene");
   rtcSetSceneBuildQuality(scene_.get(), RTC_BUILD_QUALITY_HIGH);
 
-  shapes_.reserve(scene.shapes.size());
-  for (std::size_t index = 0; index < scene.shapes.size(); ++index) {
-    const Shape& shape = scene.shapes[index];
-    const Mesh& mesh = *shape.mesh;
-    // The raster passes' vertex transform (passes/forward.vert): positions and tangents by the
-    // model matrix, normals by its inverse transpose, the handedness flipped by a mirroring one.
-    const glm::mat4& model = shape.transform;
-    const glm::mat3 linear(model), normal_matrix = glm::transpose(glm::inverse(linear));
-    const float mirrored = glm::determinant(linear) < 0.0f ? -1.0f : 1.0f;
+  for (const Shape& shape : scene.shapes) {
     WorldShape& world = shapes_.emplace_back();
     world.material = shape.material;
-    world.indices = mesh.indices;
-    world.uvs = mesh.uvs;
-    world.positions.reserve(mesh.positions.size());
-    for (const glm::vec3& p : mesh.positions) world.positions.push_back(glm::vec3(model * glm::vec4(p, 1.0f)));
-    for (const glm::vec3& n : mesh.normals) world.normals.push_back(normal_matrix * n);
-    for (const glm::vec4& t : mesh.tangents) world.tangents.emplace_back(linear * glm::vec3(t), t.w * mirrored);
-
-    RTCGeometry geometry = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                                 3 * sizeof(float), world.positions.size()));
-    auto* triangles = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
-        geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t), mesh.triangle_count()));
-    check(device_.get(), "allocating a shape's buffers");
-    for (std::size_t v = 0; v < world.positions.size(); ++v)
-      std::copy_n(&world.positions[v].x, 3, vertices + 3 * v);
-    std::copy(mesh.indices.begin(), mesh.indices.begin() + 3 * mesh.triangle_count(), triangles);
-    rtcCommitGeometry(geometry);
-    rtcAttachGeometryByID(scene_.get(), geometry, static_cast<unsigned>(index));
-    rtcReleaseGeometry(geometry);
-    check(device_.get(), "adding a shape");
+    attach(*shape.mesh, shape.transform, static_cast<unsigned>(shapes_.size() - 1), kSeesShapes, world);
   }
+  // The visible lights' emitters, as the raster passes draw them (passes/emitter.frag).
+  for (const Light& light : scene.lights)
+    if (light.kind->emitter)
+      if (std::optional<LightEmitter> e = light.kind->emitter(light)) emitters_.push_back(std::move(*e));
+  for (const LightEmitter& e : emitters_)
+    attach(e.mesh, e.transform, static_cast<unsigned>(shapes_.size()), kSeesEmitters, shapes_.emplace_back());
   rtcCommitScene(scene_.get());
   check(device_.get(), "building the BVH");
+}
+
+void RayScene::attach(const Mesh& mesh, const glm::mat4& model, unsigned id, unsigned mask, WorldShape& world) {
+  // The raster passes' vertex transform (passes/forward.vert): positions and tangents by the
+  // model matrix, normals by its inverse transpose, the handedness flipped by a mirroring one.
+  const glm::mat3 linear(model), normal_matrix = glm::transpose(glm::inverse(linear));
+  const float mirrored = glm::determinant(linear) < 0.0f ? -1.0f : 1.0f;
+  world.indices = mesh.indices;
+  world.uvs = mesh.uvs;
+  world.positions.reserve(mesh.positions.size());
+  for (const glm::vec3& p : mesh.positions) world.positions.push_back(glm::vec3(model * glm::vec4(p, 1.0f)));
+  for (const glm::vec3& n : mesh.normals) world.normals.push_back(normal_matrix * n);
+  for (const glm::vec4& t : mesh.tangents) world.tangents.emplace_back(linear * glm::vec3(t), t.w * mirrored);
+
+  RTCGeometry geometry = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                               3 * sizeof(float), world.positions.size()));
+  auto* triangles = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t), mesh.triangle_count()));
+  check(device_.get(), "allocating a shape's buffers");
+  for (std::size_t v = 0; v < world.positions.size(); ++v) std::copy_n(&world.positions[v].x, 3, vertices + 3 * v);
+  std::copy(mesh.indices.begin(), mesh.indices.begin() + 3 * mesh.triangle_count(), triangles);
+  rtcSetGeometryMask(geometry, mask);
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometryByID(scene_.get(), geometry, id);
+  rtcReleaseGeometry(geometry);
+  check(device_.get(), "adding a shape");
+}
+
+const LightEmitter* RayScene::emitter(const RayHit& hit) const {
+  const std::size_t first = shapes_.size() - emitters_.size(), index = static_cast<std::size_t>(hit.shape);
+  return hit.hit() && index >= first ? &emitters_[index - first] : nullptr;
+}
+
+SurfaceDerivatives RayScene::derivatives(const RayHit& hit, glm::vec3 direction, glm::vec3 dOdx, glm::vec3 dOdy,
+                                         glm::vec3 dDdx, glm::vec3 dDdy) const {
+  const WorldShape& shape = shapes_.at(static_cast<std::size_t>(hit.shape));
+  const std::uint32_t* v = &shape.indices[3 * hit.triangle];
+  const glm::vec3 e1 = shape.positions[v[1]] - shape.positions[v[0]], e2 = shape.positions[v[2]] - shape.positions[v[0]];
+  const glm::vec3 n = glm::cross(e1, e2);
+  // The hit moves with the ray on the triangle's plane (Igehy 1999, eq. 10-12):
+  // dP = dO + t dD + dt D with dt = -(dO + t dD).n / (D.n).
+  const float t = hit.t, dn = glm::dot(direction, n);
+  auto transfer = [&](glm::vec3 dO, glm::vec3 dD) {
+    const glm::vec3 moved = dO + t * dD;
+    return dn != 0.0f ? moved - direction * (glm::dot(moved, n) / dn) : moved;
+  };
+  SurfaceDerivatives d;
+  d.dPdx = transfer(dOdx, dDdx);
+  d.dPdy = transfer(dOdy, dDdy);
+  // The barycentric steps that move the point by dP: dP = db1 e1 + db2 e2 (least squares on the plane).
+  const float a = glm::dot(e1, e1), b = glm::dot(e1, e2), c = glm::dot(e2, e2), det = a * c - b * b;
+  auto barycentric = [&](glm::vec3 dP) {
+    if (det <= 0.0f) return glm::vec2(0.0f);
+    const float p = glm::dot(e1, dP), q = glm::dot(e2, dP);
+    return glm::vec2(c * p - b * q, a * q - b * p) / det;
+  };
+  const glm::vec2 bx = barycentric(d.dPdx), by = barycentric(d.dPdy);
+  auto step = [&](const auto& values, glm::vec2 db) {
+    using Value = std::decay_t<decltype(values[0])>;
+    if (values.empty()) return Value(0.0f);
+    return db.x * (values[v[1]] - values[v[0]]) + db.y * (values[v[2]] - values[v[0]]);
+  };
+  d.dNdx = step(shape.normals, bx);
+  d.dNdy = step(shape.normals, by);
+  d.dTdx = step(shape.tangents, bx);
+  d.dTdy = step(shape.tangents, by);
+  d.dUVdx = step(shape.uvs, bx);
+  d.dUVdy = step(shape.uvs, by);
+  return d;
 }
 
 RayScene::~RayScene() = default;

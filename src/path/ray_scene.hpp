@@ -13,9 +13,13 @@
 #include <span>
 #include <vector>
 
+#include "scene/lights/light_kind.hpp"
 #include "scene/scene.hpp"
 
 namespace glintlab {
+
+/// What a ray sees (Embree's geometry masks): the scene's shapes, the visible lights' emitters.
+inline constexpr unsigned kSeesShapes = 1u, kSeesEmitters = 2u, kSeesEverything = kSeesShapes | kSeesEmitters;
 
 /// A ray segment: the points origin + t direction with t in [t_near, t_far].
 struct Ray {
@@ -23,12 +27,13 @@ struct Ray {
   float t_near = 0.0f;
   glm::vec3 direction;
   float t_far = 1e30f;
+  unsigned sees = kSeesEverything;  ///< shadow rays see only shapes: the lights are exact shapes of their own
 };
 
 /// The closest hit along a ray, or none (shape < 0).
 struct RayHit {
   float t = 0.0f;
-  int shape = -1;               ///< index into Scene::shapes
+  int shape = -1;               ///< index into Scene::shapes, or past them an emitter (RayScene::emitter)
   std::uint32_t triangle = 0;   ///< triangle of that shape's mesh
   glm::vec2 barycentric{0.0f};  ///< weights of the triangle's second and third vertices
   [[nodiscard]] bool hit() const { return shape >= 0; }
@@ -44,6 +49,15 @@ struct SurfacePoint {
   glm::vec2 uv;
   glm::vec3 geometric_normal;  ///< unit, the triangle's winding (p1 - p0) x (p2 - p0)
   int material = 0;
+};
+
+/// How the surface at a hit changes per step of the ray's film point (Igehy 1999): the hit point
+/// moved on the triangle's plane, the attributes by the barycentric coordinates that move implies.
+struct SurfaceDerivatives {
+  glm::vec3 dPdx, dPdy;
+  glm::vec3 dNdx, dNdy;  ///< of the interpolated (unnormalised) normal
+  glm::vec4 dTdx, dTdy;  ///< of the interpolated tangent
+  glm::vec2 dUVdx, dUVdy;
 };
 
 /// Camera rays and rays from a light or a point towards a light sample share directions and
@@ -65,6 +79,12 @@ class RayScene {
   void occluded(std::span<const Ray> rays, std::span<std::uint8_t> blocked, RayCoherence coherence) const;
   /// The surface where `hit` (a hit) lies.
   [[nodiscard]] SurfacePoint surface(const RayHit& hit) const;
+  /// Its derivatives along a ray of unit `direction` whose origin and direction move by its
+  /// differentials dOdx .. dDdy per step x and y.
+  [[nodiscard]] SurfaceDerivatives derivatives(const RayHit& hit, glm::vec3 direction, glm::vec3 dOdx, glm::vec3 dOdy,
+                                               glm::vec3 dDdx, glm::vec3 dDdy) const;
+  /// The emitter a hit is on (a visible light with extent: LightKind::emitter), or null for a shape.
+  [[nodiscard]] const LightEmitter* emitter(const RayHit& hit) const;
 
   [[nodiscard]] std::size_t triangle_count() const;
 
@@ -94,7 +114,11 @@ class RayScene {
 
   std::unique_ptr<RTCDeviceTy, DeviceDeleter> device_;
   std::unique_ptr<RTCSceneTy, SceneDeleter> scene_;
-  std::vector<WorldShape> shapes_;
+  /// Adds a mesh in world space as geometry `id`, seen by rays whose mask meets `mask`.
+  void attach(const Mesh& mesh, const glm::mat4& model, unsigned id, unsigned mask, WorldShape& world);
+
+  std::vector<WorldShape> shapes_;     // the scene's shapes, then the emitters' meshes
+  std::vector<LightEmitter> emitters_;  // geometry shapes_.size() - emitters_.size() + i
 };
 
 }  // namespace glintlab

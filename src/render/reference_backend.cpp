@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/error.hpp"
+#include "render/path_reference.hpp"
 #include "render/raster_reference.hpp"
 
 namespace glintlab {
@@ -91,6 +92,10 @@ const std::vector<ReferenceBackendEntry>& reference_backends() {
        [](const ReferenceBackendContext& c) {
          return std::make_unique<RasterReference>(c, "raster-realisation", kRealisationReferenceModule);
        }},
+      {"path",
+       "a path tracer: Embree's rays on the CPU, the hits shaded by the raster reference's GLSL on the GL device, "
+       "direct light with shadows (every light sample's shadow ray traced)",
+       [](const ReferenceBackendContext& c) { return std::make_unique<PathReference>(c); }},
       {"raster-facets",
        "raster, with binomial-glints materials as one fixed field of mirror facets, one per uv cell of "
        "e^log_density per unit area with a GGX normal of its own random stream: the binomial methods' "

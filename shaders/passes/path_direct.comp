@@ -1,0 +1,129 @@
+// The path tracer's shading of camera-ray hits, light by light (`path` reference backend, direct
+// light): per hit, the surface record the forward pass builds (core/surface_record.glsl) from the
+// attributes and their per-sub-pixel derivatives that the host interpolated at the hit (ray
+// differentials), the material's prepare step, then every light's samples as the raster reference
+// draws them (passes/reference_estimator.glsl: the same streams, the same weights), each written as
+// a shadow ray with its contribution. The host traces the rays and adds the contributions whose
+// light is visible. One program per material variant ($MATERIAL and the forward pass's defines:
+// src/render/path_reference.cpp).
+layout(local_size_x = 64) in;
+
+#define METHOD_SHADES_ENVIRONMENT
+#include "core/frame.glsl"
+#include "lights/lights.glsl"
+#include "core/surface_record.glsl"
+#include "$MATERIAL"
+#include "passes/reference_estimator.glsl"
+
+// A hit as the host interpolated it (src/render/path_reference.cpp, PathHit: std430, vec4s).
+struct PathHit {
+  vec4 position;       // xyz; w unused
+  vec4 normal;         // as interpolated (not normalised)
+  vec4 tangent;        // xyz, w the handedness
+  vec4 faceNormal;     // the triangle's
+  vec4 dPdx, dPdy;     // per sub-pixel, right and up (GL's screen axes)
+  vec4 dNdx, dNdy;     // of the interpolated normal
+  vec4 dTangentdx, dTangentdy;
+  vec4 uv;             // xy: the mesh's uv; zw: its derivative along x
+  vec4 dUVdy_global;   // xy: the uv's derivative along y; zw: the sub-pixel in the film's grid (GL's y up)
+};
+
+// A shadow ray from the hit: towards dir_dist.xyz, the light dir_dist.w away (0: no ray).
+struct PathShadowRay {
+  vec4 dir_dist;
+  vec4 diffuse;
+  vec4 specular;
+};
+
+layout(std430, binding = PATH_HITS_BINDING) readonly buffer PathHits { PathHit hits[]; };
+layout(std430, binding = PATH_SHADOW_RAYS_BINDING) writeonly buffer PathShadowRays { PathShadowRay shadowRays[]; };
+layout(std430, binding = PATH_EMISSION_BINDING) writeonly buffer PathEmission { vec4 emission[]; };
+
+uniform uint uFirst;        // the draw's hits: [uFirst, uFirst + uCount)
+uniform uint uCount;
+uniform uint uRaysPerHit;   // slots per hit: each delta light 1, each light with extent 2 n + 1
+
+uint gHit, gSlot = 0u;
+ivec2 gGlobal;
+uint gReferenceLightIndex = 0u;
+
+void emitShadowRay(vec3 dir, float dist, vec3 diffuse, vec3 specular) {
+  shadowRays[gHit * uRaysPerHit + gSlot] = PathShadowRay(vec4(dir, dist), vec4(diffuse, 0.0), vec4(specular, 0.0));
+  ++gSlot;
+}
+
+void emitSample(ReferenceSample r, float diffuseScale, float specularScale) {
+  if (r.dist > 0.0) emitShadowRay(r.dir, r.dist, r.diffuse * diffuseScale, r.specular * specularScale);
+}
+
+void prepareSurface(inout Surface s) { materialPrepare(s, materials[uMaterial]); }
+
+// The distance to a delta light: its position for the kinds at a point (point, spot: position_radius),
+// none for a distant one.
+float deltaLightDistance(LightData L, vec3 p) {
+  return lightIsDistant(L) ? FAR_AWAY : length(L.position_radius.xyz - p);
+}
+
+// Writes the light's samples as shadow rays; the radiance is the host's to sum.
+Radiance shadeLight(Surface s, LightData L) {
+  uint lightIndex = gReferenceLightIndex++;
+  Radiance none = Radiance(vec3(0.0), vec3(0.0));
+  vec3 wo = toLocal(s, s.view);
+  if (wo.z <= 0.0) return none;
+  if (!lightHasExtent(L)) {
+    vec3 l, irradiance;
+    deltaLightIncidence(L, s.position, l, irradiance);
+    vec3 wi = toLocal(s, l);
+    emitShadowRay(l, deltaLightDistance(L, s.position), materialDiffuseCos(s, wi) * irradiance,
+                  materialSpecularCos(s, wo, wi) * irradiance);
+    return none;
+  }
+  ReferenceStream st = referenceStream(gGlobal, lightIndex);
+  bool mirror = referenceMirror(s);
+  float perSample = 1.0 / float(st.count);
+  float specularScale = perSample * referenceSpecularFactor(s, L, wo, st);
+  for (uint j = 0u; j < st.count; ++j) {
+    emitSample(referenceLightSample(s, L, wo, mirror, st, j), perSample, specularScale);
+    emitSample(referenceBrdfSample(s, L, wo, mirror, st, j), perSample, specularScale);
+  }
+  if (mirror) emitSample(referenceMirrorSample(s, L, wo), 1.0, 1.0);
+  return none;
+}
+
+#include "lights/light_loop.glsl"
+
+void main() {
+  if (gl_GlobalInvocationID.x >= uCount) return;
+  gHit = uFirst + gl_GlobalInvocationID.x;
+  PathHit h = hits[gHit];
+  gGlobal = ivec2(floatBitsToInt(h.dUVdy_global.zw));
+  MaterialData m = materials[uMaterial];
+
+  // The footprint as the forward pass's screen-space derivatives give it: each derivative one
+  // sub-pixel's step of the quantity (finite, as dFdxFine), from the attributes' derivatives.
+  vec3 position = h.position.xyz, view = viewDirectionFrom(position);
+  vec3 n = normalize(h.normal.xyz), t, b;
+  vertexTangentFrame(n, h.tangent, 1.0, t, b);
+  vec3 tx, ty;
+  vertexTangentFrame(normalize(h.normal.xyz + h.dNdx.xyz), h.tangent + h.dTangentdx, 1.0, tx, b);
+  vertexTangentFrame(normalize(h.normal.xyz + h.dNdy.xyz), h.tangent + h.dTangentdy, 1.0, ty, b);
+  vec2 vertexUV = h.uv.xy, dVertexUVdx = h.uv.zw, dVertexUVdy = h.dUVdy_global.xy;
+  vec2 uv = normalMapCoordinates(vertexUV);
+  Footprint footprint = makeFootprint(
+      h.dPdx.xyz, h.dPdy.xyz, h.dNdx.xyz, h.dNdy.xyz, tx - t, ty - t, viewDirectionFrom(position + h.dPdx.xyz) - view,
+      viewDirectionFrom(position + h.dPdy.xyz) - view, dVertexUVdx, dVertexUVdy,
+      normalMapCoordinates(vertexUV + dVertexUVdx) - uv, normalMapCoordinates(vertexUV + dVertexUVdy) - uv);
+#if MATERIAL_NORMAL_MAP
+  vec3 mapped = textureLod(uNormalMap, uv, 0.0).xyz;  // ground truth: the map at the sample point
+#else
+  vec3 mapped = vec3(0.0, 0.0, 1.0);
+#endif
+  vec3 materialEmission;
+  Surface s = surfaceRecord(m, position, h.normal.xyz, h.tangent, vertexUV, uv, view, h.faceNormal.xyz, footprint,
+                            mapped, materialEmission);
+  prepareSurface(s);
+  shadeAllLights(s);
+  for (uint slot = gSlot; slot < uRaysPerHit; ++slot)
+    shadowRays[gHit * uRaysPerHit + slot].dir_dist = vec4(0.0, 0.0, 1.0, 0.0);
+  emission[gHit] = vec4(materialEmission, 0.0);
+}

@@ -1,0 +1,296 @@
+#include "render/path_reference.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <set>
+
+#include "core/error.hpp"
+#include "core/hash.hpp"
+#include "gl/context.hpp"
+#include "gl/shader_library.hpp"
+#include "path/camera_rays.hpp"
+#include "render/gpu_scene.hpp"
+#include "render/render_target.hpp"
+#include "render/subpixel_filter.hpp"
+#include "tables/registry.hpp"
+
+namespace glintlab {
+namespace {
+
+// The std430 records of passes/path_direct.comp (PathHit, PathShadowRay): vec4s only.
+struct PathHit {
+  glm::vec4 position, normal, tangent, face_normal;
+  glm::vec4 dPdx, dPdy, dNdx, dNdy, dTangentdx, dTangentdy;
+  glm::vec4 uv;             // xy: uv; zw: d/dx
+  glm::vec4 dUVdy_global;   // xy: d/dy; zw: the sub-pixel's coordinates, as int bits
+};
+static_assert(sizeof(PathHit) == 12 * sizeof(glm::vec4));
+struct PathShadowRay {
+  glm::vec4 dir_dist, diffuse, specular;
+};
+
+// A tile's shadow rays at most (their records: 96 MiB), so a tile holds fewer samples when the
+// scene has many lights or many samples per light.
+constexpr std::size_t kMaxShadowRaysPerTile = std::size_t{1} << 21;
+constexpr unsigned kGroupSize = 64;
+
+// Shadow rays start this far off the surface, along its face normal on the ray's side (relative to
+// the point's distance from the origin: float positions are that precise).
+constexpr float kRayOffset = 1e-4f;
+
+void set_uint(GLuint program, const char* name, unsigned v) {
+  glProgramUniform1ui(program, glGetUniformLocation(program, name), v);
+}
+
+}  // namespace
+
+// A tile of output pixels (film y down) and the region rendered for it: the tile and its filter
+// margin inside the film, whose first row in GL's y-up rows is region_gl_y.
+struct PathReference::Tile {
+  glm::ivec2 origin, size;
+  glm::ivec2 region_origin, region_size;
+  int region_gl_y = 0;
+};
+
+PathReference::PathReference(const ReferenceBackendContext& context)
+    : shaders_(context.shaders), scene_(context.scene), rays_(context.scene.resource_context().scene) {}
+
+std::uint64_t PathReference::estimator_hash() const {
+  if (estimator_hash_ != 0) return estimator_hash_;
+  Hasher h;
+  h.text("glintlab-path-v1 direct light, shadow rays of the scene's shapes");
+  std::set<MaterialVariant> variants;
+  for (const auto& mesh : scene_.meshes()) variants.insert(material_variant(scene_, mesh.material));
+  for (const MaterialVariant& v : variants)
+    h.text(shaders_.expand("passes/path_direct.comp", forward_variant(kReferenceModule, scene_.light_ranges(), v)));
+  h.text(shaders_.expand("passes/path_background.comp", {}));
+  h.text(shaders_.expand("passes/downsample.comp", {}));
+  h.text(shaders_.expand("passes/filter_gaussian.comp", {}));
+  for (const auto& id : scene_.scene_resource_ids()) {
+    h.text(id);
+    h.text(find_resource_type(id).key(scene_.resource_context()));
+  }
+  estimator_hash_ = h.digest();
+  return estimator_hash_;
+}
+
+GLuint PathReference::shading_program(int material) {
+  GLuint& program = programs_[material];
+  if (!program)
+    program = shaders_.compute("passes/path_direct.comp",
+                               forward_variant(kReferenceModule, scene_.light_ranges(), material_variant(scene_, material)));
+  return program;
+}
+
+Frame PathReference::render_pass(const Camera& camera, int width, int height, const ReferencePass& pass,
+                                 const ProgressFn& progress) {
+  const int k = pass.subpixels;
+  if (k < 1 || k > 32) throw InputError("reference sub-pixels per axis " + std::to_string(k) + ": allowed: 1 .. 32");
+  const FilmRegion wanted = pass.region.within(width, height);
+  const int margin = pass.filter.support_pixels();
+  // Each light may write 2 n + 1 shadow rays per sample (n light samples).
+  const std::size_t rays_per_hit =
+      std::max<std::size_t>(1, scene_.resource_context().scene.lights.size() * (2 * static_cast<std::size_t>(pass.light_samples) + 1));
+  const int side = static_cast<int>(std::sqrt(static_cast<double>(std::max<std::size_t>(1024, kMaxShadowRaysPerTile / rays_per_hit))));
+  const int tile = std::max(1, side / k - 2 * margin);
+  const int tiles_x = (wanted.width + tile - 1) / tile, tiles_y = (wanted.height + tile - 1) / tile;
+
+  RenderTarget high(std::min(width, tile + 2 * margin) * k, std::min(height, tile + 2 * margin) * k);
+  gl::Texture out_total = gl::make_texture(GL_TEXTURE_2D), out_specular = gl::make_texture(GL_TEXTURE_2D);
+  glTextureStorage2D(out_total.id(), 1, GL_RGBA32F, width, height);
+  glTextureStorage2D(out_specular.id(), 1, GL_RGBA32F, width, height);
+  SubpixelFilter filter(shaders_, pass.filter);
+  const glm::ivec2 film(width, height);
+  std::vector<glm::vec4> total, specular;
+  int done = 0;
+  for (int ty = 0; ty < tiles_y; ++ty)
+    for (int tx = 0; tx < tiles_x; ++tx) {
+      Tile t;
+      t.origin = {wanted.x + tx * tile, wanted.y + ty * tile};
+      t.size = {std::min(tile, wanted.x + wanted.width - t.origin.x), std::min(tile, wanted.y + wanted.height - t.origin.y)};
+      t.region_origin = glm::max(t.origin - margin, glm::ivec2(0));
+      t.region_size = glm::min(t.origin + t.size + margin, film) - t.region_origin;
+      t.region_gl_y = height - t.region_origin.y - t.region_size.y;
+      shade_tile(camera, width, height, pass, t, total, specular);
+      const glm::ivec2 samples = t.region_size * k;
+      glTextureSubImage2D(high.total(), 0, 0, 0, samples.x, samples.y, GL_RGBA, GL_FLOAT, total.data());
+      glTextureSubImage2D(high.specular(), 0, 0, 0, samples.x, samples.y, GL_RGBA, GL_FLOAT, specular.data());
+      filter.reduce(high,
+                    {.subpixels = k,
+                     .jitter = pass.jitter,
+                     .region_origin = {t.region_origin.x, t.region_gl_y},
+                     .region_size = t.region_size,
+                     .out_origin = {t.origin.x, height - t.origin.y - t.size.y},
+                     .out_size = t.size},
+                    out_total.id(), out_specular.id());
+      glFinish();
+      check_gl("path-tracing a reference tile");
+      if (progress) progress(++done, tiles_x * tiles_y);
+    }
+  const Image total_image = RenderTarget::read(out_total.id(), width, height);
+  const Image specular_image = RenderTarget::read(out_specular.id(), width, height);
+  if (wanted == FilmRegion{0, 0, width, height}) return {total_image, specular_image};
+  return {total_image.crop(wanted.x, wanted.y, wanted.width, wanted.height),
+          specular_image.crop(wanted.x, wanted.y, wanted.width, wanted.height)};
+}
+
+void PathReference::shade_tile(const Camera& camera, int width, int height, const ReferencePass& pass, const Tile& tile,
+                               std::vector<glm::vec4>& total, std::vector<glm::vec4>& specular) {
+  const int k = pass.subpixels;
+  const glm::ivec2 samples = tile.region_size * k;
+  const std::size_t count = static_cast<std::size_t>(samples.x) * static_cast<std::size_t>(samples.y);
+  total.assign(count, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+  specular.assign(count, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+
+  // Each sample's camera ray, where the raster reference's sample of the same sub-pixel looks: the
+  // sub-pixel's corner plus the pass's jitter, in GL's y-up rows; differentials per sub-pixel.
+  const CameraRays camera_rays(camera, {width, height});
+  const float per_subpixel = 1.0f / static_cast<float>(k);
+  std::vector<Ray> rays(count);
+  std::vector<RayDifferential> differentials(count);
+  std::vector<glm::ivec2> global(count);
+  for (int y = 0; y < samples.y; ++y)
+    for (int x = 0; x < samples.x; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * samples.x + x;
+      global[i] = {tile.region_origin.x * k + x, tile.region_gl_y * k + y};
+      const glm::vec2 film_point((static_cast<float>(global[i].x) + pass.jitter.x) * per_subpixel,
+                                 static_cast<float>(height) - (static_cast<float>(global[i].y) + pass.jitter.y) * per_subpixel);
+      RayDifferential r = camera_rays.at(film_point);
+      // Per sub-pixel, along GL's screen axes (y up) as the raster pass's derivatives are.
+      r.dOdx *= per_subpixel;
+      r.dDdx *= per_subpixel;
+      r.dOdy *= -per_subpixel;
+      r.dDdy *= -per_subpixel;
+      differentials[i] = r;
+      rays[i] = Ray{.origin = r.origin, .direction = r.direction};
+    }
+  std::vector<RayHit> hits(count);
+  rays_.intersect(rays, hits, RayCoherence::Coherent);
+
+  // Emitters are drawn as the raster's emitter pass draws them; shapes are shaded on the device,
+  // grouped by material; misses see the background.
+  std::map<int, std::vector<std::size_t>> by_material;
+  std::vector<std::size_t> missed;
+  for (std::size_t i = 0; i < count; ++i) {
+    if (!hits[i].hit()) {
+      missed.push_back(i);
+    } else if (const LightEmitter* e = rays_.emitter(hits[i])) {
+      const bool lit = e->two_sided || glm::dot(rays_.surface(hits[i]).normal, rays[i].direction) < 0.0f;
+      total[i] = glm::vec4(lit ? e->radiance : glm::vec3(0.0f), 1.0f);
+    } else {
+      by_material[rays_.surface(hits[i]).material].push_back(i);
+    }
+  }
+
+  std::vector<PathHit> records;
+  std::vector<std::size_t> sample_of;  // record -> sample
+  std::vector<std::pair<int, std::pair<unsigned, unsigned>>> draws;  // material, (first, count)
+  for (const auto& [material, indices] : by_material) {
+    draws.push_back({material, {static_cast<unsigned>(records.size()), static_cast<unsigned>(indices.size())}});
+    for (std::size_t i : indices) {
+      const SurfacePoint p = rays_.surface(hits[i]);
+      const RayDifferential& r = differentials[i];
+      const SurfaceDerivatives d = rays_.derivatives(hits[i], r.direction, r.dOdx, r.dOdy, r.dDdx, r.dDdy);
+      records.push_back(PathHit{
+          .position = glm::vec4(p.position, 0.0f),
+          .normal = glm::vec4(p.normal, 0.0f),
+          .tangent = p.tangent,
+          .face_normal = glm::vec4(p.geometric_normal, 0.0f),
+          .dPdx = glm::vec4(d.dPdx, 0.0f),
+          .dPdy = glm::vec4(d.dPdy, 0.0f),
+          .dNdx = glm::vec4(d.dNdx, 0.0f),
+          .dNdy = glm::vec4(d.dNdy, 0.0f),
+          .dTangentdx = d.dTdx,
+          .dTangentdy = d.dTdy,
+          .uv = glm::vec4(p.uv, d.dUVdx),
+          .dUVdy_global = glm::vec4(d.dUVdy, std::bit_cast<float>(global[i].x), std::bit_cast<float>(global[i].y))});
+      sample_of.push_back(i);
+    }
+  }
+
+  // The frame as the raster reference's pass sees it (passes/reference_estimator.glsl reads
+  // target.z = k, tile.z = light samples, tile.w = the pass's seed; frame.glsl the camera).
+  FrameUniforms frame{};
+  frame.view_proj = glm::mat4(1.0f);
+  frame.camera_pos = {camera.position, camera.projection == Projection::Perspective ? 1.0f : 0.0f};
+  frame.camera_forward = glm::vec4(glm::normalize(camera.target - camera.position), 0.0f);
+  frame.target = {samples.x, samples.y, k, 0};
+  frame.tile = {tile.region_origin.x * k, tile.region_gl_y * k, pass.light_samples, static_cast<int>(pass.seed & 0x7fffffffu)};
+  const gl::Buffer frame_ubo = gl::make_buffer(sizeof(FrameUniforms), &frame);
+  glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frame_ubo.id());
+  scene_.bind_buffers();
+  scene_.resources().bind(scene_.scene_resource_ids(), scene_.resource_context());
+
+  if (!records.empty()) {
+    const std::size_t rays_per_hit =
+        std::max<std::size_t>(1, scene_.resource_context().scene.lights.size() * (2 * static_cast<std::size_t>(pass.light_samples) + 1));
+    const gl::Buffer hit_buffer = gl::make_buffer(static_cast<GLsizeiptr>(records.size() * sizeof(PathHit)), records.data());
+    const gl::Buffer ray_buffer =
+        gl::make_buffer(static_cast<GLsizeiptr>(records.size() * rays_per_hit * sizeof(PathShadowRay)), nullptr);
+    const gl::Buffer emission_buffer = gl::make_buffer(static_cast<GLsizeiptr>(records.size() * sizeof(glm::vec4)), nullptr);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPathHitsBinding, hit_buffer.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPathShadowRaysBinding, ray_buffer.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPathEmissionBinding, emission_buffer.id());
+    for (const auto& [material, range] : draws) {
+      const GLuint program = shading_program(material);
+      glUseProgram(program);
+      scene_.bind_material(program, material);
+      set_uint(program, "uFirst", range.first);
+      set_uint(program, "uCount", range.second);
+      set_uint(program, "uRaysPerHit", static_cast<unsigned>(rays_per_hit));
+      glDispatchCompute((range.second + kGroupSize - 1) / kGroupSize, 1, 1);
+    }
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<PathShadowRay> shadow(records.size() * rays_per_hit);
+    std::vector<glm::vec4> emission(records.size());
+    glGetNamedBufferSubData(ray_buffer.id(), 0, static_cast<GLsizeiptr>(shadow.size() * sizeof(PathShadowRay)), shadow.data());
+    glGetNamedBufferSubData(emission_buffer.id(), 0, static_cast<GLsizeiptr>(emission.size() * sizeof(glm::vec4)),
+                            emission.data());
+    check_gl("shading the path tracer's hits");
+
+    // The shadow rays: from just off the surface on the ray's side, to just short of the light
+    // (lights are exact shapes of their own, not in the BVH's shapes: kSeesShapes).
+    std::vector<Ray> shadow_rays;
+    std::vector<std::size_t> shadow_of;
+    for (std::size_t r = 0; r < shadow.size(); ++r) {
+      const float dist = shadow[r].dir_dist.w;
+      if (!(dist > 0.0f)) continue;
+      const PathHit& h = records[r / rays_per_hit];
+      const glm::vec3 dir(shadow[r].dir_dist), n(h.face_normal), p(h.position);
+      const float offset = kRayOffset * (1.0f + std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}));
+      const glm::vec3 origin = p + (glm::dot(dir, n) >= 0.0f ? offset : -offset) * n;
+      shadow_rays.push_back(Ray{.origin = origin, .direction = dir, .t_far = dist * (1.0f - 1e-4f), .sees = kSeesShapes});
+      shadow_of.push_back(r);
+    }
+    std::vector<std::uint8_t> blocked(shadow_rays.size());
+    rays_.occluded(shadow_rays, blocked, RayCoherence::Incoherent);
+    for (std::size_t j = 0; j < shadow_rays.size(); ++j) {
+      if (blocked[j]) continue;
+      const PathShadowRay& s = shadow[shadow_of[j]];
+      const std::size_t i = sample_of[shadow_of[j] / rays_per_hit];
+      total[i] += glm::vec4(glm::vec3(s.diffuse) + glm::vec3(s.specular), 0.0f);
+      specular[i] += glm::vec4(glm::vec3(s.specular), 0.0f);
+    }
+    for (std::size_t h = 0; h < records.size(); ++h) total[sample_of[h]] += glm::vec4(glm::vec3(emission[h]), 0.0f);
+  }
+
+  if (!missed.empty() && scene_.background_light() >= 0) {
+    std::vector<glm::vec4> directions;
+    for (std::size_t i : missed) directions.emplace_back(rays[i].direction, 0.0f);
+    const gl::Buffer buffer = gl::make_buffer(static_cast<GLsizeiptr>(directions.size() * sizeof(glm::vec4)),
+                                              directions.data());
+    const GLuint program = shaders_.compute("passes/path_background.comp");
+    glUseProgram(program);
+    glProgramUniform1i(program, glGetUniformLocation(program, "uLight"), scene_.background_light());
+    set_uint(program, "uCount", static_cast<unsigned>(directions.size()));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPathHitsBinding, buffer.id());
+    glDispatchCompute((static_cast<unsigned>(directions.size()) + kGroupSize - 1) / kGroupSize, 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetNamedBufferSubData(buffer.id(), 0, static_cast<GLsizeiptr>(directions.size() * sizeof(glm::vec4)), directions.data());
+    check_gl("the path tracer's background");
+    for (std::size_t j = 0; j < missed.size(); ++j) total[missed[j]] = glm::vec4(glm::vec3(directions[j]), 1.0f);
+  }
+}
+
+}  // namespace glintlab

@@ -1,0 +1,44 @@
+#pragma once
+// The `path` reference backend: a path tracer in wavefront form. Embree traces on the CPU (the rays
+// of each sub-pixel sample, src/path/ray_scene.hpp); the hits are shaded on the GL device by the
+// same GLSL as the raster reference (passes/path_direct.comp: the forward pass's surface record and
+// the reference's estimator, sample by sample), which writes each light sample as a shadow ray;
+// Embree answers them and the host adds what each light gives where it is visible. Direct light
+// (max_depth = 1), with shadows: where nothing stands between a surface and its lights it draws
+// what the raster reference draws, sample for sample (docs/methods.md, "The path tracer").
+#include <map>
+#include <memory>
+#include <string>
+
+#include "path/ray_scene.hpp"
+#include "render/reference_backend.hpp"
+#include "render/renderer.hpp"
+
+namespace glintlab {
+
+class PathReference final : public ReferenceBackend {
+ public:
+  explicit PathReference(const ReferenceBackendContext& context);
+
+  [[nodiscard]] std::string id() const override { return "path"; }
+  /// Hash of the shading programs' full text on this scene, the filters' and the tracer's version.
+  [[nodiscard]] std::uint64_t estimator_hash() const override;
+  Frame render_pass(const Camera& camera, int width, int height, const ReferencePass& pass,
+                    const ProgressFn& progress = {}) override;
+
+ private:
+  struct Tile;
+  /// The shading program of a material's variant.
+  GLuint shading_program(int material);
+  /// Shades one tile's samples: their radiance in `total` and `specular` (GL's row order).
+  void shade_tile(const Camera& camera, int width, int height, const ReferencePass& pass, const Tile& tile,
+                  std::vector<glm::vec4>& total, std::vector<glm::vec4>& specular);
+
+  ShaderLibrary& shaders_;
+  const GpuScene& scene_;
+  RayScene rays_;
+  std::map<int, GLuint> programs_;  // by material
+  mutable std::uint64_t estimator_hash_ = 0;
+};
+
+}  // namespace glintlab

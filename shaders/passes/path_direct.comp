@@ -1,10 +1,11 @@
-// The path tracer's shading of camera-ray hits, light by light (`path` reference backend, direct
-// light): per hit, the surface record the forward pass builds (core/surface_record.glsl) from the
-// attributes and their per-sub-pixel derivatives that the host interpolated at the hit (ray
-// differentials), the material's prepare step, then every light's samples as the raster reference
-// draws them (passes/reference_estimator.glsl: the same streams, the same weights), each written as
-// a shadow ray with its contribution. The host traces the rays and adds the contributions whose
-// light is visible. One program per material variant ($MATERIAL and the forward pass's defines:
+// The path tracer's shading of its hits (`path` reference backend), one path vertex at a time: per
+// hit, the surface record the forward pass builds (core/surface_record.glsl) from the attributes
+// and their per-sub-pixel derivatives that the host interpolated at the hit (ray differentials),
+// the material's prepare step, then every light's samples as the raster reference draws them
+// (passes/reference_estimator.glsl: the same streams, the same weights), each written as a shadow
+// ray with its contribution, and the direction the path goes on in (a bounce) with its weight. The
+// host traces the rays, adds the contributions whose light is visible and follows the bounces. One
+// program per material variant ($MATERIAL and the forward pass's defines:
 // src/render/path_reference.cpp).
 layout(local_size_x = 64) in;
 
@@ -26,6 +27,8 @@ struct PathHit {
   vec4 dTangentdx, dTangentdy;
   vec4 uv;             // xy: the mesh's uv; zw: its derivative along x
   vec4 dUVdy_global;   // xy: the uv's derivative along y; zw: the sub-pixel in the film's grid (GL's y up)
+  vec4 incoming;       // after a bounce (w = 1): xyz the unit direction back along the ray; camera rays: w = 0
+  vec4 dViewdx, dViewdy;  // after a bounce: the derivatives of that direction
 };
 
 // A shadow ray from the hit: towards dir_dist.xyz, the light dir_dist.w away (0: no ray).
@@ -38,10 +41,20 @@ struct PathShadowRay {
 layout(std430, binding = PATH_HITS_BINDING) readonly buffer PathHits { PathHit hits[]; };
 layout(std430, binding = PATH_SHADOW_RAYS_BINDING) writeonly buffer PathShadowRays { PathShadowRay shadowRays[]; };
 layout(std430, binding = PATH_EMISSION_BINDING) writeonly buffer PathEmission { vec4 emission[]; };
+// Where the path goes on: dir_lobe.xyz (world space; w 0: it ends), and the bounce's weights f cos / pdf
+// of the diffuse and the specular lobe (diffuse.rgb, specular.rgb).
+struct PathBounce {
+  vec4 dir_lobe;
+  vec4 diffuse;
+  vec4 specular;
+};
+layout(std430, binding = PATH_CONTINUATION_BINDING) writeonly buffer PathBounces { PathBounce bounces[]; };
 
 uniform uint uFirst;        // the draw's hits: [uFirst, uFirst + uCount)
 uniform uint uCount;
 uniform uint uRaysPerHit;   // slots per hit: each delta light 1, each light with extent 2 n + 1
+uniform uint uDepth;        // the path vertex: 0 where camera rays hit (the raster reference's streams)
+uniform bool uBounce;       // whether the path goes on from here
 
 uint gHit, gSlot = 0u;
 ivec2 gGlobal;
@@ -78,7 +91,8 @@ Radiance shadeLight(Surface s, LightData L) {
                   materialSpecularCos(s, wo, wi) * irradiance);
     return none;
   }
-  ReferenceStream st = referenceStream(gGlobal, lightIndex);
+  // Each vertex its own streams; the first the raster reference's.
+  ReferenceStream st = referenceStream(gGlobal, lightIndex + uDepth * uint(MAX_LIGHTS));
   bool mirror = referenceMirror(s);
   float perSample = 1.0 / float(st.count);
   float specularScale = perSample * referenceSpecularFactor(s, L, wo, st);
@@ -92,6 +106,43 @@ Radiance shadeLight(Surface s, LightData L) {
 
 #include "lights/light_loop.glsl"
 
+// The bounce: one direction from the diffuse lobe (cosine) or the specular one (the material's
+// sampler; a mirror's reflection), chosen by their albedos' luminance, weighted by one-sample MIS
+// of the two (the mixture's density). Glinty kinds bounce with their light integrand, the smooth
+// BRDF of their model (as glint renderers do for indirect light: docs/methods.md, "The path tracer").
+PathBounce pathBounce(Surface s) {
+  PathBounce none = PathBounce(vec4(0.0), vec4(0.0), vec4(0.0));
+  vec3 wo = toLocal(s, s.view);
+  if (!uBounce || wo.z <= 0.0) return none;
+  uint h = hash3(uvec3(uvec2(gGlobal), uDepth * 7919u + uint(frame.tile.w) + 0x5bd1e995u));
+  vec2 u = hashToUnit2(h);
+  float pick = uintToUnit(pcgHash(h + 7u));
+  float diffuseShare = dot(s.diffuse, vec3(0.2126, 0.7152, 0.0722));
+  float specularShare = dot(s.f0, vec3(0.2126, 0.7152, 0.0722));
+  float pDiffuse = diffuseShare + specularShare > 0.0 ? clamp(diffuseShare / (diffuseShare + specularShare), 0.05, 0.95) : 0.5;
+  if (referenceMirror(s)) {
+    // A delta lobe: its weight is F (the diffuse lobe is sampled with probability pDiffuse alone).
+    if (pick < pDiffuse) {
+      vec3 wi = vec3(sqrt(u.x) * vec2(cos(TWO_PI * u.y), sin(TWO_PI * u.y)), sqrt(max(1.0 - u.x, 0.0)));
+      if (wi.z <= 0.0) return none;
+      return PathBounce(vec4(toWorld(s, wi), 1.0), vec4(materialDiffuseCos(s, wi) / (pDiffuse * wi.z / PI), 0.0), vec4(0.0));
+    }
+    vec3 wi = reflect(-wo, vec3(0.0, 0.0, 1.0));
+    return PathBounce(vec4(toWorld(s, wi), 2.0), vec4(0.0), vec4(fresnelSchlick(s.f0, wo.z) / (1.0 - pDiffuse), 0.0));
+  }
+  vec3 wi;
+  if (pick < pDiffuse) {
+    wi = vec3(sqrt(u.x) * vec2(cos(TWO_PI * u.y), sin(TWO_PI * u.y)), sqrt(max(1.0 - u.x, 0.0)));
+  } else {
+    wi = reflect(-wo, materialSampleNormal(s, wo, u));
+  }
+  if (wi.z <= 0.0) return none;
+  float pdf = pDiffuse * wi.z / PI + (1.0 - pDiffuse) * materialSamplePdf(s, wo, wi);
+  if (!(pdf > 0.0)) return none;
+  return PathBounce(vec4(toWorld(s, wi), pick < pDiffuse ? 1.0 : 2.0), vec4(materialDiffuseCos(s, wi) / pdf, 0.0),
+                    vec4(materialLightIntegrand(s, wo, wi) / pdf, 0.0));
+}
+
 void main() {
   if (gl_GlobalInvocationID.x >= uCount) return;
   gHit = uFirst + gl_GlobalInvocationID.x;
@@ -101,7 +152,9 @@ void main() {
 
   // The footprint as the forward pass's screen-space derivatives give it: each derivative one
   // sub-pixel's step of the quantity (finite, as dFdxFine), from the attributes' derivatives.
-  vec3 position = h.position.xyz, view = viewDirectionFrom(position);
+  vec3 position = h.position.xyz;
+  bool bounced = h.incoming.w > 0.5;
+  vec3 view = bounced ? h.incoming.xyz : viewDirectionFrom(position);
   vec3 n = normalize(h.normal.xyz), t, b;
   vertexTangentFrame(n, h.tangent, 1.0, t, b);
   vec3 tx, ty;
@@ -109,9 +162,10 @@ void main() {
   vertexTangentFrame(normalize(h.normal.xyz + h.dNdy.xyz), h.tangent + h.dTangentdy, 1.0, ty, b);
   vec2 vertexUV = h.uv.xy, dVertexUVdx = h.uv.zw, dVertexUVdy = h.dUVdy_global.xy;
   vec2 uv = normalMapCoordinates(vertexUV);
+  vec3 dViewdx = bounced ? h.dViewdx.xyz : viewDirectionFrom(position + h.dPdx.xyz) - view;
+  vec3 dViewdy = bounced ? h.dViewdy.xyz : viewDirectionFrom(position + h.dPdy.xyz) - view;
   Footprint footprint = makeFootprint(
-      h.dPdx.xyz, h.dPdy.xyz, h.dNdx.xyz, h.dNdy.xyz, tx - t, ty - t, viewDirectionFrom(position + h.dPdx.xyz) - view,
-      viewDirectionFrom(position + h.dPdy.xyz) - view, dVertexUVdx, dVertexUVdy,
+      h.dPdx.xyz, h.dPdy.xyz, h.dNdx.xyz, h.dNdy.xyz, tx - t, ty - t, dViewdx, dViewdy, dVertexUVdx, dVertexUVdy,
       normalMapCoordinates(vertexUV + dVertexUVdx) - uv, normalMapCoordinates(vertexUV + dVertexUVdy) - uv);
 #if MATERIAL_NORMAL_MAP
   vec3 mapped = textureLod(uNormalMap, uv, 0.0).xyz;  // ground truth: the map at the sample point
@@ -126,4 +180,5 @@ void main() {
   for (uint slot = gSlot; slot < uRaysPerHit; ++slot)
     shadowRays[gHit * uRaysPerHit + slot].dir_dist = vec4(0.0, 0.0, 1.0, 0.0);
   emission[gHit] = vec4(materialEmission, 0.0);
+  bounces[gHit] = pathBounce(s);
 }

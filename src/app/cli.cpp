@@ -65,6 +65,9 @@ void add_common(CLI::App* cmd, CommonOptions& o, bool many_methods) {
   cmd->add_option("--reference-backend", o.reference_backend,
                   "how the ground truth is computed (" + backends + "; see 'glintlab info')")
       ->default_str(o.reference_backend);
+  cmd->add_option("--max-depth", o.max_depth,
+                  "path vertices lit by the path backend (--reference-backend path): 1 direct light, more bounces")
+      ->default_str("1");
   cmd->add_option("--reference-filter", o.reference_filter,
                   "the reference's pixel filter: box (each pixel's own samples), or gaussian[:S] (every sample "
                   "within 3 S pixels, Gaussian of S = 0.1 .. 4 pixels, default " +

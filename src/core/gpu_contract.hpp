@@ -24,10 +24,11 @@ inline constexpr int kMaterialBlockBinding = 2;
 inline constexpr int kPrefilteredNdfRecordsBinding = 0;
 inline constexpr int kPrefilteredNdfValuesBinding = 1;
 /// Storage-buffer binding points of the path tracer's shading pass (passes/path_direct.comp,
-/// src/render/path_reference.cpp): its hits in, its shadow rays and the hits' emission out.
+/// src/render/path_reference.cpp): its hits in; their shadow rays, emission and bounces out.
 inline constexpr int kPathHitsBinding = 4;
 inline constexpr int kPathShadowRaysBinding = 5;
 inline constexpr int kPathEmissionBinding = 6;
+inline constexpr int kPathContinuationBinding = 7;
 
 /// Texture units of a material's maps (shaders/core/fragment_inputs.glsl, slope_moments.glsl).
 inline constexpr int kNormalMapUnit = 0;

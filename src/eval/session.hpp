@@ -41,6 +41,7 @@ struct CommonOptions {
   std::string reference_backend = reference_backends().front().id;  ///< --reference-backend; default: the first
   std::string reference_filter = "box";  ///< --reference-filter: box or gaussian:S (PixelFilter::parse)
   std::string tile;  ///< render --tile INDEX/COLUMNSxROWS: the reference of one tile of the film (parse_tile)
+  int max_depth = 1;  ///< --max-depth: the path backend's lit path vertices (1: direct light)
   bool quiet = false;
 };
 

@@ -9,7 +9,7 @@ CameraRays::CameraRays(const Camera& camera, glm::ivec2 film)
     : clip_to_world_(glm::inverse(
           glm::dmat4(camera.projection_matrix(static_cast<float>(film.x) / static_cast<float>(film.y))) *
           glm::dmat4(camera.view_matrix()))),
-      film_(film) {}
+      film_(film), eye_(camera.position), orthographic_(camera.projection == Projection::Orthographic) {}
 
 glm::dvec3 CameraRays::unproject(glm::dvec2 ndc, double z) const {
   const glm::dvec4 p = clip_to_world_ * glm::dvec4(ndc, z, 1.0);
@@ -37,6 +37,25 @@ RayDifferential CameraRays::at(glm::vec2 pixel) const {
                          .dOdy = glm::vec3(dNearDy),
                          .dDdx = glm::vec3(unit_derivative(dFarDx - dNearDx)),
                          .dDdy = glm::vec3(unit_derivative(dFarDy - dNearDy))};
+}
+
+RayDifferential CameraRays::towards(glm::vec3 p) const {
+  RayDifferential r = at(glm::vec2(film_ * 0.5));
+  if (orthographic_) {
+    r.origin = p - r.direction * glm::dot(p - r.origin, r.direction);
+    return r;
+  }
+  // The rotation taking the centre's direction to p's (Rodrigues), applied to its differentials;
+  // from the eye, whose rays do not move (dO = 0).
+  const glm::vec3 to = glm::normalize(p - eye_), axis = glm::cross(r.direction, to);
+  const float c = glm::dot(r.direction, to), s = glm::length(axis);
+  auto turn = [&](glm::vec3 v) {
+    if (s < 1e-7f) return c > 0.0f ? v : -v;
+    const glm::vec3 k = axis / s;
+    return v * c + glm::cross(k, v) * s + k * glm::dot(k, v) * (1.0f - c);
+  };
+  return RayDifferential{.origin = eye_, .direction = to, .dOdx = glm::vec3(0.0f), .dOdy = glm::vec3(0.0f),
+                         .dDdx = turn(r.dDdx), .dDdy = turn(r.dDdy)};
 }
 
 }  // namespace glintlab

@@ -29,6 +29,10 @@ class CameraRays {
   /// The ray through the film point `pixel`, in pixels from the film's top-left corner (y down):
   /// the centre of pixel (i, j) is (i + 0.5, j + 0.5).
   [[nodiscard]] RayDifferential at(glm::vec2 pixel) const;
+  /// A ray through the world point p with the differentials of the film centre's ray, turned (or,
+  /// orthographic, moved) to pass through p: the footprint a camera would give a point it does not
+  /// see directly (pbrt-v4's Camera::Approximate_dp_dxy), for path vertices after a bounce.
+  [[nodiscard]] RayDifferential towards(glm::vec3 p) const;
 
  private:
   /// The world point at normalised device coordinates (x, y) and depth z (-1 near, 1 far).
@@ -36,6 +40,8 @@ class CameraRays {
 
   glm::dmat4 clip_to_world_;  // in double: the far plane is thousands of near planes away
   glm::dvec2 film_;
+  glm::vec3 eye_;
+  bool orthographic_;
 };
 
 }  // namespace glintlab

@@ -24,11 +24,39 @@ struct PathHit {
   glm::vec4 dPdx, dPdy, dNdx, dNdy, dTangentdx, dTangentdy;
   glm::vec4 uv;             // xy: uv; zw: d/dx
   glm::vec4 dUVdy_global;   // xy: d/dy; zw: the sub-pixel's coordinates, as int bits
+  glm::vec4 incoming;       // after a bounce: xyz back along the ray, w = 1
+  glm::vec4 dViewdx, dViewdy;
 };
-static_assert(sizeof(PathHit) == 12 * sizeof(glm::vec4));
+static_assert(sizeof(PathHit) == 15 * sizeof(glm::vec4));
 struct PathShadowRay {
   glm::vec4 dir_dist, diffuse, specular;
 };
+struct PathBounce {
+  glm::vec4 dir_lobe, diffuse, specular;
+};
+
+// A path in flight: its sample, the ray it follows and what the light it gathers from here on is
+// worth to the sample's total and specular images (after its first bounce, the specular image
+// keeps what came by the first vertex's specular lobe).
+struct PathState {
+  std::size_t sample;
+  Ray ray;
+  glm::vec3 total_weight{1.0f};
+  glm::vec3 specular_weight{1.0f};
+};
+
+// A float in [0, 1) from a sample's sub-pixel, the path vertex and the pass's seed (Russian roulette).
+float path_random(glm::ivec2 global, int depth, std::uint32_t seed) {
+  Hasher h;
+  h.value(global.x);
+  h.value(global.y);
+  h.value(depth);
+  h.value(seed);
+  return static_cast<float>(h.digest() >> 40) * (1.0f / 16777216.0f);
+}
+
+// Russian roulette from this vertex on: paths whose weight is below 1 survive with that probability.
+constexpr int kRouletteDepth = 3;
 
 // A tile's shadow rays at most (their records: 96 MiB), so a tile holds fewer samples when the
 // scene has many lights or many samples per light.
@@ -38,6 +66,12 @@ constexpr unsigned kGroupSize = 64;
 // Shadow rays start this far off the surface, along its face normal on the ray's side (relative to
 // the point's distance from the origin: float positions are that precise).
 constexpr float kRayOffset = 1e-4f;
+
+// A ray's origin just off a surface point, along its face normal on the side the ray leaves to.
+glm::vec3 offset_origin(glm::vec3 p, glm::vec3 face_normal, glm::vec3 direction) {
+  const float offset = kRayOffset * (1.0f + std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}));
+  return p + (glm::dot(direction, face_normal) >= 0.0f ? offset : -offset) * face_normal;
+}
 
 void set_uint(GLuint program, const char* name, unsigned v) {
   glProgramUniform1ui(program, glGetUniformLocation(program, name), v);
@@ -147,7 +181,7 @@ void PathReference::shade_tile(const Camera& camera, int width, int height, cons
   // sub-pixel's corner plus the pass's jitter, in GL's y-up rows; differentials per sub-pixel.
   const CameraRays camera_rays(camera, {width, height});
   const float per_subpixel = 1.0f / static_cast<float>(k);
-  std::vector<Ray> rays(count);
+  std::vector<PathState> paths(count);
   std::vector<RayDifferential> differentials(count);
   std::vector<glm::ivec2> global(count);
   for (int y = 0; y < samples.y; ++y)
@@ -163,51 +197,8 @@ void PathReference::shade_tile(const Camera& camera, int width, int height, cons
       r.dOdy *= -per_subpixel;
       r.dDdy *= -per_subpixel;
       differentials[i] = r;
-      rays[i] = Ray{.origin = r.origin, .direction = r.direction};
+      paths[i] = PathState{.sample = i, .ray = Ray{.origin = r.origin, .direction = r.direction}};
     }
-  std::vector<RayHit> hits(count);
-  rays_.intersect(rays, hits, RayCoherence::Coherent);
-
-  // Emitters are drawn as the raster's emitter pass draws them; shapes are shaded on the device,
-  // grouped by material; misses see the background.
-  std::map<int, std::vector<std::size_t>> by_material;
-  std::vector<std::size_t> missed;
-  for (std::size_t i = 0; i < count; ++i) {
-    if (!hits[i].hit()) {
-      missed.push_back(i);
-    } else if (const LightEmitter* e = rays_.emitter(hits[i])) {
-      const bool lit = e->two_sided || glm::dot(rays_.surface(hits[i]).normal, rays[i].direction) < 0.0f;
-      total[i] = glm::vec4(lit ? e->radiance : glm::vec3(0.0f), 1.0f);
-    } else {
-      by_material[rays_.surface(hits[i]).material].push_back(i);
-    }
-  }
-
-  std::vector<PathHit> records;
-  std::vector<std::size_t> sample_of;  // record -> sample
-  std::vector<std::pair<int, std::pair<unsigned, unsigned>>> draws;  // material, (first, count)
-  for (const auto& [material, indices] : by_material) {
-    draws.push_back({material, {static_cast<unsigned>(records.size()), static_cast<unsigned>(indices.size())}});
-    for (std::size_t i : indices) {
-      const SurfacePoint p = rays_.surface(hits[i]);
-      const RayDifferential& r = differentials[i];
-      const SurfaceDerivatives d = rays_.derivatives(hits[i], r.direction, r.dOdx, r.dOdy, r.dDdx, r.dDdy);
-      records.push_back(PathHit{
-          .position = glm::vec4(p.position, 0.0f),
-          .normal = glm::vec4(p.normal, 0.0f),
-          .tangent = p.tangent,
-          .face_normal = glm::vec4(p.geometric_normal, 0.0f),
-          .dPdx = glm::vec4(d.dPdx, 0.0f),
-          .dPdy = glm::vec4(d.dPdy, 0.0f),
-          .dNdx = glm::vec4(d.dNdx, 0.0f),
-          .dNdy = glm::vec4(d.dNdy, 0.0f),
-          .dTangentdx = d.dTdx,
-          .dTangentdy = d.dTdy,
-          .uv = glm::vec4(p.uv, d.dUVdx),
-          .dUVdy_global = glm::vec4(d.dUVdy, std::bit_cast<float>(global[i].x), std::bit_cast<float>(global[i].y))});
-      sample_of.push_back(i);
-    }
-  }
 
   // The frame as the raster reference's pass sees it (passes/reference_estimator.glsl reads
   // target.z = k, tile.z = light samples, tile.w = the pass's seed; frame.glsl the camera).
@@ -218,20 +209,94 @@ void PathReference::shade_tile(const Camera& camera, int width, int height, cons
   frame.target = {samples.x, samples.y, k, 0};
   frame.tile = {tile.region_origin.x * k, tile.region_gl_y * k, pass.light_samples, static_cast<int>(pass.seed & 0x7fffffffu)};
   const gl::Buffer frame_ubo = gl::make_buffer(sizeof(FrameUniforms), &frame);
-  glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frame_ubo.id());
-  scene_.bind_buffers();
-  scene_.resources().bind(scene_.scene_resource_ids(), scene_.resource_context());
+  const std::size_t rays_per_hit =
+      std::max<std::size_t>(1, scene_.resource_context().scene.lights.size() * (2 * static_cast<std::size_t>(pass.light_samples) + 1));
 
-  if (!records.empty()) {
-    const std::size_t rays_per_hit =
-        std::max<std::size_t>(1, scene_.resource_context().scene.lights.size() * (2 * static_cast<std::size_t>(pass.light_samples) + 1));
+  for (int depth = 0; depth < pass.max_depth && !paths.empty(); ++depth) {
+    std::vector<Ray> rays(paths.size());
+    for (std::size_t p = 0; p < paths.size(); ++p) rays[p] = paths[p].ray;
+    std::vector<RayHit> hits(paths.size());
+    rays_.intersect(rays, hits, depth == 0 ? RayCoherence::Coherent : RayCoherence::Incoherent);
+
+    // Camera rays: emitters as the raster's emitter pass draws them, misses the background. After
+    // a bounce both are light the previous vertex's light samples have counted (their MIS
+    // includes the material's own directions), so the path ends there.
+    std::map<int, std::vector<std::size_t>> by_material;  // path indices
+    std::vector<std::size_t> missed;                     // sample indices
+    std::vector<glm::vec4> missed_directions;
+    for (std::size_t p = 0; p < paths.size(); ++p) {
+      const std::size_t i = paths[p].sample;
+      if (!hits[p].hit()) {
+        if (depth == 0) {
+          missed.push_back(i);
+          missed_directions.emplace_back(rays[p].direction, 0.0f);
+        }
+      } else if (const LightEmitter* e = rays_.emitter(hits[p])) {
+        const bool lit = e->two_sided || glm::dot(rays_.surface(hits[p]).normal, rays[p].direction) < 0.0f;
+        if (depth == 0) total[i] = glm::vec4(lit ? e->radiance : glm::vec3(0.0f), 1.0f);
+      } else {
+        by_material[rays_.surface(hits[p]).material].push_back(p);
+      }
+    }
+    if (!missed.empty()) shade_background(missed, std::move(missed_directions), total);
+
+    std::vector<PathHit> records;
+    std::vector<std::size_t> path_of;  // record -> path
+    std::vector<std::pair<int, std::pair<unsigned, unsigned>>> draws;  // material, (first, count)
+    for (const auto& [material, indices] : by_material) {
+      draws.push_back({material, {static_cast<unsigned>(records.size()), static_cast<unsigned>(indices.size())}});
+      for (std::size_t p : indices) {
+        const std::size_t i = paths[p].sample;
+        const SurfacePoint point = rays_.surface(hits[p]);
+        // The camera ray's own differentials at the first vertex; after a bounce, those a camera
+        // ray through the point would have (pbrt-v4's rule: docs/methods.md, "The path tracer").
+        RayDifferential r = differentials[i];
+        RayHit at = hits[p];
+        if (depth > 0) {
+          r = camera_rays.towards(point.position);
+          r.dOdx *= per_subpixel;
+          r.dDdx *= per_subpixel;
+          r.dOdy *= -per_subpixel;
+          r.dDdy *= -per_subpixel;
+          at.t = glm::dot(point.position - r.origin, r.direction);
+        }
+        const SurfaceDerivatives d = rays_.derivatives(at, r.direction, r.dOdx, r.dOdy, r.dDdx, r.dDdy);
+        const bool bounced = depth > 0;
+        records.push_back(PathHit{
+            .position = glm::vec4(point.position, 0.0f),
+            .normal = glm::vec4(point.normal, 0.0f),
+            .tangent = point.tangent,
+            .face_normal = glm::vec4(point.geometric_normal, 0.0f),
+            .dPdx = glm::vec4(d.dPdx, 0.0f),
+            .dPdy = glm::vec4(d.dPdy, 0.0f),
+            .dNdx = glm::vec4(d.dNdx, 0.0f),
+            .dNdy = glm::vec4(d.dNdy, 0.0f),
+            .dTangentdx = d.dTdx,
+            .dTangentdy = d.dTdy,
+            .uv = glm::vec4(point.uv, d.dUVdx),
+            .dUVdy_global = glm::vec4(d.dUVdy, std::bit_cast<float>(global[i].x), std::bit_cast<float>(global[i].y)),
+            .incoming = glm::vec4(-rays[p].direction, bounced ? 1.0f : 0.0f),
+            .dViewdx = glm::vec4(-r.dDdx, 0.0f),
+            .dViewdy = glm::vec4(-r.dDdy, 0.0f)});
+        path_of.push_back(p);
+      }
+    }
+    if (records.empty()) break;
+
+    // Shade every hit on the device.
+    const bool bounce = depth + 1 < pass.max_depth;
+    glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frame_ubo.id());
+    scene_.bind_buffers();
+    scene_.resources().bind(scene_.scene_resource_ids(), scene_.resource_context());
     const gl::Buffer hit_buffer = gl::make_buffer(static_cast<GLsizeiptr>(records.size() * sizeof(PathHit)), records.data());
     const gl::Buffer ray_buffer =
         gl::make_buffer(static_cast<GLsizeiptr>(records.size() * rays_per_hit * sizeof(PathShadowRay)), nullptr);
     const gl::Buffer emission_buffer = gl::make_buffer(static_cast<GLsizeiptr>(records.size() * sizeof(glm::vec4)), nullptr);
+    const gl::Buffer bounce_buffer = gl::make_buffer(static_cast<GLsizeiptr>(records.size() * sizeof(PathBounce)), nullptr);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPathHitsBinding, hit_buffer.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPathShadowRaysBinding, ray_buffer.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPathEmissionBinding, emission_buffer.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPathContinuationBinding, bounce_buffer.id());
     for (const auto& [material, range] : draws) {
       const GLuint program = shading_program(material);
       glUseProgram(program);
@@ -239,16 +304,33 @@ void PathReference::shade_tile(const Camera& camera, int width, int height, cons
       set_uint(program, "uFirst", range.first);
       set_uint(program, "uCount", range.second);
       set_uint(program, "uRaysPerHit", static_cast<unsigned>(rays_per_hit));
+      set_uint(program, "uDepth", static_cast<unsigned>(depth));
+      glProgramUniform1i(program, glGetUniformLocation(program, "uBounce"), bounce ? 1 : 0);
       glDispatchCompute((range.second + kGroupSize - 1) / kGroupSize, 1, 1);
     }
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     std::vector<PathShadowRay> shadow(records.size() * rays_per_hit);
     std::vector<glm::vec4> emission(records.size());
+    std::vector<PathBounce> bounces(records.size());
     glGetNamedBufferSubData(ray_buffer.id(), 0, static_cast<GLsizeiptr>(shadow.size() * sizeof(PathShadowRay)), shadow.data());
     glGetNamedBufferSubData(emission_buffer.id(), 0, static_cast<GLsizeiptr>(emission.size() * sizeof(glm::vec4)),
                             emission.data());
+    glGetNamedBufferSubData(bounce_buffer.id(), 0, static_cast<GLsizeiptr>(bounces.size() * sizeof(PathBounce)),
+                            bounces.data());
     check_gl("shading the path tracer's hits");
 
+    // What this vertex adds to its sample: emission, and each light sample whose light is visible.
+    auto add = [&](std::size_t record, glm::vec3 diffuse, glm::vec3 specular_part) {
+      const PathState& path = paths[path_of[record]];
+      const glm::vec3 sum = diffuse + specular_part;
+      total[path.sample] += glm::vec4(path.total_weight * sum, 0.0f);
+      specular[path.sample] += glm::vec4(depth == 0 ? specular_part : path.specular_weight * sum, 0.0f);
+    };
+    for (std::size_t h = 0; h < records.size(); ++h) {
+      const PathState& path = paths[path_of[h]];
+      total[path.sample] += glm::vec4(path.total_weight * glm::vec3(emission[h]), 0.0f);
+      if (depth > 0) specular[path.sample] += glm::vec4(path.specular_weight * glm::vec3(emission[h]), 0.0f);
+    }
     // The shadow rays: from just off the surface on the ray's side, to just short of the light
     // (lights are exact shapes of their own, not in the BVH's shapes: kSeesShapes).
     std::vector<Ray> shadow_rays;
@@ -257,40 +339,67 @@ void PathReference::shade_tile(const Camera& camera, int width, int height, cons
       const float dist = shadow[r].dir_dist.w;
       if (!(dist > 0.0f)) continue;
       const PathHit& h = records[r / rays_per_hit];
-      const glm::vec3 dir(shadow[r].dir_dist), n(h.face_normal), p(h.position);
-      const float offset = kRayOffset * (1.0f + std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}));
-      const glm::vec3 origin = p + (glm::dot(dir, n) >= 0.0f ? offset : -offset) * n;
-      shadow_rays.push_back(Ray{.origin = origin, .direction = dir, .t_far = dist * (1.0f - 1e-4f), .sees = kSeesShapes});
+      shadow_rays.push_back(Ray{.origin = offset_origin(glm::vec3(h.position), glm::vec3(h.face_normal), glm::vec3(shadow[r].dir_dist)),
+                                .direction = glm::vec3(shadow[r].dir_dist),
+                                .t_far = dist * (1.0f - 1e-4f),
+                                .sees = kSeesShapes});
       shadow_of.push_back(r);
     }
     std::vector<std::uint8_t> blocked(shadow_rays.size());
     rays_.occluded(shadow_rays, blocked, RayCoherence::Incoherent);
-    for (std::size_t j = 0; j < shadow_rays.size(); ++j) {
-      if (blocked[j]) continue;
-      const PathShadowRay& s = shadow[shadow_of[j]];
-      const std::size_t i = sample_of[shadow_of[j] / rays_per_hit];
-      total[i] += glm::vec4(glm::vec3(s.diffuse) + glm::vec3(s.specular), 0.0f);
-      specular[i] += glm::vec4(glm::vec3(s.specular), 0.0f);
-    }
-    for (std::size_t h = 0; h < records.size(); ++h) total[sample_of[h]] += glm::vec4(glm::vec3(emission[h]), 0.0f);
-  }
+    for (std::size_t j = 0; j < shadow_rays.size(); ++j)
+      if (!blocked[j]) {
+        const PathShadowRay& ray = shadow[shadow_of[j]];
+        add(shadow_of[j] / rays_per_hit, glm::vec3(ray.diffuse), glm::vec3(ray.specular));
+      }
 
-  if (!missed.empty() && scene_.background_light() >= 0) {
-    std::vector<glm::vec4> directions;
-    for (std::size_t i : missed) directions.emplace_back(rays[i].direction, 0.0f);
-    const gl::Buffer buffer = gl::make_buffer(static_cast<GLsizeiptr>(directions.size() * sizeof(glm::vec4)),
-                                              directions.data());
-    const GLuint program = shaders_.compute("passes/path_background.comp");
-    glUseProgram(program);
-    glProgramUniform1i(program, glGetUniformLocation(program, "uLight"), scene_.background_light());
-    set_uint(program, "uCount", static_cast<unsigned>(directions.size()));
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPathHitsBinding, buffer.id());
-    glDispatchCompute((static_cast<unsigned>(directions.size()) + kGroupSize - 1) / kGroupSize, 1, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    glGetNamedBufferSubData(buffer.id(), 0, static_cast<GLsizeiptr>(directions.size() * sizeof(glm::vec4)), directions.data());
-    check_gl("the path tracer's background");
-    for (std::size_t j = 0; j < missed.size(); ++j) total[missed[j]] = glm::vec4(glm::vec3(directions[j]), 1.0f);
+    // The bounces: the paths that go on, with Russian roulette from kRouletteDepth on.
+    if (!bounce) break;
+    std::vector<PathState> next;
+    for (std::size_t h = 0; h < records.size(); ++h) {
+      const PathBounce& b = bounces[h];
+      if (b.dir_lobe.w < 0.5f) continue;
+      PathState path = paths[path_of[h]];
+      const glm::vec3 weight = glm::vec3(b.diffuse) + glm::vec3(b.specular);
+      if (depth == 0) {
+        path.total_weight = weight;
+        path.specular_weight = glm::vec3(b.specular);
+      } else {
+        path.total_weight *= weight;
+        path.specular_weight *= weight;
+      }
+      if (depth + 1 >= kRouletteDepth) {
+        const float survive = std::min(1.0f, std::max({path.total_weight.x, path.total_weight.y, path.total_weight.z}));
+        if (!(survive > 0.0f) || path_random(global[path.sample], depth, pass.seed) >= survive) continue;
+        path.total_weight /= survive;
+        path.specular_weight /= survive;
+      }
+      const glm::vec3 dir(b.dir_lobe);
+      path.ray = Ray{.origin = offset_origin(glm::vec3(records[h].position), glm::vec3(records[h].face_normal), dir),
+                     .direction = dir};
+      next.push_back(path);
+    }
+    paths = std::move(next);
   }
+}
+
+void PathReference::shade_background(const std::vector<std::size_t>& missed, std::vector<glm::vec4> directions,
+                                     std::vector<glm::vec4>& total) {
+  if (scene_.background_light() < 0) return;
+  const gl::Buffer buffer = gl::make_buffer(static_cast<GLsizeiptr>(directions.size() * sizeof(glm::vec4)),
+                                            directions.data());
+  const GLuint program = shaders_.compute("passes/path_background.comp");
+  glUseProgram(program);
+  glProgramUniform1i(program, glGetUniformLocation(program, "uLight"), scene_.background_light());
+  set_uint(program, "uCount", static_cast<unsigned>(directions.size()));
+  scene_.bind_buffers();
+  scene_.resources().bind(scene_.scene_resource_ids(), scene_.resource_context());  // the environment's maps
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPathHitsBinding, buffer.id());
+  glDispatchCompute((static_cast<unsigned>(directions.size()) + kGroupSize - 1) / kGroupSize, 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glGetNamedBufferSubData(buffer.id(), 0, static_cast<GLsizeiptr>(directions.size() * sizeof(glm::vec4)), directions.data());
+  check_gl("the path tracer's background");
+  for (std::size_t j = 0; j < missed.size(); ++j) total[missed[j]] = glm::vec4(glm::vec3(directions[j]), 1.0f);
 }
 
 }  // namespace glintlab

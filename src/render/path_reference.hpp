@@ -30,9 +30,14 @@ class PathReference final : public ReferenceBackend {
   struct Tile;
   /// The shading program of a material's variant.
   GLuint shading_program(int material);
-  /// Shades one tile's samples: their radiance in `total` and `specular` (GL's row order).
+  /// Shades one tile's samples: their radiance in `total` and `specular` (GL's row order), path
+  /// vertex by path vertex.
   void shade_tile(const Camera& camera, int width, int height, const ReferencePass& pass, const Tile& tile,
                   std::vector<glm::vec4>& total, std::vector<glm::vec4>& specular);
+  /// The background (a visible environment) that camera rays in `directions` see, in `total` at
+  /// the samples `missed`.
+  void shade_background(const std::vector<std::size_t>& missed, std::vector<glm::vec4> directions,
+                        std::vector<glm::vec4>& total);
 
   ShaderLibrary& shaders_;
   const GpuScene& scene_;

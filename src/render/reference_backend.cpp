@@ -51,7 +51,7 @@ glm::vec2 reference_pass_jitter(int frame_seed, int pass) {
 
 ReferencePass ReferencePass::of(const ReferenceSettings& settings, int index) {
   return {settings.subpixels(), settings.effective_light_samples(), reference_pass_seed(settings.seed, index),
-          reference_pass_jitter(settings.seed, index), settings.filter, settings.region};
+          reference_pass_jitter(settings.seed, index), settings.filter, settings.region, settings.max_depth};
 }
 
 FilmRegion FilmRegion::within(int film_width, int film_height) const {

@@ -44,6 +44,7 @@ struct ReferenceSettings {
   PixelFilter filter;      ///< --reference-filter; default: the box of each pixel's own samples
   FilmRegion region;       ///< the pixels rendered (--tile); empty: the whole film. A pixel's samples
                            ///< do not depend on the region: tiles put together are the whole frame.
+  int max_depth = 1;       ///< --max-depth: path vertices lit (1: direct light); backends that bounce
   /// k: the largest k <= 32 with k * k dividing spp and at most spp / 4 (so that there are at
   /// least four passes to estimate the reference's own error from), or 1.
   [[nodiscard]] int subpixels() const;
@@ -52,6 +53,7 @@ struct ReferenceSettings {
 };
 
 constexpr int kMaxReferenceSpp = 65536;
+constexpr int kMaxPathDepth = 64;
 /// Throws InputError unless spp is in 1 .. kMaxReferenceSpp.
 void validate_spp(int spp);
 /// The sample seed and the sub-pixel jitter in [0, 1)^2 of one pass of a frame's reference.
@@ -68,6 +70,7 @@ struct ReferencePass {
   glm::vec2 jitter{0.5f};
   PixelFilter filter;
   FilmRegion region;  ///< the pixels to render; empty: the whole film
+  int max_depth = 1;  ///< path vertices lit (the path backend; 1: direct light)
 
   /// Pass `index` of a frame's reference sampled with `settings`.
   static ReferencePass of(const ReferenceSettings& settings, int index);

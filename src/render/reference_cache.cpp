@@ -38,6 +38,10 @@ std::uint64_t ReferenceCache::key(const Scene& scene, const Camera& camera, int 
     h.text("region");
     for (int v : {r.x, r.y, r.width, r.height}) h.value(v);
   }
+  if (settings.max_depth != 1) {
+    h.text("max_depth");
+    h.value(settings.max_depth);
+  }
   h.text(backend.id());
   h.value(backend.estimator_hash());
   h.text(renderer);

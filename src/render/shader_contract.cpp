@@ -291,6 +291,7 @@ ShaderDefines contract_defines() {
       {"PATH_HITS_BINDING", std::to_string(kPathHitsBinding)},
       {"PATH_SHADOW_RAYS_BINDING", std::to_string(kPathShadowRaysBinding)},
       {"PATH_EMISSION_BINDING", std::to_string(kPathEmissionBinding)},
+      {"PATH_CONTINUATION_BINDING", std::to_string(kPathContinuationBinding)},
       {"NORMAL_MAP_UNIT", std::to_string(kNormalMapUnit)},
       {"SLOPE_MOMENTS_UNIT", std::to_string(kSlopeMomentsUnit)},
       {"SLOPE_CROSS_MOMENT_UNIT", std::to_string(kSlopeCrossMomentUnit)},

@@ -339,3 +339,11 @@ TEST_F(Cli, BenchWithoutWarmUpTimesItsFirstFrameRight) {
   for (const auto& m : bench.at("methods"))
     EXPECT_LE(m.at("gpu_ms_median").get<double>(), m.at("wall_ms_median").get<double>() + 1.0) << m.dump();
 }
+
+TEST_F(Cli, MaxDepthOutsideItsRangeOrWithoutThePathBackendIsBadInput) {
+  const std::string scene = " --scene '" + write("s.toml", kScene).string() + "'";
+  expect_bad_input("render" + scene + " --reference=4 --reference-backend path --max-depth 0", {"--max-depth 0", "1 .. 64"});
+  expect_bad_input("render" + scene + " --reference=4 --reference-backend path --max-depth 65", {"--max-depth 65", "1 .. 64"});
+  expect_bad_input("render" + scene + " --reference=4 --max-depth 2",
+                   {"--max-depth 2 with --reference-backend raster", "direct light only", "--reference-backend path"});
+}

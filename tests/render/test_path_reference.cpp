@@ -7,7 +7,11 @@
 #include <cmath>
 #include <functional>
 
+#include <Eigen/Dense>
+
 #include "gl_fixture.hpp"
+#include "tables/dfg/dfg.hpp"
+#include "tables/ltc/ltc_targets.hpp"
 
 using namespace glintlab;
 using namespace glintlab::test;
@@ -125,4 +129,131 @@ TEST(PathReference, ASpheresUmbraIsDarkAndEverythingElseIsTheRasterReference) {
     }
   EXPECT_GT(dark, 40);
   EXPECT_GT(lit, 500);
+}
+
+namespace {
+
+ReferenceFrame render_path(SceneFixture& f, int spp, int max_depth) {
+  const auto backend = make_reference_backend("path", {shaders(), *f.gpu, *f.renderer});
+  ReferenceSettings s;
+  s.spp = spp;
+  s.max_depth = max_depth;
+  return render_reference(*backend, f.scene.camera, f.scene.film.width, f.scene.film.height, s);
+}
+
+// glintlab's microfacet BRDF (shaders/core/brdf.glsl's model) written here from its formulas: Lambert
+// of albedo `a` plus GGX with the height-correlated Smith G2 and Schlick's F of f0 = 0.
+double microfacet_brdf(const glm::dvec3& wo, const glm::dvec3& wi, double a, double alpha) {
+  const glm::dvec3 h = glm::normalize(wo + wi);
+  const double g2 = 1.0 / (1.0 + ggx_lambda(wo, alpha) + ggx_lambda(wi, alpha));
+  return a / 3.14159265358979 + ggx_ndf(h, alpha) * g2 * std::pow(1.0 - glm::dot(wo, h), 5.0) / (4.0 * wo.z * wi.z);
+}
+
+}  // namespace
+
+// A sphere of Lambert albedo a and f0 = 0 under a uniform environment of radiance 1: with direct
+// light alone each point shows its directional albedo, a + B(n.v) (B: the specular lobe's, from
+// the dfg table's own quadrature), and the background 1; a convex shape sends no light to itself,
+// so more bounces change nothing at all.
+TEST(PathReference, AConvexFurnaceShowsTheMaterialsAlbedo) {
+  const double a = 0.6, alpha = 0.5;
+  Scene scene = TestScene()
+                    .film(24, 24)
+                    .orthographic_camera({0, 0, 5}, {0, 0, 0}, 2.4)
+                    .material("m", {{"diffuse", a}, {"f0", 0.0}, {"alpha", alpha}})
+                    .sphere("m", {{"radius", 1}, {"segments", 128}})
+                    .light("environment", {{"radiance", 1}})
+                    .scene();
+  SceneFixture f(std::move(scene));
+  const ReferenceFrame direct = render_path(f, 64, 1), bounced = render_path(f, 64, 4);
+  const Image stated = direct.stated_error();
+  const double pixel = 2.4 / 24.0;
+  int inside = 0, outside = 0;
+  double sum_difference = 0, sum_variance = 0;
+  for (int y = 0; y < 24; ++y)
+    for (int x = 0; x < 24; ++x) {
+      // The pixel's expected value: a + B(mu) averaged over 4 x 4 points of it (mu = n.v on the sphere).
+      double expected = 0, nearest = 1e9, farthest = 0;
+      for (int sy = 0; sy < 4; ++sy)
+        for (int sx = 0; sx < 4; ++sx) {
+          const double px = -1.2 + (x + (sx + 0.5) / 4.0) * pixel, py = 1.2 - (y + (sy + 0.5) / 4.0) * pixel;
+          const double r2 = px * px + py * py;
+          expected += r2 < 1.0 ? a + dfg_terms(DfgNdf::Ggx, std::sqrt(1.0 - r2), alpha).b : 0.0;
+        }
+      for (int cy = 0; cy <= 1; ++cy)
+        for (int cx = 0; cx <= 1; ++cx) {
+          const double r = std::hypot(-1.2 + (x + cx) * pixel, 1.2 - (y + cy) * pixel);
+          nearest = std::min(nearest, r);
+          farthest = std::max(farthest, r);
+        }
+      const glm::vec3 value = direct.mean.total.at(x, y);
+      EXPECT_EQ(value, glm::vec3(bounced.mean.total.at(x, y))) << "a bounce off a convex shape found light, pixel " << x << ", " << y;
+      if (farthest < 0.97) {  // on the sphere, away from its silhouette
+        const double sigma = direct.standard_error.at(x, y).x;
+        EXPECT_NEAR(value.x, expected / 16.0, 3.0 * stated.at(x, y).x + 0.01) << "pixel " << x << ", " << y;
+        sum_difference += value.x - expected / 16.0;
+        sum_variance += sigma * sigma;
+        ++inside;
+      } else if (nearest > 1.03) {
+        EXPECT_NEAR(value.x, 1.0, 1e-5) << "the background, pixel " << x << ", " << y;
+        ++outside;
+      }
+    }
+  ASSERT_GT(inside, 250);
+  ASSERT_GT(outside, 100);
+  // The mean over the sphere's pixels, within 3 of its standard errors and the tessellation's 0.3%.
+  EXPECT_LT(std::abs(sum_difference / inside), 3.0 * std::sqrt(sum_variance) / inside + 3e-3);
+}
+
+// The camera at the centre of a closed sphere whose wall has Lambert albedo a, f0 = 0 and emits
+// radiance E: by symmetry the radiance leaving the wall depends only on its angle to the normal,
+// and light from the wall at incidence mu left the other end of the chord at the same angle, so
+//   L(mu_o) = E + int_0^1 K(mu_o, mu_i) L(mu_i) mu_i dmu_i,  K = int_0^2pi f(wo, wi) dphi,
+// solved here on its own grid; every camera ray meets the wall at mu_o = 1. The path tracer's
+// image is that solution once its paths are long enough, and E alone without bounces.
+TEST(PathReference, InsideAGlowingSphereTheRadianceIsTheInterreflectionsSolution) {
+  const double a = 0.5, alpha = 0.5, emission = 1.0;
+  Scene scene = TestScene()
+                    .film(8, 8)
+                    .camera({0, 0, 0}, {0, 0, -1}, 60)
+                    .material("wall", {{"diffuse", a}, {"f0", 0.0}, {"alpha", alpha}})
+                    .sphere("wall", {{"radius", 2}, {"segments", 128}})
+                    .point_light({0, 10, 0})  // outside: behind every point of the wall, and shadowed by it
+                    .scene();
+  scene.materials[0].emission = glm::vec3(static_cast<float>(emission));
+
+  // The integral equation by the Nystrom method: midpoints in mu and in phi.
+  constexpr int kMu = 128, kPhi = 256;
+  const double pi = 3.14159265358979;
+  auto kernel = [&](double mu_o, double mu_i) {
+    const glm::dvec3 wo(std::sqrt(1.0 - mu_o * mu_o), 0.0, mu_o);
+    double sum = 0;
+    for (int k = 0; k < kPhi; ++k) {
+      const double phi = 2.0 * pi * (k + 0.5) / kPhi, s = std::sqrt(1.0 - mu_i * mu_i);
+      sum += microfacet_brdf(wo, {s * std::cos(phi), s * std::sin(phi), mu_i}, a, alpha);
+    }
+    return sum * 2.0 * pi / kPhi;
+  };
+  Eigen::MatrixXd system = Eigen::MatrixXd::Identity(kMu, kMu);
+  std::vector<double> mu(kMu);
+  for (int i = 0; i < kMu; ++i) mu[static_cast<std::size_t>(i)] = (i + 0.5) / kMu;
+  for (int i = 0; i < kMu; ++i)
+    for (int j = 0; j < kMu; ++j) system(i, j) -= kernel(mu[i], mu[j]) * mu[j] / kMu;
+  const Eigen::VectorXd wall = system.partialPivLu().solve(Eigen::VectorXd::Constant(kMu, emission));
+  double truth = emission;
+  for (int j = 0; j < kMu; ++j) truth += kernel(1.0, mu[j]) * mu[j] / kMu * wall(j);
+  ASSERT_GT(truth, 1.5 * emission) << "the interreflections must matter";
+
+  SceneFixture f(std::move(scene));
+  const ReferenceFrame none = render_path(f, 16, 1), converged = render_path(f, 256, 24);
+  double sum = 0, variance = 0;
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x) {
+      EXPECT_NEAR(none.mean.total.at(x, y).x, emission, 1e-5) << "no bounce: the wall's own emission";
+      sum += converged.mean.total.at(x, y).x;
+      variance += std::pow(converged.standard_error.at(x, y).x, 2);
+    }
+  const double mean = sum / 64.0, error = std::sqrt(variance) / 64.0;
+  std::printf("integrating sphere: path %.4f +- %.4f, solution %.4f\n", mean, error, truth);
+  EXPECT_NEAR(mean, truth, 3.0 * error + 0.005 * truth);
 }

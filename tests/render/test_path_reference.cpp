@@ -59,8 +59,8 @@ Scene keeping(const std::string& name, const std::function<bool(std::size_t, con
 }  // namespace
 
 // Scenes where nothing casts a shadow (one plane, or one convex shape) under point, directional,
-// quad, disk, sphere and environment lights, with microfacet, normal-mapped, binomial-glints and
-// normal-map-glints materials: the two backends run one estimator with the same streams at the same
+// quad, disk, sphere and environment lights, with microfacet, normal-mapped, glinty, binomial-glints
+// and normal-map-glints materials: the two backends run one estimator with the same streams at the same
 // sub-pixel points, so they differ only by their surfaces' float rounding (Embree's interpolation
 // against the rasteriser's), far below the references' own noise, and not in energy.
 TEST(PathReference, DrawsWhatTheRasterReferenceDrawsWhereNothingCastsAShadow) {
@@ -68,6 +68,7 @@ TEST(PathReference, DrawsWhatTheRasterReferenceDrawsWhereNothingCastsAShadow) {
       {"glint-area-lights without its sphere", keeping("glint-area-lights", [](std::size_t, const Shape& s) { return s.type != "sphere"; })},
       {"environment, its first shape", keeping("environment", [](std::size_t i, const Shape&) { return i == 0; })},
       {"every-family, its first shape", keeping("every-family", [](std::size_t i, const Shape&) { return i == 0; })},
+      {"glint-sphere without its backdrop", keeping("glint-sphere", [](std::size_t, const Shape& s) { return s.type == "sphere"; })},
       {"bumpy-plane", load_scene("builtin:bumpy-plane")},
       {"normal-glints-noise", load_scene("builtin:normal-glints-noise")},
   };

@@ -4,6 +4,8 @@
 #include <bit>
 #include <cmath>
 #include <set>
+#include <span>
+#include <tbb/parallel_for.h>
 
 #include "core/error.hpp"
 #include "core/hash.hpp"
@@ -31,6 +33,7 @@ static_assert(sizeof(PathHit) == 15 * sizeof(glm::vec4));
 struct PathShadowRay {
   glm::vec4 dir_dist, diffuse, specular;
 };
+static_assert(sizeof(PathShadowRay) == 3 * sizeof(glm::vec4));  // read back into vec4s (shadow_host_)
 struct PathBounce {
   glm::vec4 dir_lobe, diffuse, specular;
 };
@@ -107,6 +110,14 @@ std::uint64_t PathReference::estimator_hash() const {
   }
   estimator_hash_ = h.digest();
   return estimator_hash_;
+}
+
+GLuint PathReference::DeviceBuffer::hold(std::size_t bytes) {
+  if (bytes > capacity || !buffer) {
+    capacity = std::max<std::size_t>(bytes, 256);
+    buffer = gl::make_buffer(static_cast<GLsizeiptr>(capacity), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  }
+  return buffer.id();
 }
 
 GLuint PathReference::shading_program(int material) {
@@ -240,47 +251,46 @@ void PathReference::shade_tile(const Camera& camera, int width, int height, cons
     }
     if (!missed.empty()) shade_background(missed, std::move(missed_directions), total);
 
-    std::vector<PathHit> records;
     std::vector<std::size_t> path_of;  // record -> path
     std::vector<std::pair<int, std::pair<unsigned, unsigned>>> draws;  // material, (first, count)
     for (const auto& [material, indices] : by_material) {
-      draws.push_back({material, {static_cast<unsigned>(records.size()), static_cast<unsigned>(indices.size())}});
-      for (std::size_t p : indices) {
-        const std::size_t i = paths[p].sample;
-        const SurfacePoint point = rays_.surface(hits[p]);
-        // The camera ray's own differentials at the first vertex; after a bounce, those a camera
-        // ray through the point would have (pbrt-v4's rule: docs/methods.md, "The path tracer").
-        RayDifferential r = differentials[i];
-        RayHit at = hits[p];
-        if (depth > 0) {
-          r = camera_rays.towards(point.position);
-          r.dOdx *= per_subpixel;
-          r.dDdx *= per_subpixel;
-          r.dOdy *= -per_subpixel;
-          r.dDdy *= -per_subpixel;
-          at.t = glm::dot(point.position - r.origin, r.direction);
-        }
-        const SurfaceDerivatives d = rays_.derivatives(at, r.direction, r.dOdx, r.dOdy, r.dDdx, r.dDdy);
-        const bool bounced = depth > 0;
-        records.push_back(PathHit{
-            .position = glm::vec4(point.position, 0.0f),
-            .normal = glm::vec4(point.normal, 0.0f),
-            .tangent = point.tangent,
-            .face_normal = glm::vec4(point.geometric_normal, 0.0f),
-            .dPdx = glm::vec4(d.dPdx, 0.0f),
-            .dPdy = glm::vec4(d.dPdy, 0.0f),
-            .dNdx = glm::vec4(d.dNdx, 0.0f),
-            .dNdy = glm::vec4(d.dNdy, 0.0f),
-            .dTangentdx = d.dTdx,
-            .dTangentdy = d.dTdy,
-            .uv = glm::vec4(point.uv, d.dUVdx),
-            .dUVdy_global = glm::vec4(d.dUVdy, std::bit_cast<float>(global[i].x), std::bit_cast<float>(global[i].y)),
-            .incoming = glm::vec4(-rays[p].direction, bounced ? 1.0f : 0.0f),
-            .dViewdx = glm::vec4(-r.dDdx, 0.0f),
-            .dViewdy = glm::vec4(-r.dDdy, 0.0f)});
-        path_of.push_back(p);
-      }
+      draws.push_back({material, {static_cast<unsigned>(path_of.size()), static_cast<unsigned>(indices.size())}});
+      path_of.insert(path_of.end(), indices.begin(), indices.end());
     }
+    std::vector<PathHit> records(path_of.size());
+    tbb::parallel_for(std::size_t{0}, records.size(), [&](std::size_t h) {
+      const std::size_t p = path_of[h], i = paths[p].sample;
+      const SurfacePoint point = rays_.surface(hits[p]);
+      // The camera ray's own differentials at the first vertex; after a bounce, those a camera
+      // ray through the point would have (pbrt-v4's rule: docs/methods.md, "The path tracer").
+      RayDifferential r = differentials[i];
+      RayHit at = hits[p];
+      if (depth > 0) {
+        r = camera_rays.towards(point.position);
+        r.dOdx *= per_subpixel;
+        r.dDdx *= per_subpixel;
+        r.dOdy *= -per_subpixel;
+        r.dDdy *= -per_subpixel;
+        at.t = glm::dot(point.position - r.origin, r.direction);
+      }
+      const SurfaceDerivatives d = rays_.derivatives(at, r.direction, r.dOdx, r.dOdy, r.dDdx, r.dDdy);
+      records[h] = PathHit{
+          .position = glm::vec4(point.position, 0.0f),
+          .normal = glm::vec4(point.normal, 0.0f),
+          .tangent = point.tangent,
+          .face_normal = glm::vec4(point.geometric_normal, 0.0f),
+          .dPdx = glm::vec4(d.dPdx, 0.0f),
+          .dPdy = glm::vec4(d.dPdy, 0.0f),
+          .dNdx = glm::vec4(d.dNdx, 0.0f),
+          .dNdy = glm::vec4(d.dNdy, 0.0f),
+          .dTangentdx = d.dTdx,
+          .dTangentdy = d.dTdy,
+          .uv = glm::vec4(point.uv, d.dUVdx),
+          .dUVdy_global = glm::vec4(d.dUVdy, std::bit_cast<float>(global[i].x), std::bit_cast<float>(global[i].y)),
+          .incoming = glm::vec4(-rays[p].direction, depth > 0 ? 1.0f : 0.0f),
+          .dViewdx = glm::vec4(-r.dDdx, 0.0f),
+          .dViewdy = glm::vec4(-r.dDdy, 0.0f)};
+    });
     if (records.empty()) break;
 
     // Shade every hit on the device.
@@ -288,15 +298,16 @@ void PathReference::shade_tile(const Camera& camera, int width, int height, cons
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frame_ubo.id());
     scene_.bind_buffers();
     scene_.resources().bind(scene_.scene_resource_ids(), scene_.resource_context());
-    const gl::Buffer hit_buffer = gl::make_buffer(static_cast<GLsizeiptr>(records.size() * sizeof(PathHit)), records.data());
-    const gl::Buffer ray_buffer =
-        gl::make_buffer(static_cast<GLsizeiptr>(records.size() * rays_per_hit * sizeof(PathShadowRay)), nullptr);
-    const gl::Buffer emission_buffer = gl::make_buffer(static_cast<GLsizeiptr>(records.size() * sizeof(glm::vec4)), nullptr);
-    const gl::Buffer bounce_buffer = gl::make_buffer(static_cast<GLsizeiptr>(records.size() * sizeof(PathBounce)), nullptr);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPathHitsBinding, hit_buffer.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPathShadowRaysBinding, ray_buffer.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPathEmissionBinding, emission_buffer.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPathContinuationBinding, bounce_buffer.id());
+    const std::size_t shadow_count = records.size() * rays_per_hit;
+    const GLuint hit_buffer = hits_.hold(records.size() * sizeof(PathHit));
+    glNamedBufferSubData(hit_buffer, 0, static_cast<GLsizeiptr>(records.size() * sizeof(PathHit)), records.data());
+    const GLuint ray_buffer = shadow_rays_.hold(shadow_count * sizeof(PathShadowRay));
+    const GLuint emission_buffer = emission_.hold(records.size() * sizeof(glm::vec4));
+    const GLuint bounce_buffer = bounces_.hold(records.size() * sizeof(PathBounce));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPathHitsBinding, hit_buffer);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPathShadowRaysBinding, ray_buffer);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPathEmissionBinding, emission_buffer);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPathContinuationBinding, bounce_buffer);
     for (const auto& [material, range] : draws) {
       const GLuint program = shading_program(material);
       glUseProgram(program);
@@ -309,14 +320,13 @@ void PathReference::shade_tile(const Camera& camera, int width, int height, cons
       glDispatchCompute((range.second + kGroupSize - 1) / kGroupSize, 1, 1);
     }
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    std::vector<PathShadowRay> shadow(records.size() * rays_per_hit);
+    if (shadow_host_.size() < 3 * shadow_count) shadow_host_.resize(3 * shadow_count);
+    const std::span<const PathShadowRay> shadow(reinterpret_cast<const PathShadowRay*>(shadow_host_.data()), shadow_count);
     std::vector<glm::vec4> emission(records.size());
     std::vector<PathBounce> bounces(records.size());
-    glGetNamedBufferSubData(ray_buffer.id(), 0, static_cast<GLsizeiptr>(shadow.size() * sizeof(PathShadowRay)), shadow.data());
-    glGetNamedBufferSubData(emission_buffer.id(), 0, static_cast<GLsizeiptr>(emission.size() * sizeof(glm::vec4)),
-                            emission.data());
-    glGetNamedBufferSubData(bounce_buffer.id(), 0, static_cast<GLsizeiptr>(bounces.size() * sizeof(PathBounce)),
-                            bounces.data());
+    glGetNamedBufferSubData(ray_buffer, 0, static_cast<GLsizeiptr>(shadow_count * sizeof(PathShadowRay)), shadow_host_.data());
+    glGetNamedBufferSubData(emission_buffer, 0, static_cast<GLsizeiptr>(emission.size() * sizeof(glm::vec4)), emission.data());
+    glGetNamedBufferSubData(bounce_buffer, 0, static_cast<GLsizeiptr>(bounces.size() * sizeof(PathBounce)), bounces.data());
     check_gl("shading the path tracer's hits");
 
     // What this vertex adds to its sample: emission, and each light sample whose light is visible.
@@ -335,6 +345,8 @@ void PathReference::shade_tile(const Camera& camera, int width, int height, cons
     // (lights are exact shapes of their own, not in the BVH's shapes: kSeesShapes).
     std::vector<Ray> shadow_rays;
     std::vector<std::size_t> shadow_of;
+    shadow_rays.reserve(shadow_count);
+    shadow_of.reserve(shadow_count);
     for (std::size_t r = 0; r < shadow.size(); ++r) {
       const float dist = shadow[r].dir_dist.w;
       if (!(dist > 0.0f)) continue;

@@ -39,9 +39,20 @@ class PathReference final : public ReferenceBackend {
   void shade_background(const std::vector<std::size_t>& missed, std::vector<glm::vec4> directions,
                         std::vector<glm::vec4>& total);
 
+  /// A storage buffer kept from tile to tile and only grown: a tile's shadow rays take up to 96 MiB,
+  /// and allocating (and clearing) them per tile cost more than shading them.
+  struct DeviceBuffer {
+    gl::Buffer buffer;
+    std::size_t capacity = 0;
+    /// The buffer, with room for at least `bytes`.
+    GLuint hold(std::size_t bytes);
+  };
+
   ShaderLibrary& shaders_;
   const GpuScene& scene_;
   RayScene rays_;
+  DeviceBuffer hits_, shadow_rays_, emission_, bounces_;
+  std::vector<glm::vec4> shadow_host_;  // the shadow rays read back, three vec4 each (grown, never shrunk)
   std::map<int, GLuint> programs_;  // by material
   mutable std::uint64_t estimator_hash_ = 0;
 };

@@ -1,9 +1,12 @@
 #!/usr/bin/env python3
 """Regenerates docs/ray-timings.md: the path tracer's ray queries alone (Embree, no shading) on every
-built-in scene, from one run of benchmarks/bench_ray_queries (Google Benchmark, JSON out).
-    tools/ray-timings.py [--bench build/release/benchmarks/bench_ray_queries] [--out docs/ray-timings.md]
-                         [--min-time 0.5]
-About a minute on 2 cores. Python 3.11's standard library only."""
+built-in scene, from one run of benchmarks/bench_ray_queries (Google Benchmark, JSON out); and the
+whole path tracer's samples per second on every built-in scene beside the raster reference's, each
+timed as `glintlab render --reference` at two sample counts (the difference cancels start-up,
+scene loading and table uploads; a warm-up run first fills the GL driver's shader cache).
+    tools/ray-timings.py [--bench build/release/benchmarks/bench_ray_queries] [--glintlab build/release/glintlab]
+                         [--out docs/ray-timings.md] [--min-time 0.5] [--no-path]
+About six minutes on 2 cores. Python 3.11's standard library only."""
 
 import argparse
 import json
@@ -11,11 +14,43 @@ import platform
 import statistics
 import subprocess
 import sys
+import tempfile
+import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 # Issue 29's floor, rays per second per core.
 FLOOR = {"camera": 4e6, "secondary": 2e6}
+# The whole tracer: film, the two sample counts whose difference is timed, and the backends.
+PATH_FILM = (128, 72)
+PATH_SPP = (16, 256)
+PATH_CONFIGS = [("raster", ["--reference-backend", "raster"]),
+                ("path, direct light", ["--reference-backend", "path"]),
+                ("path, 4 vertices", ["--reference-backend", "path", "--max-depth", "4"])]
+
+
+def render_seconds(glintlab, scene, spp, config, out_dir):
+    """Wall seconds of one `glintlab render --reference`, no reference cache, one light sample."""
+    command = [glintlab, "render", "-q", "--no-cache", "--scene", f"builtin:{scene}", "--width", str(PATH_FILM[0]),
+               "--height", str(PATH_FILM[1]), f"--reference={spp}", "--light-samples", "1", *config,
+               "-o", str(Path(out_dir) / "reference.exr")]
+    start = time.monotonic()
+    subprocess.run(command, check=True, capture_output=True)
+    return time.monotonic() - start
+
+
+def path_rates(glintlab, scenes):
+    """Samples per second of each config on each scene: the extra samples over the extra seconds."""
+    rates = {}
+    with tempfile.TemporaryDirectory() as out_dir:
+        for scene in scenes:
+            for name, config in PATH_CONFIGS:
+                render_seconds(glintlab, scene, 4, config, out_dir)  # the shader cache warm
+                low, high = (render_seconds(glintlab, scene, spp, config, out_dir) for spp in PATH_SPP)
+                samples = (PATH_SPP[1] - PATH_SPP[0]) * PATH_FILM[0] * PATH_FILM[1]
+                rates[(scene, name)] = samples / max(high - low, 1e-3)
+                print(f"{scene} {name}: {rates[(scene, name)] / 1e6:.2f} M samples/s", file=sys.stderr)
+    return rates
 
 
 def main():
@@ -23,6 +58,8 @@ def main():
     parser.add_argument("--bench", default=str(ROOT / "build/release/benchmarks/bench_ray_queries"))
     parser.add_argument("--out", default=str(ROOT / "docs/ray-timings.md"))
     parser.add_argument("--min-time", type=float, default=0.5, help="seconds per benchmark (Google Benchmark)")
+    parser.add_argument("--glintlab", default=str(ROOT / "build/release/glintlab"))
+    parser.add_argument("--no-path", action="store_true", help="the ray queries only")
     args = parser.parse_args()
 
     run = subprocess.run([args.bench, "--benchmark_format=json", f"--benchmark_min_time={args.min_time}"],
@@ -68,6 +105,27 @@ def main():
         lines.append(f"- {kind} rays per core: least {least / 1e6:.1f} M/s, median {median / 1e6:.1f} M/s "
                      f"(floor {FLOOR[kind] / 1e6:g} M/s: {verdict})")
     lines.append("")
+    if not args.no_path:
+        rates = path_rates(args.glintlab, list(rates.keys()))
+        lines += [
+            "## The whole path tracer",
+            "",
+            f"Camera samples per second of `glintlab render --reference=N` on {PATH_FILM[0]}x{PATH_FILM[1]} films, "
+            f"one light sample per light and sample (`--light-samples 1`): the samples of N = {PATH_SPP[1]} "
+            f"over those of N = {PATH_SPP[0]}, over the seconds between the two runs (start-up, scene loading "
+            "and table uploads cancel; one run each, so about 10% of noise). The raster reference and the path "
+            "tracer shade on the same GL device (llvmpipe here); the path tracer also traces on the CPU, builds "
+            "its hits there and reads them back. `path, 4 vertices` is `--max-depth 4` (Russian roulette from "
+            "the third).",
+            "",
+            "| scene | " + " | ".join(f"{name}, M samples/s" for name, _ in PATH_CONFIGS) + " | path / raster |",
+            "| --- | " + " | ".join("---:" for _ in PATH_CONFIGS) + " | ---: |",
+        ]
+        for scene in dict.fromkeys(s for s, _ in rates):
+            values = [rates[(scene, name)] for name, _ in PATH_CONFIGS]
+            lines.append(f"| {scene} | " + " | ".join(f"{v / 1e6:.2f}" for v in values) +
+                         f" | {values[1] / values[0]:.2f} |")
+        lines.append("")
     Path(args.out).write_text("\n".join(lines))
     print(f"wrote {args.out}")
 

@@ -73,8 +73,10 @@ RayScene::RayScene(const Scene& scene) : device_(rtcNewDevice(nullptr)) {
   for (const Light& light : scene.lights)
     if (light.kind->emitter)
       if (std::optional<LightEmitter> e = light.kind->emitter(light)) emitters_.push_back(std::move(*e));
-  for (const LightEmitter& e : emitters_)
-    attach(e.mesh, e.transform, static_cast<unsigned>(shapes_.size()), kSeesEmitters, shapes_.emplace_back());
+  for (const LightEmitter& e : emitters_) {
+    WorldShape& world = shapes_.emplace_back();
+    attach(e.mesh, e.transform, static_cast<unsigned>(shapes_.size() - 1), kSeesEmitters, world);
+  }
   rtcCommitScene(scene_.get());
   check(device_.get(), "building the BVH");
 }

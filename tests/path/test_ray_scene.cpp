@@ -143,3 +143,62 @@ TEST(RayScene, OcclusionAgreesWithTheClosestHitAndBatchesAnswerAsSingleRays) {
   EXPECT_GT(hit_count, 400);
   EXPECT_LT(hit_count, 3600);
 }
+
+TEST(RayScene, EmittersAreSeenByCameraRaysAsTheirOwnLightAndNeverByShadowRays) {
+  // Two quads and a sphere light of different radiances, each on its own ray from the origin.
+  const Scene scene = parse_scene(R"(
+[film]
+width = 16
+height = 16
+[camera]
+position = [0, 0, 5]
+target = [0, 0, 0]
+[[material]]
+name = "m"
+[[shape]]
+type = "sphere"
+material = "m"
+radius = 0.2
+translate = [0, 0, -3]
+[[light]]
+type = "quad"
+position = [2, 0, 0]
+direction = [-1, 0, 0]
+radiance = 2
+[[light]]
+type = "quad"
+position = [0, 2, 0]
+direction = [0, -1, 0]
+radiance = 3
+[[light]]
+type = "sphere"
+position = [0, 0, 2]
+radius = 0.5
+radiance = 5
+)",
+                                  "emitters.toml", ".");
+  const RayScene rays(scene);
+  const std::vector<Ray> camera = {
+      {.origin = {0, 0, 0}, .direction = {1, 0, 0}},  {.origin = {0, 0, 0}, .direction = {0, 1, 0}},
+      {.origin = {0, 0, 0}, .direction = {0, 0, 1}},  {.origin = {0, 0, 0}, .direction = {0, 0, -1}},
+      {.origin = {0, 0, 0}, .direction = {-1, 0, 0}}};
+  std::vector<RayHit> hits(camera.size());
+  rays.intersect(camera, hits, RayCoherence::Incoherent);
+  const float expected[] = {2.0f, 3.0f, 5.0f};
+  for (int i = 0; i < 3; ++i) {
+    ASSERT_TRUE(hits[i].hit()) << "ray " << i;
+    const LightEmitter* e = rays.emitter(hits[i]);
+    ASSERT_NE(e, nullptr) << "ray " << i;
+    EXPECT_EQ(e->radiance, glm::vec3(expected[i])) << "ray " << i;
+  }
+  ASSERT_TRUE(hits[3].hit());
+  EXPECT_EQ(rays.emitter(hits[3]), nullptr) << "the sphere shape is no emitter";
+  EXPECT_EQ(rays.surface(hits[3]).material, 0);
+  EXPECT_FALSE(hits[4].hit());
+  // Shadow rays see the shapes only.
+  std::vector<Ray> shadow = camera;
+  for (Ray& r : shadow) r.sees = kSeesShapes;
+  std::vector<std::uint8_t> blocked(shadow.size());
+  rays.occluded(shadow, blocked, RayCoherence::Incoherent);
+  EXPECT_EQ(blocked, (std::vector<std::uint8_t>{0, 0, 0, 1, 0}));
+}

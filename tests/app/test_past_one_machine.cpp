@@ -1,12 +1,14 @@
-// A reference split into tiles by independent jobs (render --reference --tile, run by GNU parallel
-// as docs/past-one-machine.md shows) and put back together by merge-tiles is the whole film's
-// reference; tiles that cannot be one frame are refused, and nothing is written.
+// docs/past-one-machine.md's recipes: a reference split into tiles by independent jobs (render
+// --reference --tile, run by GNU parallel) and put back together by merge-tiles is the whole film's
+// reference, and tiles that cannot be one frame are refused with nothing written; an animation's
+// references rendered frame by frame as separate jobs into a shared cache are the ones animate uses.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -92,4 +94,30 @@ TEST_F(Cli, TileOptionsOutsideTheirRangeAreBadInput) {
   expect_bad_input("render" + scene + " --reference=4 --tile -1/2x2", {"--tile -1/2x2", "not INDEX/COLUMNSxROWS"});
   expect_bad_input("render" + scene + " --tile 0/2x2", {"--tile 0/2x2", "with --reference only"});
   expect_bad_input("render" + scene + " --reference=auto --tile 0/2x2", {"--tile with --spp auto", "--spp N"});
+}
+
+TEST_F(Cli, FramesRenderedAsSeparateJobsAreTheReferencesAnimateUses) {
+  if (std::system("command -v parallel >/dev/null 2>&1") != 0) GTEST_SKIP() << "GNU parallel is not installed";
+  const std::string scene = " --scene '" + write("frames.toml", TestScene::minimal().film(16, 16).toml()).string() + "'";
+  const std::string sampling = " -q --reference=4 --frames 3 --width 12 --height 8";
+  const std::string recipe = "parallel --will-cite -j 2 '" GLINTLAB_BINARY "' render" + scene + sampling + " --frame {} -o '" +
+                             (scratch / "refs").string() + "/frame-{}.exr' ::: 0 1 2";
+  ASSERT_EQ(std::system(("GLINTLAB_CACHE_DIR='" + cache().string() + "' " + recipe + " >/dev/null 2>&1").c_str()), 0)
+      << recipe;
+  std::map<fs::path, fs::file_time_type> entries;
+  for (const auto& e : fs::directory_iterator(cache()))
+    if (e.path().extension() == ".exr") entries[e.path()] = fs::last_write_time(e.path());
+  ASSERT_EQ(entries.size(), 3u) << "one cached reference per frame";
+  // animate with the same sampling finds every frame's reference: it stores none again.
+  const auto r = run_glintlab("animate" + scene + " -q --spp 4 --frames 3 --width 12 --height 8 -o '" +
+                              (scratch / "animate").string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::size_t after = 0;
+  for (const auto& e : fs::directory_iterator(cache()))
+    if (e.path().extension() == ".exr") {
+      ++after;
+      ASSERT_TRUE(entries.count(e.path())) << "animate rendered a reference the jobs had: " << e.path();
+      EXPECT_EQ(fs::last_write_time(e.path()), entries[e.path()]) << e.path();
+    }
+  EXPECT_EQ(after, entries.size());
 }

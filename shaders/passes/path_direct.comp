@@ -42,11 +42,14 @@ layout(std430, binding = PATH_HITS_BINDING) readonly buffer PathHits { PathHit h
 layout(std430, binding = PATH_SHADOW_RAYS_BINDING) writeonly buffer PathShadowRays { PathShadowRay shadowRays[]; };
 layout(std430, binding = PATH_EMISSION_BINDING) writeonly buffer PathEmission { vec4 emission[]; };
 // Where the path goes on: dir_lobe.xyz (world space; w 0: it ends), and the bounce's weights f cos / pdf
-// of the diffuse and the specular lobe (diffuse.rgb, specular.rgb).
+// of the diffuse and the specular lobe (diffuse.rgb, specular.rgb). Off a mirror, the reflected
+// ray's direction differentials (dDdx.w = 1; Igehy 1999): its origin's are the hit's dP.
 struct PathBounce {
   vec4 dir_lobe;
   vec4 diffuse;
   vec4 specular;
+  vec4 dDdx;
+  vec4 dDdy;
 };
 layout(std430, binding = PATH_CONTINUATION_BINDING) writeonly buffer PathBounces { PathBounce bounces[]; };
 
@@ -110,8 +113,14 @@ Radiance shadeLight(Surface s, LightData L) {
 // sampler; a mirror's reflection), chosen by their albedos' luminance, weighted by one-sample MIS
 // of the two (the mixture's density). Glinty kinds bounce with their light integrand, the smooth
 // BRDF of their model (as glint renderers do for indirect light: docs/methods.md, "The path tracer").
-PathBounce pathBounce(Surface s) {
-  PathBounce none = PathBounce(vec4(0.0), vec4(0.0), vec4(0.0));
+// The derivative of a mirror's reflection R = D - 2 (D.N) N along one step, from the incoming
+// direction's dD and the unit normal's dN (Igehy 1999, eq. 14-15).
+vec3 reflectionDerivative(vec3 D, vec3 N, vec3 dD, vec3 dN) {
+  return dD - 2.0 * (dot(D, N) * dN + (dot(dD, N) + dot(D, dN)) * N);
+}
+
+PathBounce pathBounce(Surface s, vec3 normal) {
+  PathBounce none = PathBounce(vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
   vec3 wo = toLocal(s, s.view);
   if (!uBounce || wo.z <= 0.0) return none;
   uint h = hash3(uvec3(uvec2(gGlobal), uDepth * 7919u + uint(frame.tile.w) + 0x5bd1e995u));
@@ -119,16 +128,27 @@ PathBounce pathBounce(Surface s) {
   float pick = uintToUnit(pcgHash(h + 7u));
   float diffuseShare = dot(s.diffuse, vec3(0.2126, 0.7152, 0.0722));
   float specularShare = dot(s.f0, vec3(0.2126, 0.7152, 0.0722));
-  float pDiffuse = diffuseShare + specularShare > 0.0 ? clamp(diffuseShare / (diffuseShare + specularShare), 0.05, 0.95) : 0.5;
+  // A lobe that reflects nothing is never picked; otherwise each at least 5% of the time (Schlick's
+  // Fresnel reflects at grazing angles even when f0 = 0).
+  float pDiffuse = diffuseShare <= 0.0 ? 0.0 : clamp(diffuseShare / (diffuseShare + specularShare), 0.05, 0.95);
   if (referenceMirror(s)) {
     // A delta lobe: its weight is F (the diffuse lobe is sampled with probability pDiffuse alone).
     if (pick < pDiffuse) {
       vec3 wi = vec3(sqrt(u.x) * vec2(cos(TWO_PI * u.y), sin(TWO_PI * u.y)), sqrt(max(1.0 - u.x, 0.0)));
       if (wi.z <= 0.0) return none;
-      return PathBounce(vec4(toWorld(s, wi), 1.0), vec4(materialDiffuseCos(s, wi) / (pDiffuse * wi.z / PI), 0.0), vec4(0.0));
+      return PathBounce(vec4(toWorld(s, wi), 1.0), vec4(materialDiffuseCos(s, wi) / (pDiffuse * wi.z / PI), 0.0),
+                        vec4(0.0), vec4(0.0), vec4(0.0));
     }
     vec3 wi = reflect(-wo, vec3(0.0, 0.0, 1.0));
-    return PathBounce(vec4(toWorld(s, wi), 2.0), vec4(0.0), vec4(fresnelSchlick(s.f0, wo.z) / (1.0 - pDiffuse), 0.0));
+    // The reflected ray's differentials about the shading normal, whose change is the
+    // interpolated normal's (a normal map's own change is not followed).
+    vec3 D = -s.view, N = s.normal, n = normal;
+    float length_n = length(n);
+    vec3 dNdx = (s.footprint.dNdx - N * dot(N, s.footprint.dNdx)) / length_n;
+    vec3 dNdy = (s.footprint.dNdy - N * dot(N, s.footprint.dNdy)) / length_n;
+    return PathBounce(vec4(toWorld(s, wi), 2.0), vec4(0.0), vec4(fresnelSchlick(s.f0, wo.z) / (1.0 - pDiffuse), 0.0),
+                      vec4(reflectionDerivative(D, N, -s.footprint.dVdx, dNdx), 1.0),
+                      vec4(reflectionDerivative(D, N, -s.footprint.dVdy, dNdy), 1.0));
   }
   vec3 wi;
   if (pick < pDiffuse) {
@@ -140,7 +160,7 @@ PathBounce pathBounce(Surface s) {
   float pdf = pDiffuse * wi.z / PI + (1.0 - pDiffuse) * materialSamplePdf(s, wo, wi);
   if (!(pdf > 0.0)) return none;
   return PathBounce(vec4(toWorld(s, wi), pick < pDiffuse ? 1.0 : 2.0), vec4(materialDiffuseCos(s, wi) / pdf, 0.0),
-                    vec4(materialLightIntegrand(s, wo, wi) / pdf, 0.0));
+                    vec4(materialLightIntegrand(s, wo, wi) / pdf, 0.0), vec4(0.0), vec4(0.0));
 }
 
 void main() {
@@ -180,5 +200,5 @@ void main() {
   for (uint slot = gSlot; slot < uRaysPerHit; ++slot)
     shadowRays[gHit * uRaysPerHit + slot].dir_dist = vec4(0.0, 0.0, 1.0, 0.0);
   emission[gHit] = vec4(materialEmission, 0.0);
-  bounces[gHit] = pathBounce(s);
+  bounces[gHit] = pathBounce(s, h.normal.xyz);
 }

@@ -35,7 +35,7 @@ struct PathShadowRay {
 };
 static_assert(sizeof(PathShadowRay) == 3 * sizeof(glm::vec4));  // read back into vec4s (shadow_host_)
 struct PathBounce {
-  glm::vec4 dir_lobe, diffuse, specular;
+  glm::vec4 dir_lobe, diffuse, specular, dDdx, dDdy;
 };
 
 // A path in flight: its sample, the ray it follows and what the light it gathers from here on is
@@ -46,6 +46,8 @@ struct PathState {
   Ray ray;
   glm::vec3 total_weight{1.0f};
   glm::vec3 specular_weight{1.0f};
+  bool mirrored = false;        ///< every bounce so far off a mirror: `differential` is the ray's own
+  RayDifferential differential;  ///< per sub-pixel, GL's screen axes
 };
 
 // A float in [0, 1) from a sample's sub-pixel, the path vertex and the pass's seed (Russian roulette).
@@ -261,11 +263,12 @@ void PathReference::shade_tile(const Camera& camera, int width, int height, cons
     tbb::parallel_for(std::size_t{0}, records.size(), [&](std::size_t h) {
       const std::size_t p = path_of[h], i = paths[p].sample;
       const SurfacePoint point = rays_.surface(hits[p]);
-      // The camera ray's own differentials at the first vertex; after a bounce, those a camera
-      // ray through the point would have (pbrt-v4's rule: docs/methods.md, "The path tracer").
-      RayDifferential r = differentials[i];
+      // The camera ray's own differentials at the first vertex and after mirrors (Igehy 1999);
+      // after any other bounce, those a camera ray through the point would have (pbrt-v4's rule:
+      // docs/methods.md, "The path tracer").
+      RayDifferential r = depth == 0 ? differentials[i] : paths[p].differential;
       RayHit at = hits[p];
-      if (depth > 0) {
+      if (depth > 0 && !paths[p].mirrored) {
         r = camera_rays.towards(point.position);
         r.dOdx *= per_subpixel;
         r.dDdx *= per_subpixel;
@@ -389,6 +392,14 @@ void PathReference::shade_tile(const Camera& camera, int width, int height, cons
       const glm::vec3 dir(b.dir_lobe);
       path.ray = Ray{.origin = offset_origin(glm::vec3(records[h].position), glm::vec3(records[h].face_normal), dir),
                      .direction = dir};
+      path.mirrored = b.dDdx.w > 0.5f && (depth == 0 || path.mirrored);
+      if (path.mirrored)
+        path.differential = RayDifferential{.origin = glm::vec3(records[h].position),
+                                            .direction = dir,
+                                            .dOdx = glm::vec3(records[h].dPdx),
+                                            .dOdy = glm::vec3(records[h].dPdy),
+                                            .dDdx = glm::vec3(b.dDdx),
+                                            .dDdy = glm::vec3(b.dDdy)};
       next.push_back(path);
     }
     paths = std::move(next);

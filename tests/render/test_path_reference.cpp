@@ -8,6 +8,7 @@
 #include <functional>
 
 #include <Eigen/Dense>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "gl_fixture.hpp"
 #include "tables/dfg/dfg.hpp"
@@ -257,4 +258,39 @@ TEST(PathReference, InsideAGlowingSphereTheRadianceIsTheInterreflectionsSolution
   const double mean = sum / 64.0, error = std::sqrt(variance) / 64.0;
   std::printf("integrating sphere: path %.4f +- %.4f, solution %.4f\n", mean, error, truth);
   EXPECT_NEAR(mean, truth, 3.0 * error + 0.005 * truth);
+}
+
+// A glinty plane seen through a flat mirror is the same plane seen directly from the camera's
+// mirror image: the ray differentials that reach it after the mirror (Igehy's reflection) are that
+// camera's, so the glints (defined by the footprint) are the same glints. A footprint taken from
+// the camera's distance to the point instead (the rule after rough bounces) would be half as large.
+TEST(PathReference, GlintsSeenInAMirrorAreTheGlintsSeenFromTheMirroredCamera) {
+  const auto base = [] {
+    return TestScene()
+        .film(40, 40)
+        .camera({0, 0, 0}, {0, 0, -1}, 30)
+        .glinty_material("glitter", {{"sigma", 0.15}, {"log_density", 12}});
+  };
+  // Directly: the plane 4 m away, lit by a point light beside the camera's view.
+  SceneFixture direct(base()
+                          .plane("glitter", {{"size", 6}, {"uv_scale", 3}, {"rotate", {90, 0, 0}}, {"translate", {0, 0, -4}}})
+                          .point_light({3, 0, -2}, 100)
+                          .scene());
+  // Through a mirror at z = -1: the same plane and light reflected in it (z -> -2 - z), behind the camera.
+  Scene mirrored = base()
+                       .material("mirror", {{"diffuse", 0}, {"f0", 1}, {"alpha", 0}})
+                       .plane("mirror", {{"size", 20}, {"rotate", {90, 0, 0}}, {"translate", {0, 0, -1}}})
+                       .plane("glitter", {{"size", 6}, {"uv_scale", 3}, {"rotate", {90, 0, 0}}, {"translate", {0, 0, -4}}})
+                       .point_light({3, 0, 0}, 100)
+                       .scene();
+  const glm::mat4 mirror = glm::translate(glm::mat4(1.0f), {0, 0, -1}) * glm::scale(glm::mat4(1.0f), {1, 1, -1}) *
+                           glm::translate(glm::mat4(1.0f), {0, 0, 1});
+  mirrored.shapes[1].transform = mirror * mirrored.shapes[1].transform;
+  SceneFixture through(std::move(mirrored));
+  const ReferenceFrame a = render_path(direct, 16, 1), b = render_path(through, 16, 2);
+  const Agreement agree = agreement(b.mean.specular, a.mean.specular);
+  std::printf("mirror: rmse %.3g of mean %.3g, energy %.4f\n", agree.rmse, agree.mean, agree.energy_ratio);
+  EXPECT_GT(agree.mean, 1e-3);
+  EXPECT_LT(agree.rmse, 0.05 * agree.mean);
+  EXPECT_NEAR(agree.energy_ratio, 1.0, 0.01);
 }

@@ -92,13 +92,13 @@ struct PathReference::Tile {
   int region_gl_y = 0;
 };
 
-PathReference::PathReference(const ReferenceBackendContext& context)
-    : shaders_(context.shaders), scene_(context.scene), rays_(context.scene.resource_context().scene) {}
+PathReference::PathReference(const ReferenceBackendContext& context, bool shadows)
+    : shaders_(context.shaders), scene_(context.scene), rays_(context.scene.resource_context().scene), shadows_(shadows) {}
 
 std::uint64_t PathReference::estimator_hash() const {
   if (estimator_hash_ != 0) return estimator_hash_;
   Hasher h;
-  h.text("glintlab-path-v1 direct light, shadow rays of the scene's shapes");
+  h.text(shadows_ ? "glintlab-path-v1 shadow rays of the scene's shapes" : "glintlab-path-v1 no shadows");
   std::set<MaterialVariant> variants;
   for (const auto& mesh : scene_.meshes()) variants.insert(material_variant(scene_, mesh.material));
   for (const MaterialVariant& v : variants)
@@ -360,8 +360,8 @@ void PathReference::shade_tile(const Camera& camera, int width, int height, cons
                                 .sees = kSeesShapes});
       shadow_of.push_back(r);
     }
-    std::vector<std::uint8_t> blocked(shadow_rays.size());
-    rays_.occluded(shadow_rays, blocked, RayCoherence::Incoherent);
+    std::vector<std::uint8_t> blocked(shadow_rays.size(), 0);
+    if (shadows_) rays_.occluded(shadow_rays, blocked, RayCoherence::Incoherent);
     for (std::size_t j = 0; j < shadow_rays.size(); ++j)
       if (!blocked[j]) {
         const PathShadowRay& ray = shadow[shadow_of[j]];

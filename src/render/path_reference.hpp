@@ -18,9 +18,12 @@ namespace glintlab {
 
 class PathReference final : public ReferenceBackend {
  public:
-  explicit PathReference(const ReferenceBackendContext& context);
+  /// `shadows` false: every shadow ray is taken as unblocked (`path-unshadowed`, direct light
+  /// only): the raster reference's light transport, traced, to hold the two backends to each other
+  /// on any scene.
+  explicit PathReference(const ReferenceBackendContext& context, bool shadows = true);
 
-  [[nodiscard]] std::string id() const override { return "path"; }
+  [[nodiscard]] std::string id() const override { return shadows_ ? "path" : "path-unshadowed"; }
   /// Hash of the shading programs' full text on this scene, the filters' and the tracer's version.
   [[nodiscard]] std::uint64_t estimator_hash() const override;
   Frame render_pass(const Camera& camera, int width, int height, const ReferencePass& pass,
@@ -51,6 +54,7 @@ class PathReference final : public ReferenceBackend {
   ShaderLibrary& shaders_;
   const GpuScene& scene_;
   RayScene rays_;
+  bool shadows_;
   DeviceBuffer hits_, shadow_rays_, emission_, bounces_;
   std::vector<glm::vec4> shadow_host_;  // the shadow rays read back, three vec4 each (grown, never shrunk)
   std::map<int, GLuint> programs_;  // by material

@@ -96,6 +96,10 @@ const std::vector<ReferenceBackendEntry>& reference_backends() {
        "a path tracer: Embree's rays on the CPU, the hits shaded by the raster reference's GLSL on the GL device, "
        "direct light with shadows (every light sample's shadow ray traced)",
        [](const ReferenceBackendContext& c) { return std::make_unique<PathReference>(c); }},
+      {"path-unshadowed",
+       "path with every shadow ray unblocked, direct light only: the raster reference's light transport traced, "
+       "to hold the two backends to each other on any scene",
+       [](const ReferenceBackendContext& c) { return std::make_unique<PathReference>(c, false); }},
       {"raster-facets",
        "raster, with binomial-glints materials as one fixed field of mirror facets, one per uv cell of "
        "e^log_density per unit area with a GGX normal of its own random stream: the binomial methods' "

@@ -294,3 +294,21 @@ TEST(PathReference, GlintsSeenInAMirrorAreTheGlintsSeenFromTheMirroredCamera) {
   EXPECT_LT(agree.rmse, 0.05 * agree.mean);
   EXPECT_NEAR(agree.energy_ratio, 1.0, 0.01);
 }
+
+// With every shadow ray taken as unblocked (`path-unshadowed`) the path tracer runs the raster
+// reference's light transport, so it draws the raster reference's samples on any scene, shadows or
+// not: the two backends' physics is one.
+TEST(PathReference, UnshadowedItIsTheRasterReferenceOnScenesWithShadows) {
+  for (const char* name : {"spheres", "glint-area-lights", "quad-light"}) {
+    SceneFixture f(load_scene(std::string("builtin:") + name));
+    const ReferenceFrame path = render_with(f, "path-unshadowed", 16, 64, 36), raster = render_with(f, "raster", 16, 64, 36);
+    const ReferenceFrame shadowed = render_with(f, "path", 16, 64, 36);
+    const Agreement a = agreement(path.mean.total, raster.mean.total);
+    const Agreement shadows = agreement(shadowed.mean.total, raster.mean.total);
+    std::printf("%s: unshadowed rmse %.3g, energy %.5f; with shadows rmse %.3g, energy %.4f (raster noise %.3g)\n", name,
+                a.rmse, a.energy_ratio, shadows.rmse, shadows.energy_ratio, raster.noise_rmse());
+    EXPECT_NEAR(a.energy_ratio, 1.0, 2e-3) << name;
+    EXPECT_LT(a.rmse, 0.5 * raster.noise_rmse()) << name;
+    EXPECT_LT(shadows.energy_ratio, 0.99) << name << ": the scene's shadows take light away";
+  }
+}

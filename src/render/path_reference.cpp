@@ -13,6 +13,7 @@
 #include "gl/shader_library.hpp"
 #include "path/camera_rays.hpp"
 #include "render/gpu_scene.hpp"
+#include "render/pass_tiles.hpp"
 #include "render/render_target.hpp"
 #include "render/subpixel_filter.hpp"
 #include "tables/registry.hpp"
@@ -84,14 +85,6 @@ void set_uint(GLuint program, const char* name, unsigned v) {
 
 }  // namespace
 
-// A tile of output pixels (film y down) and the region rendered for it: the tile and its filter
-// margin inside the film, whose first row in GL's y-up rows is region_gl_y.
-struct PathReference::Tile {
-  glm::ivec2 origin, size;
-  glm::ivec2 region_origin, region_size;
-  int region_gl_y = 0;
-};
-
 PathReference::PathReference(const ReferenceBackendContext& context, bool shadows)
     : shaders_(context.shaders), scene_(context.scene), rays_(context.scene.resource_context().scene), shadows_(shadows) {}
 
@@ -104,12 +97,7 @@ std::uint64_t PathReference::estimator_hash() const {
   for (const MaterialVariant& v : variants)
     h.text(shaders_.expand("passes/path_direct.comp", forward_variant(kReferenceModule, scene_.light_ranges(), v)));
   h.text(shaders_.expand("passes/path_background.comp", {}));
-  h.text(shaders_.expand("passes/downsample.comp", {}));
-  h.text(shaders_.expand("passes/filter_gaussian.comp", {}));
-  for (const auto& id : scene_.scene_resource_ids()) {
-    h.text(id);
-    h.text(find_resource_type(id).key(scene_.resource_context()));
-  }
+  hash_pass_inputs(h, shaders_, scene_);
   estimator_hash_ = h.digest();
   return estimator_hash_;
 }
@@ -141,48 +129,27 @@ Frame PathReference::render_pass(const Camera& camera, int width, int height, co
       std::max<std::size_t>(1, scene_.resource_context().scene.lights.size() * (2 * static_cast<std::size_t>(pass.light_samples) + 1));
   const int side = static_cast<int>(std::sqrt(static_cast<double>(std::max<std::size_t>(1024, kMaxShadowRaysPerTile / rays_per_hit))));
   const int tile = std::max(1, side / k - 2 * margin);
-  const int tiles_x = (wanted.width + tile - 1) / tile, tiles_y = (wanted.height + tile - 1) / tile;
+  const std::vector<PassTile> tiles = pass_tiles({width, height}, wanted, tile, margin);
 
   RenderTarget high(std::min(width, tile + 2 * margin) * k, std::min(height, tile + 2 * margin) * k);
-  gl::Texture out_total = gl::make_texture(GL_TEXTURE_2D), out_specular = gl::make_texture(GL_TEXTURE_2D);
-  glTextureStorage2D(out_total.id(), 1, GL_RGBA32F, width, height);
-  glTextureStorage2D(out_specular.id(), 1, GL_RGBA32F, width, height);
+  PassFilm out(width, height);
   SubpixelFilter filter(shaders_, pass.filter);
-  const glm::ivec2 film(width, height);
   std::vector<glm::vec4> total, specular;
   int done = 0;
-  for (int ty = 0; ty < tiles_y; ++ty)
-    for (int tx = 0; tx < tiles_x; ++tx) {
-      Tile t;
-      t.origin = {wanted.x + tx * tile, wanted.y + ty * tile};
-      t.size = {std::min(tile, wanted.x + wanted.width - t.origin.x), std::min(tile, wanted.y + wanted.height - t.origin.y)};
-      t.region_origin = glm::max(t.origin - margin, glm::ivec2(0));
-      t.region_size = glm::min(t.origin + t.size + margin, film) - t.region_origin;
-      t.region_gl_y = height - t.region_origin.y - t.region_size.y;
-      shade_tile(camera, width, height, pass, t, total, specular);
-      const glm::ivec2 samples = t.region_size * k;
-      glTextureSubImage2D(high.total(), 0, 0, 0, samples.x, samples.y, GL_RGBA, GL_FLOAT, total.data());
-      glTextureSubImage2D(high.specular(), 0, 0, 0, samples.x, samples.y, GL_RGBA, GL_FLOAT, specular.data());
-      filter.reduce(high,
-                    {.subpixels = k,
-                     .jitter = pass.jitter,
-                     .region_origin = {t.region_origin.x, t.region_gl_y},
-                     .region_size = t.region_size,
-                     .out_origin = {t.origin.x, height - t.origin.y - t.size.y},
-                     .out_size = t.size},
-                    out_total.id(), out_specular.id());
-      glFinish();
-      check_gl("path-tracing a reference tile");
-      if (progress) progress(++done, tiles_x * tiles_y);
-    }
-  const Image total_image = RenderTarget::read(out_total.id(), width, height);
-  const Image specular_image = RenderTarget::read(out_specular.id(), width, height);
-  if (wanted == FilmRegion{0, 0, width, height}) return {total_image, specular_image};
-  return {total_image.crop(wanted.x, wanted.y, wanted.width, wanted.height),
-          specular_image.crop(wanted.x, wanted.y, wanted.width, wanted.height)};
+  for (const PassTile& t : tiles) {
+    shade_tile(camera, width, height, pass, t, total, specular);
+    const glm::ivec2 samples = t.region_size * k;
+    glTextureSubImage2D(high.total(), 0, 0, 0, samples.x, samples.y, GL_RGBA, GL_FLOAT, total.data());
+    glTextureSubImage2D(high.specular(), 0, 0, 0, samples.x, samples.y, GL_RGBA, GL_FLOAT, specular.data());
+    filter.reduce(high, t.samples(k, pass.jitter, height), out.total(), out.specular());
+    glFinish();
+    check_gl("path-tracing a reference tile");
+    if (progress) progress(++done, static_cast<int>(tiles.size()));
+  }
+  return out.read(wanted);
 }
 
-void PathReference::shade_tile(const Camera& camera, int width, int height, const ReferencePass& pass, const Tile& tile,
+void PathReference::shade_tile(const Camera& camera, int width, int height, const ReferencePass& pass, const PassTile& tile,
                                std::vector<glm::vec4>& total, std::vector<glm::vec4>& specular) {
   const int k = pass.subpixels;
   const glm::ivec2 samples = tile.region_size * k;

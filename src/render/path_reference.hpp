@@ -16,6 +16,8 @@
 
 namespace glintlab {
 
+struct PassTile;
+
 class PathReference final : public ReferenceBackend {
  public:
   /// `shadows` false: every shadow ray is taken as unblocked (`path-unshadowed`, direct light
@@ -30,12 +32,11 @@ class PathReference final : public ReferenceBackend {
                     const ProgressFn& progress = {}) override;
 
  private:
-  struct Tile;
   /// The shading program of a material's variant.
   GLuint shading_program(int material);
   /// Shades one tile's samples: their radiance in `total` and `specular` (GL's row order), path
   /// vertex by path vertex.
-  void shade_tile(const Camera& camera, int width, int height, const ReferencePass& pass, const Tile& tile,
+  void shade_tile(const Camera& camera, int width, int height, const ReferencePass& pass, const PassTile& tile,
                   std::vector<glm::vec4>& total, std::vector<glm::vec4>& specular);
   /// The background (a visible environment) that camera rays in `directions` see, in `total` at
   /// the samples `missed`.

@@ -99,17 +99,17 @@ TEST_F(Cli, TileOptionsOutsideTheirRangeAreBadInput) {
 TEST_F(Cli, FramesRenderedAsSeparateJobsAreTheReferencesAnimateUses) {
   if (std::system("command -v parallel >/dev/null 2>&1") != 0) GTEST_SKIP() << "GNU parallel is not installed";
   const std::string scene = " --scene '" + write("frames.toml", TestScene::minimal().film(16, 16).toml()).string() + "'";
-  const std::string sampling = " -q --reference=4 --frames 3 --width 12 --height 8";
+  const std::string sampling = " -q --reference=4 --frames 2 --width 12 --height 8";
   const std::string recipe = "parallel --will-cite -j 2 '" GLINTLAB_BINARY "' render" + scene + sampling + " --frame {} -o '" +
-                             (scratch / "refs").string() + "/frame-{}.exr' ::: 0 1 2";
+                             (scratch / "refs").string() + "/frame-{}.exr' ::: 0 1";
   ASSERT_EQ(std::system(("GLINTLAB_CACHE_DIR='" + cache().string() + "' " + recipe + " >/dev/null 2>&1").c_str()), 0)
       << recipe;
   std::map<fs::path, fs::file_time_type> entries;
   for (const auto& e : fs::directory_iterator(cache()))
     if (e.path().extension() == ".exr") entries[e.path()] = fs::last_write_time(e.path());
-  ASSERT_EQ(entries.size(), 3u) << "one cached reference per frame";
+  ASSERT_EQ(entries.size(), 2u) << "one cached reference per frame";
   // animate with the same sampling finds every frame's reference: it stores none again.
-  const auto r = run_glintlab("animate" + scene + " -q --spp 4 --frames 3 --width 12 --height 8 -o '" +
+  const auto r = run_glintlab("animate" + scene + " -q --spp 4 --frames 2 --width 12 --height 8 -o '" +
                               (scratch / "animate").string() + "'");
   ASSERT_EQ(r.code, 0) << r.err;
   std::size_t after = 0;

@@ -75,7 +75,7 @@ TEST(PathReference, DrawsWhatTheRasterReferenceDrawsWhereNothingCastsAShadow) {
   };
   for (const auto& [name, scene] : scenes) {
     SceneFixture f(scene);
-    const ReferenceFrame path = render_with(f, "path", 16, 64, 36), raster = render_with(f, "raster", 16, 64, 36);
+    const ReferenceFrame path = render_with(f, "path", 16, 48, 27), raster = render_with(f, "raster", 16, 48, 27);
     for (const bool specular : {false, true}) {
       const Agreement a = agreement(specular ? path.mean.specular : path.mean.total,
                                     specular ? raster.mean.specular : raster.mean.total);
@@ -299,10 +299,10 @@ TEST(PathReference, GlintsSeenInAMirrorAreTheGlintsSeenFromTheMirroredCamera) {
 // reference's light transport, so it draws the raster reference's samples on any scene, shadows or
 // not: the two backends' physics is one.
 TEST(PathReference, UnshadowedItIsTheRasterReferenceOnScenesWithShadows) {
-  for (const char* name : {"spheres", "glint-area-lights", "quad-light"}) {
+  for (const char* name : {"spheres", "glint-area-lights"}) {
     SceneFixture f(load_scene(std::string("builtin:") + name));
-    const ReferenceFrame path = render_with(f, "path-unshadowed", 16, 64, 36), raster = render_with(f, "raster", 16, 64, 36);
-    const ReferenceFrame shadowed = render_with(f, "path", 16, 64, 36);
+    const ReferenceFrame path = render_with(f, "path-unshadowed", 16, 48, 27), raster = render_with(f, "raster", 16, 48, 27);
+    const ReferenceFrame shadowed = render_with(f, "path", 16, 48, 27);
     const Agreement a = agreement(path.mean.total, raster.mean.total);
     const Agreement shadows = agreement(shadowed.mean.total, raster.mean.total);
     std::printf("%s: unshadowed rmse %.3g, energy %.5f; with shadows rmse %.3g, energy %.4f (raster noise %.3g)\n", name,

@@ -9,6 +9,20 @@
 #endif
 #include "core/surface.glsl"
 
+// The tangent-space normal-map value at uv ((0, 0, 1) without a map): for ground truth
+// (REFERENCE_PASS) the map at the sample point itself, bilinear at level 0 (the normals a filtered
+// level would average away are the highlights being judged); for a method filtered over the
+// footprint's uv derivatives.
+vec3 normalMapValue(vec2 uv, vec2 dUVdx, vec2 dUVdy) {
+#if MATERIAL_NORMAL_MAP && REFERENCE_PASS
+  return textureLod(uNormalMap, uv, 0.0).xyz;
+#elif MATERIAL_NORMAL_MAP
+  return textureGrad(uNormalMap, uv, dUVdx, dUVdy).xyz;
+#else
+  return vec3(0.0, 0.0, 1.0);
+#endif
+}
+
 // position: world space; normal and tangent: as interpolated (the normal not normalised, the
 // tangent's w its handedness); vertexUV: the mesh's uv, uv: normalMapCoordinates(vertexUV);
 // faceNormal: the triangle's normal, either way round; footprint: how all of it changes over the

@@ -38,15 +38,7 @@ void main() {
   vec3 view = viewDirectionFrom(vPosition);
   // The footprint first, while control flow is uniform.
   Footprint footprint = screenSpaceFootprint(view, uv);
-#if MATERIAL_NORMAL_MAP && REFERENCE_PASS
-  // Ground truth takes the map at this sample point (bilinear at level 0), never an average over
-  // a footprint: the normals a filtered level would average away are the highlights being judged.
-  vec3 mapped = textureLod(uNormalMap, uv, 0.0).xyz;
-#elif MATERIAL_NORMAL_MAP
-  vec3 mapped = textureGrad(uNormalMap, uv, footprint.dUVdx, footprint.dUVdy).xyz;
-#else
-  vec3 mapped = vec3(0.0, 0.0, 1.0);
-#endif
+  vec3 mapped = normalMapValue(uv, footprint.dUVdx, footprint.dUVdy);
 
   // The face normal from the position derivatives.
   vec3 emission;

@@ -187,11 +187,7 @@ void main() {
   Footprint footprint = makeFootprint(
       h.dPdx.xyz, h.dPdy.xyz, h.dNdx.xyz, h.dNdy.xyz, tx - t, ty - t, dViewdx, dViewdy, dVertexUVdx, dVertexUVdy,
       normalMapCoordinates(vertexUV + dVertexUVdx) - uv, normalMapCoordinates(vertexUV + dVertexUVdy) - uv);
-#if MATERIAL_NORMAL_MAP
-  vec3 mapped = textureLod(uNormalMap, uv, 0.0).xyz;  // ground truth: the map at the sample point
-#else
-  vec3 mapped = vec3(0.0, 0.0, 1.0);
-#endif
+  vec3 mapped = normalMapValue(uv, footprint.dUVdx, footprint.dUVdy);  // REFERENCE_PASS: at the sample point
   vec3 materialEmission;
   Surface s = surfaceRecord(m, position, h.normal.xyz, h.tangent, vertexUV, uv, view, h.faceNormal.xyz, footprint,
                             mapped, materialEmission);

@@ -102,6 +102,12 @@ std::uint64_t PathReference::estimator_hash() const {
   return estimator_hash_;
 }
 
+std::size_t PathReference::shadow_rays_per_hit(const ReferencePass& pass) const {
+  // Each light may write 2 n + 1 shadow rays per hit (n light samples; passes/path_direct.comp).
+  return std::max<std::size_t>(1, scene_.resource_context().scene.lights.size() *
+                                      (2 * static_cast<std::size_t>(pass.light_samples) + 1));
+}
+
 GLuint PathReference::DeviceBuffer::hold(std::size_t bytes) {
   if (bytes > capacity || !buffer) {
     capacity = std::max<std::size_t>(bytes, 256);
@@ -124,9 +130,7 @@ Frame PathReference::render_pass(const Camera& camera, int width, int height, co
   if (k < 1 || k > 32) throw InputError("reference sub-pixels per axis " + std::to_string(k) + ": allowed: 1 .. 32");
   const FilmRegion wanted = pass.region.within(width, height);
   const int margin = pass.filter.support_pixels();
-  // Each light may write 2 n + 1 shadow rays per sample (n light samples).
-  const std::size_t rays_per_hit =
-      std::max<std::size_t>(1, scene_.resource_context().scene.lights.size() * (2 * static_cast<std::size_t>(pass.light_samples) + 1));
+  const std::size_t rays_per_hit = shadow_rays_per_hit(pass);
   const int side = static_cast<int>(std::sqrt(static_cast<double>(std::max<std::size_t>(1024, kMaxShadowRaysPerTile / rays_per_hit))));
   const int tile = std::max(1, side / k - 2 * margin);
   const std::vector<PassTile> tiles = pass_tiles({width, height}, wanted, tile, margin);
@@ -182,15 +186,12 @@ void PathReference::shade_tile(const Camera& camera, int width, int height, cons
 
   // The frame as the raster reference's pass sees it (passes/reference_estimator.glsl reads
   // target.z = k, tile.z = light samples, tile.w = the pass's seed; frame.glsl the camera).
-  FrameUniforms frame{};
-  frame.view_proj = glm::mat4(1.0f);
-  frame.camera_pos = {camera.position, camera.projection == Projection::Perspective ? 1.0f : 0.0f};
-  frame.camera_forward = glm::vec4(glm::normalize(camera.target - camera.position), 0.0f);
-  frame.target = {samples.x, samples.y, k, 0};
-  frame.tile = {tile.region_origin.x * k, tile.region_gl_y * k, pass.light_samples, static_cast<int>(pass.seed & 0x7fffffffu)};
+  const FrameUniforms frame =
+      frame_uniforms(camera, camera.projection_matrix(static_cast<float>(width) / static_cast<float>(height)),
+                     {samples.x, samples.y, k, 0},
+                     {tile.region_origin.x * k, tile.region_gl_y * k, pass.light_samples, static_cast<int>(pass.seed & 0x7fffffffu)});
   const gl::Buffer frame_ubo = gl::make_buffer(sizeof(FrameUniforms), &frame);
-  const std::size_t rays_per_hit =
-      std::max<std::size_t>(1, scene_.resource_context().scene.lights.size() * (2 * static_cast<std::size_t>(pass.light_samples) + 1));
+  const std::size_t rays_per_hit = shadow_rays_per_hit(pass);
 
   for (int depth = 0; depth < pass.max_depth && !paths.empty(); ++depth) {
     std::vector<Ray> rays(paths.size());

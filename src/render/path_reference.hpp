@@ -34,6 +34,8 @@ class PathReference final : public ReferenceBackend {
  private:
   /// The shading program of a material's variant.
   GLuint shading_program(int material);
+  /// The slots the shading pass writes shadow rays into, per hit.
+  [[nodiscard]] std::size_t shadow_rays_per_hit(const ReferencePass& pass) const;
   /// Shades one tile's samples: their radiance in `total` and `specular` (GL's row order), path
   /// vertex by path vertex.
   void shade_tile(const Camera& camera, int width, int height, const ReferencePass& pass, const PassTile& tile,

@@ -149,8 +149,7 @@ void Renderer::draw_scene(const std::string& module, const ParamValues& params, 
   check_gl("drawing the scene");
 }
 
-Renderer::FrameUniforms Renderer::frame_uniforms(const Camera& camera, const glm::mat4& projection, glm::ivec4 target,
-                                                 glm::ivec4 tile) const {
+FrameUniforms frame_uniforms(const Camera& camera, const glm::mat4& projection, glm::ivec4 target, glm::ivec4 tile) {
   FrameUniforms f{};
   f.view_proj = projection * camera.view_matrix();
   f.camera_pos = {camera.position, camera.projection == Projection::Perspective ? 1.0f : 0.0f};

@@ -48,6 +48,11 @@ inline ReferenceSurface reference_surface(const std::string& module) {
 /// (a method's or the reference's), the index range and count of each light kind in the light
 /// buffer (and the kinds the method builds lights of itself, MethodDescriptor::light_kinds_built)
 /// and the material's variant.
+/// The frame block (core/frame.glsl) of a view of `camera` through `projection`: `target` (width,
+/// height, sub-pixels per pixel) and `tile` (the region's first sub-pixel, light samples, the pass's
+/// seed) as the reference reads them; target.w is left 0 (the hardware profile's rolled loops add it).
+FrameUniforms frame_uniforms(const Camera& camera, const glm::mat4& projection, glm::ivec4 target, glm::ivec4 tile);
+
 ShaderDefines forward_variant(const std::string& module, const LightRanges& light_ranges, MaterialVariant material);
 
 /// The module a method's forward program includes in the $METHOD slot: its parameter uniforms,
@@ -84,8 +89,6 @@ class Renderer {
 
  private:
   using FrameUniforms = glintlab::FrameUniforms;  // std140, src/core/gpu_contract.hpp
-  FrameUniforms frame_uniforms(const Camera& camera, const glm::mat4& projection, glm::ivec4 target,
-                               glm::ivec4 tile) const;
   /// Draws every shape with `module` (a method's or the reference's) in the forward pass, each
   /// with the program variant for its material, then the visible emitters.
   void draw_scene(const std::string& module, const ParamValues& params, const FrameUniforms& frame);

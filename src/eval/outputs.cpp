@@ -50,6 +50,7 @@ nlohmann::json run_metadata(Session& session) {
   json["device"] = session.context().info().renderer;
   json["reference_backend"] = session.reference_backend().id();
   json["reference_filter"] = session.reference_settings().filter.text();
+  json["reference_max_depth"] = session.reference_settings().max_depth;
   return json;
 }
 

@@ -111,6 +111,7 @@ std::vector<std::pair<std::string, std::string>> facts_of(const json& j) {
       {"warmup", "warm-up frames"},
       {"reference_backend", "reference backend"},
       {"reference_filter", "reference pixel filter"},
+      {"reference_max_depth", "reference path vertices lit"},
       {"reference_spp_min", "reference spp (least)"},
       {"reference_spp", "reference spp"},
       {"reference_passes", "reference passes"},

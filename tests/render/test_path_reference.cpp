@@ -207,6 +207,47 @@ TEST(PathReference, AConvexFurnaceShowsTheMaterialsAlbedo) {
   EXPECT_LT(std::abs(sum_difference / inside), 3.0 * std::sqrt(sum_variance) / inside + 3e-3);
 }
 
+// The white furnace with interreflection: a corridor of two facing mirrors (f0 = 1, alpha 0: albedo
+// exactly 1 at every angle, the only material of glintlab's whose albedo is 1) under a uniform
+// environment of radiance 1. Light bouncing between the mirrors loses nothing, so a pixel is 1 once
+// the path is long enough to leave the corridor and less before: with direct light alone, the
+// pixels whose reflection meets the other mirror are dark; as the depth grows, every pixel is 1.
+TEST(PathReference, AWhiteFurnaceOfFacingMirrorsIsOneEverywhereAsThePathsGrow) {
+  Scene scene = TestScene()
+                    .film(32, 18)
+                    .camera({0, 0, 3}, {0, 0, -4}, 60)
+                    .material("mirror", {{"diffuse", 0}, {"f0", 1}, {"alpha", 0}})
+                    .plane("mirror", {{"size", 8}, {"rotate", {0, 0, -90}}, {"translate", {-0.4, 0, 0}}})
+                    .plane("mirror", {{"size", 8}, {"rotate", {0, 0, 90}}, {"translate", {0.4, 0, 0}}})
+                    .light("environment", {{"radiance", 1}})
+                    .scene();
+  SceneFixture f(std::move(scene));
+  int previous_white = -1;
+  for (const int depth : {1, 2, 4, 16}) {
+    const ReferenceFrame frame = render_path(f, 4, depth);
+    int white = 0;
+    float darkest = 1, brightest = 0;
+    for (int y = 0; y < 18; ++y)
+      for (int x = 0; x < 32; ++x) {
+        const glm::vec3 v = frame.mean.total.at(x, y);
+        darkest = std::min({darkest, v.x, v.y, v.z});
+        brightest = std::max({brightest, v.x, v.y, v.z});
+        white += glm::all(glm::lessThan(glm::abs(v - 1.0f), glm::vec3(1e-4f)));
+      }
+    std::printf("white furnace, %d vertices: %d of 576 pixels 1, darkest %.4f, brightest %.6f\n", depth, white, darkest, brightest);
+    EXPECT_LT(brightest, 1.0f + 1e-4f) << depth << " vertices: light from nowhere";
+    EXPECT_GE(white, previous_white) << depth << " vertices";
+    if (depth == 1) {
+      EXPECT_LT(white, 400) << "direct light alone must miss the light that bounces between the mirrors";
+      EXPECT_LT(darkest, 0.1f);
+    }
+    if (depth == 16) {
+      EXPECT_EQ(white, 576) << "darkest " << darkest;
+    }
+    previous_white = white;
+  }
+}
+
 // The camera at the centre of a closed sphere whose wall has Lambert albedo a, f0 = 0 and emits
 // radiance E: by symmetry the radiance leaving the wall depends only on its angle to the normal,
 // and light from the wall at incidence mu left the other end of the chord at the same angle, so

@@ -167,6 +167,11 @@ class Program:
         """Every run under <out>: <out>/report/; docs/report/ of the headline runs, only when every
         one of them exists (a run of some sections would otherwise replace it by a part of it)."""
         out = self.out_dir.relative_to(REPO)
+        report_dir = self.out_dir / "report"
+        if not any(report_dir not in p.parents for name in ("metrics.json", "bench.json")
+                   for p in self.out_dir.rglob(name)):
+            print(f"results: no report: no compare, animate or bench output under {out} yet", file=sys.stderr)
+            return
         check([self.glintlab, "report", "-o", str(out / "report"), str(out)])
         if not self.index.report_headline:
             return

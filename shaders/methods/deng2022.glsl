@@ -2,10 +2,12 @@
 // time: the pixel footprint's NDF read from the material's CP-compressed pyramid of NDF images
 // (glints/normal-map/prefiltered_ndf.glsl) instead of summed over the map's elements as `yan2016` does.
 // Delta lights: a point query at the half vector; lights with extent: a box query over the
-// light's half-vector box. Cost independent of the footprint and of the light's size; footprints
-// finer than the pyramid's first level are summed over the map's elements as yan2016 does (the
-// paper's switch, sec. 5.1), at a cost bounded by that level's size. Other
-// materials are shaded as by `conventional` (lights with extent by LTC).
+// light's half-vector box. Cost independent of the footprint's size and of the light's; an
+// anisotropic footprint is up to `anisotropic_probes` isotropic queries along its major axis
+// (glints/normal-map/footprint_probes.glsl). Footprints whose largest axis is finer than the
+// pyramid's first level are summed over the map's elements as yan2016 does (the paper's switch,
+// sec. 5.1), at a cost bounded by that level's size. Other materials are shaded as by
+// `conventional` (lights with extent by LTC).
 // Descriptor: src/shading/methods/deng2022.cpp; docs/methods.md#deng2022.
 #define METHOD_LOBES_KEEP_ISOTROPY  // its lobes are the material's own (lobe/lobe_shading.glsl)
 #include "lobe/lobe.glsl"
@@ -14,9 +16,9 @@
 #if MATERIAL_KIND == MATERIAL_KIND_NORMAL_MAP_GLINTS
 #include "glints/normal-map/position_normal.glsl"
 #include "glints/normal-map/prefiltered_ndf.glsl"
+#include "glints/normal-map/footprint_probes.glsl"
 
-vec2 gFootprintCentre;  // texels of the map
-float gFootprintSigma;  // texels: the isotropic footprint of the same area
+FootprintProbes gProbes;  // the footprint as isotropic queries of the pyramid (texels of the map)
 float gMaskingAlpha;
 vec3 gDiffuseNormal;  // the map's filtered normal in the macro frame, for Lambert
 // Footprints finer than the pyramid's first level: Yan 2016's sum over the elements (k = 1), as
@@ -25,12 +27,18 @@ bool gBelowPyramid;
 PositionNormalFootprint gElements;
 
 float normalGlintsDensity(vec2 s) {
-  return gBelowPyramid ? positionNormalDensity(uNormalMap, gElements, 1, s)
-                       : pndfDensity(uMaterial, gFootprintCentre, gFootprintSigma, s);
+  if (gBelowPyramid) return positionNormalDensity(uNormalMap, gElements, 1, s);
+  float sum = 0.0;
+  for (int j = 0; j < gProbes.count; ++j)
+    sum += probeWeight(gProbes, j) * pndfDensity(uMaterial, probeCentre(gProbes, j), gProbes.sigma, s);
+  return sum;
 }
 float normalGlintsBoxMean(vec2 lo, vec2 hi) {
-  return gBelowPyramid ? positionNormalBoxMean(uNormalMap, gElements, 1, lo, hi)
-                       : pndfRangeMean(uMaterial, gFootprintCentre, gFootprintSigma, lo, hi);
+  if (gBelowPyramid) return positionNormalBoxMean(uNormalMap, gElements, 1, lo, hi);
+  float sum = 0.0;
+  for (int j = 0; j < gProbes.count; ++j)
+    sum += probeWeight(gProbes, j) * pndfRangeMean(uMaterial, probeCentre(gProbes, j), gProbes.sigma, lo, hi);
+  return sum;
 }
 #include "glints/normal-map/shading.glsl"
 #endif
@@ -40,17 +48,23 @@ void prepareSurface(inout Surface s) {
   gDiffuseNormal = normalGlintsMacroFrame(s);
   ivec2 size = textureSize(uNormalMap, 0);
   mat2 sigmaP = footprintTexelCovariance(s.footprint, size, param_footprint_sigma);
-  // The pyramid holds isotropic footprints: the one of the same area, sigma^2 = sqrt(det Sigma_p).
-  gFootprintSigma = sqrt(sqrt(max(determinant(sigmaP), 0.0)));
-  gFootprintCentre = fract(s.uv) * vec2(size);
+  vec2 centre = fract(s.uv) * vec2(size);
   MaterialData m = materials[uMaterial];
   gMaskingAlpha = normalMapGlintsMaskingAlpha(m);
-  // Below sigma_0 the elements within 3 sigma_0 (plus the element's own extent) are all a footprint
-  // can reach: a bounded loop, (6 sigma_0 + 3)^2 elements at most, within llvmpipe's loop budget.
   float sigma0 = pndfFirstSigma(uMaterial);
-  gBelowPyramid = param_small_footprints == SMALL_FOOTPRINTS_YAN2016 && gFootprintSigma < sigma0;
-  gElements = positionNormalFootprint(gFootprintCentre, sigmaP, size, 1, normalMapGlintsIntrinsicRoughness(m),
-                                       positionNormalRadiusBudget(3.0 * sigma0 + 1.5, 1));
+  gProbes = footprintProbes(centre, sigmaP, sigma0, int(param_anisotropic_probes));
+  // The switch (sec. 5.1): the pyramid cannot resolve a footprint whose minor axis is finer than
+  // sigma_0; such a footprint is summed over the map's elements in its true shape (never shrunk)
+  // where that costs no more than a round footprint of sigma_0 does, (6 sigma_0 + 3)^2 elements
+  // (always when its largest axis is under sigma_0), within llvmpipe's loop budget.
+  float trace = sigmaP[0][0] + sigmaP[1][1];
+  float largest = 0.5 * trace + sqrt(max(0.25 * trace * trace - determinant(sigmaP), 0.0));
+  float smallest = max(trace - largest, 0.0);
+  gElements = positionNormalFootprint(centre, sigmaP, size, 1, normalMapGlintsIntrinsicRoughness(m),
+                                       positionNormalRadiusBudget(3.0 * sqrt(largest + 0.1875) + 1.0, 1));
+  float budget = (6.0 * sigma0 + 3.0) * (6.0 * sigma0 + 3.0);
+  gBelowPyramid = param_small_footprints == SMALL_FOOTPRINTS_YAN2016 &&
+                  (largest < sigma0 * sigma0 || (smallest < sigma0 * sigma0 && float(gElements.count.x * gElements.count.y) <= budget));
   if (!gBelowPyramid) gElements.count = ivec2(0);
 #endif
 }

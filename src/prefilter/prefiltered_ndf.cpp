@@ -176,7 +176,7 @@ double PrefilteredNdf::density(glm::dvec2 centre, double sigma, glm::dvec2 s) co
         if (i < 0 || j < 0 || i >= grid.resolution || j >= grid.resolution) continue;
         sum += w.weight * (dx ? f.x : 1 - f.x) * (dy ? f.y : 1 - f.y) * pixel(w.footprint, i, j);
       }
-  return sum;
+  return std::max(sum, 0.0);  // a CP reconstruction can dip below 0 where the NDF is near it
 }
 
 double PrefilteredNdf::range_mean(glm::dvec2 centre, double sigma, glm::dvec2 lo, glm::dvec2 hi) const {

@@ -102,7 +102,7 @@ class PrefilteredNdf {
   };
   [[nodiscard]] std::vector<Weighted> interpolation(glm::dvec2 centre, double sigma) const;
 
-  /// P(s) of the footprint: pixels bilinearly interpolated (0 outside the image).
+  /// P(s) of the footprint: pixels bilinearly interpolated (0 outside the image), never negative.
   [[nodiscard]] double density(glm::dvec2 centre, double sigma, glm::dvec2 s) const;
   /// The mean of P over the box [lo, hi] of s (0 outside the image), O(R) per block it overlaps.
   [[nodiscard]] double range_mean(glm::dvec2 centre, double sigma, glm::dvec2 lo, glm::dvec2 hi) const;

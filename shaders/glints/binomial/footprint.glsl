@@ -29,7 +29,7 @@ struct BinomialFootprint {
 // 2^(level + 1), i.e. 180 degrees, so that the grids at 0 and 180 degrees are one) and lod.
 BinomialGrid binomialGrid(int level, int angle, int lod, float weight) {
   int bins = 2 << level;
-  int wrapped = ((angle % bins) + bins) % bins;
+  int wrapped = angle & (bins - 1);  // bins is a power of 2; & is defined on negative ints
   float theta = level == 0 ? 0.0 : float(wrapped) * PI / float(bins);
   uint seed = pcg4d(uvec4(uint(level), uint(wrapped), uint(lod + 1024), 0x51ed270bu)).x;
   return BinomialGrid(weight, vec2(cos(theta), sin(theta)), exp2(float(lod)), exp2(float(level)), seed);

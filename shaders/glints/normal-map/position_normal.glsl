@@ -14,6 +14,7 @@
 //   mean_e = p_e + J_e (m_e - u_e), cov_e = J_e Sigma_u J_e^T + sigma_r^2 I,
 // and P(s) = sum_e w_e N2(s; mean_e, cov_e) / sum_e w_e over the elements with d^T T^-1 d <= 9.
 #include "core/constants.glsl"
+#include "core/wrap.glsl"
 
 struct PositionNormalFootprint {
   vec2 centre;        // c, in texels, wrapped into [0, size)
@@ -52,7 +53,7 @@ PositionNormalFootprint positionNormalFootprint(vec2 centre, mat2 sigmaP, ivec2 
   return f;
 }
 
-vec3 mapTexel(sampler2D map, ivec2 size, ivec2 i) { return texelFetch(map, (i % size + size) % size, 0).xyz; }
+vec3 mapTexel(sampler2D map, ivec2 size, ivec2 i) { return texelFetch(map, floorMod(i, size), 0).xyz; }
 
 // Element e's centre, normal p_e and Jacobian J_e (columns d/du.x, d/du.y), from the texels
 // around it. k = 1: the element sits on texel centre e, its +-0.5 neighbours on the midpoints to

@@ -3,6 +3,7 @@
 // src/prefilter/prefiltered_ndf_layout.hpp from two storage buffers. Nothing here feeds a
 // derivative, so llvmpipe's masked helper-invocation loads do not matter.
 #include "generated/gpu_contract.glsl"
+#include "core/wrap.glsl"
 
 layout(std430, binding = PREFILTERED_NDF_RECORDS_BINDING) readonly buffer PrefilteredNdfRecords { uint pndfRecords[]; };
 layout(std430, binding = PREFILTERED_NDF_VALUES_BINDING) readonly buffer PrefilteredNdfValues { float pndfValues[]; };
@@ -126,20 +127,19 @@ PndfInterpolation pndfInterpolation(PndfHeader h, vec2 centre, float sigma) {
 }
 
 // Footprint q (q < 8: q / 4 the level, q % 4 the corner of its cell) of the interpolation, and
-// its weight. The grid wraps around the map (the map tiles); floor division keeps negative
-// coordinates defined (GLSL leaves % of negative operands undefined).
+// its weight. The grid wraps around the map (the map tiles).
 uint pndfCorner(PndfInterpolation interpolation, int q, out float weight) {
   const PndfLevelCell c = q < 4 ? interpolation.lower : interpolation.upper;
   const ivec2 d = ivec2(q & 1, (q >> 1) & 1);
   const ivec2 g = c.origin + d;
-  const ivec2 p = g - c.count * ivec2(floor(vec2(g) / vec2(c.count)));
+  const ivec2 p = floorMod(g, c.count);
   weight = c.weight * (d.x == 1 ? c.fraction.x : 1.0 - c.fraction.x) * (d.y == 1 ? c.fraction.y : 1.0 - c.fraction.y);
   return c.first + uint(p.y * c.count.x + p.x);
 }
 
 vec2 pndfToPixels(PndfHeader h, vec2 s) { return (s + h.extent) * (float(h.n) / (2.0 * h.extent)); }
 
-// P(s) of the footprint: pixels bilinearly interpolated (0 outside the image).
+// P(s) of the footprint: pixels bilinearly interpolated (0 outside the image), never negative.
 float pndfDensity(int material, vec2 centre, float sigma, vec2 s) {
   const PndfHeader h = pndfHeader(material);
   const PndfInterpolation interpolation = pndfInterpolation(h, centre, sigma);
@@ -156,7 +156,7 @@ float pndfDensity(int material, vec2 centre, float sigma, vec2 s) {
       sum += weight * w * pndfPixel(h, footprint, int(x0.x) + d.x, int(x0.y) + d.y);
     }
   }
-  return sum;
+  return max(sum, 0.0);  // a CP reconstruction can dip below 0 where the NDF is near it
 }
 
 // The mean of P over the box [lo, hi] of s (0 outside the image).

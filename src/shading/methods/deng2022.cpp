@@ -13,8 +13,9 @@ MethodDescriptor deng2022_method() {
                   "Prefiltering of Glinty Appearance Using Tensor Decomposition, ACM TOG 41(2), 2022",
       .summary = "On normal-map-glints materials, the NDF of the pixel's footprint comes from a precomputed pyramid "
                  "of NDF images (Yan 2016's P-NDF of Gaussian footprints on a grid per level, sigma doubling per "
-                 "level) cut into angular blocks, each group of blocks CP-decomposed, queried with the isotropic "
-                 "footprint of the pixel's footprint's area (finer than the first level: yan2016's element sum); a "
+                 "level) cut into angular blocks, each group of blocks CP-decomposed, queried with isotropic "
+                 "footprints along the pixel's footprint's major axis (finer than the first level: yan2016's element "
+                 "sum); a "
                  "point query for delta lights and a box query through the factors' prefix sums for lights with "
                  "extent, trilinear across footprint centres and levels: a cost independent of the footprint and of "
                  "the light. The "
@@ -24,7 +25,11 @@ MethodDescriptor deng2022_method() {
                  {"small_footprints", 0, 0, 1,
                   "footprints finer than the pyramid's first level: yan2016 (summed over the map's elements, as "
                   "the paper does; bounded by that level's size) or clamp (the first level's NDF: blurred)",
-                  {"yan2016", "clamp"}}},
+                  {"yan2016", "clamp"}},
+                 {"anisotropic_probes", 8.0f, 1.0f, 16.0f,
+                  "isotropic pyramid queries along an anisotropic footprint's major axis, at most (1: one query of "
+                  "the footprint's area, blurred along the minor axis and cut along the major one)",
+                  {}, false, {}, false, true}},
       .tables = {"ltc-ggx"},  // other materials' lights with extent, as conventional
       .resources = {"prefiltered-ndf"},  // the normal-map-glints materials' pyramids of its precompute settings
       .material_kinds = {"normal-map-glints"},

@@ -16,6 +16,7 @@
 #include "core/image_io.hpp"
 #include "scene/lights/environment_map.hpp"
 #include "scratch_directory.hpp"
+#include "chi_square.hpp"
 #include "gl_fixture.hpp"
 #include "scene/scene_loader.hpp"
 #include "shading/registry.hpp"
@@ -58,76 +59,6 @@ std::vector<glm::vec4> run(const std::string& includes, const std::string& body,
 }
 
 // --- Statistics -------------------------------------------------------------------------------
-
-/// Regularised upper incomplete gamma Q(a, x): series below a + 1, continued fraction above
-/// (Abramowitz & Stegun 6.5.29 and 6.5.31).
-double gamma_q(double a, double x) {
-  if (x <= 0) return 1;
-  const double log_prefix = a * std::log(x) - x - std::lgamma(a);
-  if (x < a + 1) {
-    double term = 1 / a, sum = term;
-    for (int n = 1; n < 10000 && std::abs(term) > 1e-16 * std::abs(sum); ++n) sum += term *= x / (a + n);
-    return 1 - sum * std::exp(log_prefix);
-  }
-  // Lentz's method for 1 / (x + 1 - a - 1 (1 - a) / (x + 3 - a - ...)).
-  double b = x + 1 - a, c = 1e300, d = 1 / b, h = d;
-  for (int n = 1; n < 10000; ++n) {
-    const double an = -n * (n - a);
-    b += 2;
-    d = an * d + b;
-    d = std::abs(d) < 1e-300 ? 1e-300 : d;
-    c = b + an / c;
-    c = std::abs(c) < 1e-300 ? 1e-300 : c;
-    d = 1 / d;
-    const double delta = d * c;
-    h *= delta;
-    if (std::abs(delta - 1) < 1e-15) break;
-  }
-  return std::exp(log_prefix) * h;
-}
-
-struct ChiSquare {
-  double chi2 = 0;
-  int dof = 0;
-  double p = 1;
-  [[nodiscard]] bool passes() const { return p > 1 - std::pow(1 - 0.01, 1.0 / kChiSquareTests); }
-};
-
-/// Pearson's chi-square of observed against expected counts; bins expecting fewer than 5 samples
-/// are pooled (sorted by expectation, merged until the pool expects 5), as pbrt-v4 and Mitsuba do.
-/// (Where a density has no support at all, tests count the samples there separately.)
-ChiSquare chi_square(const std::vector<double>& observed, const std::vector<double>& expected) {
-  ChiSquare r;
-  std::vector<std::size_t> order(observed.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](auto x, auto y) { return expected[x] < expected[y]; });
-  double pool_obs = 0, pool_exp = 0;
-  int cells = 0;
-  for (const auto i : order) {
-    if (expected[i] < 5 || (pool_exp > 0 && pool_exp < 5)) {
-      pool_obs += observed[i];
-      pool_exp += expected[i];
-      if (pool_exp < 5) continue;
-      r.chi2 += (pool_obs - pool_exp) * (pool_obs - pool_exp) / pool_exp;
-      pool_obs = pool_exp = 0;
-      ++cells;
-      continue;
-    }
-    r.chi2 += (observed[i] - expected[i]) * (observed[i] - expected[i]) / expected[i];
-    ++cells;
-  }
-  if (pool_exp > 0) {  // a remainder expecting fewer than 5: still counted, as one cell
-    r.chi2 += (pool_obs - pool_exp) * (pool_obs - pool_exp) / pool_exp;
-    ++cells;
-  }
-  r.dof = cells - 1;
-  r.p = gamma_q(0.5 * r.dof, 0.5 * r.chi2);
-  return r;
-}
-
-std::ostream& operator<<(std::ostream& o, const ChiSquare& c) {
-  return o << "chi2 " << c.chi2 << " dof " << c.dof << " p " << c.p;
-}
 
 // --- Directions binned around an axis ---------------------------------------------------------
 
@@ -314,7 +245,7 @@ vec4 evaluate(vec4 a, vec4 b) { return vec4(ggxVisibleReflectionPdf(b.xyz, a.xyz
     for (std::size_t i = 0; i + 1 < expected.size(); ++i) inside += expected[i];
     expected.back() = std::max(0.0, kSamples - inside);  // below the horizon: nothing
     const ChiSquare chi = chi_square(observed, expected);
-    EXPECT_TRUE(chi.passes()) << chi;
+    EXPECT_TRUE(chi.passes(kChiSquareTests)) << chi;
     // The same counts in 8 x 8 coarse bins: more power against smooth distortions (1% in azimuth).
     std::vector<double> coarse_obs(65, 0.0), coarse_exp(65, 0.0);
     for (int i = 0; i + 1 < bins.size(); ++i) {
@@ -325,7 +256,7 @@ vec4 evaluate(vec4 a, vec4 b) { return vec4(ggxVisibleReflectionPdf(b.xyz, a.xyz
     coarse_obs.back() = observed.back();
     coarse_exp.back() = expected.back();
     const ChiSquare chi_coarse = chi_square(coarse_obs, coarse_exp);
-    EXPECT_TRUE(chi_coarse.passes()) << "8 x 8 bins: " << chi_coarse;
+    EXPECT_TRUE(chi_coarse.passes(kChiSquareTests)) << "8 x 8 bins: " << chi_coarse;
     if (beckmann) {
       // Integrates to the fraction of samples it describes (wo.h > 0), within 4 sigma.
       const double f = facing / kSamples;
@@ -334,7 +265,7 @@ vec4 evaluate(vec4 a, vec4 b) { return vec4(ggxVisibleReflectionPdf(b.xyz, a.xyz
       EXPECT_NEAR(glsl_total, 1.0, 1e-3) << "visible normals integrate to 1 (Heitz 2018, eq. 2)";
       expected_glsl.back() = std::max(0.0, kSamples * (1 - glsl_total));
       const ChiSquare chi_glsl = chi_square(observed, expected_glsl);
-      EXPECT_TRUE(chi_glsl.passes()) << "expected counts from the GLSL pdf: " << chi_glsl;
+      EXPECT_TRUE(chi_glsl.passes(kChiSquareTests)) << "expected counts from the GLSL pdf: " << chi_glsl;
     }
     std::printf("%s wo %.0f alpha %.2f,%.2f: chi2 %.1f dof %d p %.3f (8 x 8: p %.3f)\n", beckmann ? "beckmann" : "ggx",
                 c.theta, c.alpha.x, c.alpha.y, chi.chi2, chi.dof, chi.p, chi_coarse.p);
@@ -415,7 +346,7 @@ void check_cone(const ConeCase& c, std::uint32_t seed) {
   observed.pop_back();
   expected.pop_back();
   const ChiSquare chi = chi_square(observed, expected);
-  EXPECT_TRUE(chi.passes()) << chi;
+  EXPECT_TRUE(chi.passes(kChiSquareTests)) << chi;
   std::printf("cone 1-cos %.3g: chi2 %.1f dof %d p %.3f, rejected %.0f, pdf error %.2g\n", c.one_minus_cos, chi.chi2,
               chi.dof, chi.p, rejected, worst_pdf);
 }
@@ -497,7 +428,7 @@ TEST(SamplingChiSquare, EnvironmentByLuminanceAndSinTheta) {
   EXPECT_EQ(observed[4 * (12 * kW + 3)], 0.0) << "the black texel";
   EXPECT_LT(pdf_mismatches, 2e-3 * kSamples) << "lightPdf against luminance sin(theta) / (I 2 pi^2 sin(theta))";
   const ChiSquare chi = chi_square(observed, expected);
-  EXPECT_TRUE(chi.passes()) << chi;
+  EXPECT_TRUE(chi.passes(kChiSquareTests)) << chi;
 }
 
 namespace {
@@ -569,7 +500,7 @@ void check_area_light(const AreaCase& c, std::uint32_t seed) {
   EXPECT_EQ(outside, 0.0) << "samples off the light";
   EXPECT_LT(worst_pdf, 1e-3) << "lightPdf against dist^2 / (A cos)";
   const ChiSquare chi = chi_square(observed, std::vector<double>(observed.size(), double(kSamples) / (kA * kB)));
-  EXPECT_TRUE(chi.passes()) << chi;
+  EXPECT_TRUE(chi.passes(kChiSquareTests)) << chi;
 
   // The GLSL pdf over the light's solid angle: int pdf cos / dist^2 dA = 1 (Gauss-Legendre).
   static const double x[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526};

@@ -8,8 +8,10 @@
 
 #include "scene/lights/environment_map.hpp"
 #include "scene/lights/environment_sampling.hpp"
+#include "chi_square.hpp"
 
 using namespace glintlab;
+using glintlab::test::chi_square;
 
 namespace {
 
@@ -36,29 +38,6 @@ std::vector<double> texel_weights(const Image& map, bool with_sine = true) {
       f.push_back(lum * (with_sine ? std::sin(kPi * (y + 0.5) / map.height()) : 1.0));
     }
   return f;
-}
-
-/// Pearson's chi-square's p-value for counts against expectations, bins expecting under 5 pooled;
-/// the tail by Wilson and Hilferty's cube-root normal approximation (accurate at hundreds of dof).
-double chi_square_p(const std::vector<double>& observed, const std::vector<double>& expected) {
-  double chi2 = 0, pool_obs = 0, pool_exp = 0;
-  int cells = 0;
-  for (std::size_t i = 0; i < observed.size(); ++i) {
-    if (expected[i] < 5) {
-      pool_obs += observed[i];
-      pool_exp += expected[i];
-      continue;
-    }
-    chi2 += (observed[i] - expected[i]) * (observed[i] - expected[i]) / expected[i];
-    ++cells;
-  }
-  if (pool_exp > 0) {
-    chi2 += (pool_obs - pool_exp) * (pool_obs - pool_exp) / pool_exp;
-    ++cells;
-  }
-  const double k = cells - 1, s = 2 / (9 * k);
-  const double z = (std::cbrt(chi2 / k) - (1 - s)) / std::sqrt(s);
-  return 0.5 * std::erfc(z / std::sqrt(2.0));
 }
 
 }  // namespace
@@ -123,7 +102,7 @@ TEST(EnvironmentSampling, SamplesFollowTheTexelProbabilities) {
 
   std::vector<double> expected;
   for (double v : f) expected.push_back(kSamples * v / sum);
-  const double p = chi_square_p(observed, expected);
+  const double p = chi_square(observed, expected).p;
   EXPECT_GT(p, 1e-3) << "samples against f / sum f";
   // The same histogram against luminance without sin(theta) is refused: the test can fail.
   std::vector<double> wrong;
@@ -131,7 +110,7 @@ TEST(EnvironmentSampling, SamplesFollowTheTexelProbabilities) {
   double no_sine_sum = 0;
   for (double v : no_sine) no_sine_sum += v;
   for (double v : no_sine) wrong.push_back(kSamples * v / no_sine_sum);
-  EXPECT_LT(chi_square_p(observed, wrong), 1e-6);
+  EXPECT_LT(chi_square(observed, wrong).p, 1e-6);
   // Within a texel the sample is uniform (linear placement): both halves of the hot texel alike.
   const double n = sub_texel[0] + sub_texel[1];
   EXPECT_NEAR(sub_texel[0] / n, 0.5, 4 * 0.5 / std::sqrt(n));

@@ -9,8 +9,9 @@
 #   make bench-tables  time generating and loading each precomputed table (Google Benchmark; not in test)
 #   make bench-normal-maps  time the procedural normal-map generators at their largest inputs (the same)
 #   make bench-rays  ray queries alone (Embree, no shading) on every built-in scene: rays per second per core
+#   make bench-ndf-sampling  a footprint's NDF evaluated and sampled: deng2022's pyramid, yan2016's elements, GGX
 #   make ltc-fit-report  fit both LTC tables: generation time and the fit error over the grid (markdown)
-.PHONY: all deps build build-fuzz build-demo demo view test fuzz bench bench-tables bench-normal-maps bench-rays ltc-fit-report clean
+.PHONY: all deps build build-fuzz build-demo demo view test fuzz bench bench-tables bench-normal-maps bench-rays bench-ndf-sampling ltc-fit-report clean
 
 BUILD := build/release
 FUZZ_BUILD := build/fuzz
@@ -62,6 +63,9 @@ bench-normal-maps: build
 
 bench-rays: build
 	$(BUILD)/benchmarks/bench_ray_queries
+
+bench-ndf-sampling: build
+	$(BUILD)/benchmarks/bench_ndf_sampling
 
 ltc-fit-report: build
 	$(BUILD)/benchmarks/ltc_fit_report

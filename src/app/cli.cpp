@@ -281,9 +281,11 @@ int run_cli(int argc, char** argv) {
   std::string prefilter_json;
   bool prefilter_no_cache = false;
   prefilter->add_option("--scene", prefilter_scene, "scene file (.toml) or builtin:NAME")->required();
+  std::string precompute_names;
+  for (const ParamDecl& p : glintlab::prefilter_params()) precompute_names += (precompute_names.empty() ? "" : ", ") + p.name;
   prefilter->add_option("--param", prefilter_params,
-                        "a deng2022 parameter that sets the precompute: rank, ndf_resolution, block_size, "
-                        "base_footprints, group_footprints, elements_per_texel (name=value, repeatable)");
+                        "a deng2022 parameter that sets the precompute: " + precompute_names +
+                            " (name=value, repeatable)");
   prefilter->add_option("--accuracy", prefilter_o.accuracy_footprints,
                         "also compare this many footprints per level with yan2016's NDF images")
       ->check(CLI::Range(0, 10000));

@@ -29,9 +29,16 @@ struct PrefilterSettings {
                                    ///< (relative L2 of the NDF images)
   int max_levels = 12;
   double empty_block_mass = 1e-5;  ///< a block holding less of the NDF's mass is dropped (stored as 0)
-  /// Rank 16 by default (32 for flakes, as in the paper); stops when the relative error changes by
-  /// less than 1e-4 in a sweep (1e-5 costs 3x the time for 0.003 lower error), at most 200 sweeps.
-  CpSettings cp{.rank = 16, .max_iterations = 200, .tolerance = 1e-4};
+  /// The fit of each group's tensor (the `decomposition` parameter). HALS, the default: every
+  /// factor >= 0; stops when the relative error changes by less than 1e-4 in a sweep (1e-5 costs 3x
+  /// the time for 0.003 lower error), at most 200 sweeps. ALS: the paper's, unconstrained, 500
+  /// sweeps (docs/methods.md#deng2022 compares them).
+  static constexpr CpSettings kHals{.rank = 16, .max_iterations = 200, .tolerance = 1e-4};
+  static constexpr CpSettings kAls(int rank, int restarts) {
+    return {.rank = rank, .max_iterations = 500, .tolerance = 1e-9, .nonnegative = false, .restarts = restarts};
+  }
+  /// Rank 16 by default (32 for flakes, as in the paper).
+  CpSettings cp = kHals;
 
   /// Every setting as "name=value" separated by spaces: the cache key's and the docs' text.
   [[nodiscard]] std::string describe() const;

@@ -21,20 +21,23 @@
 FootprintProbes gProbes;  // the footprint as isotropic queries of the pyramid (texels of the map)
 float gMaskingAlpha;
 vec3 gDiffuseNormal;  // the map's filtered normal in the macro frame, for Lambert
-// Footprints finer than the pyramid's first level: Yan 2016's sum over the elements (k = 1), as
-// the paper does (sec. 5.1); its loop is empty (count 0) where the pyramid answers.
+// Footprints finer than the pyramid's first level: Yan 2016's sum over the elements, as the paper
+// does (sec. 5.1); its loop is empty (count 0) where the pyramid answers. Two elements per texel
+// and axis by default, those the pyramid's images are made of (elements_per_texel's default): one
+// per texel is 26-83% relative RMSE from the surface at about two texels a pixel (issue 30, item 1).
+const int FALLBACK_K = param_small_footprints == SMALL_FOOTPRINTS_YAN2016_K1 ? 1 : 2;
 bool gBelowPyramid;
 PositionNormalFootprint gElements;
 
 float normalGlintsDensity(vec2 s) {
-  if (gBelowPyramid) return positionNormalDensity(uNormalMap, gElements, 1, s);
+  if (gBelowPyramid) return positionNormalDensity(uNormalMap, gElements, FALLBACK_K, s);
   float sum = 0.0;
   for (int j = 0; j < gProbes.count; ++j)
     sum += probeWeight(gProbes, j) * pndfDensity(uMaterial, probeCentre(gProbes, j), gProbes.sigma, s);
   return sum;
 }
 float normalGlintsBoxMean(vec2 lo, vec2 hi) {
-  if (gBelowPyramid) return positionNormalBoxMean(uNormalMap, gElements, 1, lo, hi);
+  if (gBelowPyramid) return positionNormalBoxMean(uNormalMap, gElements, FALLBACK_K, lo, hi);
   float sum = 0.0;
   for (int j = 0; j < gProbes.count; ++j)
     sum += probeWeight(gProbes, j) * pndfRangeMean(uMaterial, probeCentre(gProbes, j), gProbes.sigma, lo, hi);
@@ -55,15 +58,16 @@ void prepareSurface(inout Surface s) {
   gProbes = footprintProbes(centre, sigmaP, sigma0, int(param_anisotropic_probes));
   // The switch (sec. 5.1): the pyramid cannot resolve a footprint whose minor axis is finer than
   // sigma_0; such a footprint is summed over the map's elements in its true shape (never shrunk)
-  // where that costs no more than a round footprint of sigma_0 does, (6 sigma_0 + 3)^2 elements
+  // where that costs no more than a round footprint of sigma_0 does, k^2 (6 sigma_0 + 3)^2 elements
   // (always when its largest axis is under sigma_0), within llvmpipe's loop budget.
   float trace = sigmaP[0][0] + sigmaP[1][1];
   float largest = 0.5 * trace + sqrt(max(0.25 * trace * trace - determinant(sigmaP), 0.0));
   float smallest = max(trace - largest, 0.0);
-  gElements = positionNormalFootprint(centre, sigmaP, size, 1, normalMapGlintsIntrinsicRoughness(m),
-                                       positionNormalRadiusBudget(3.0 * sqrt(largest + 0.1875) + 1.0, 1));
-  float budget = (6.0 * sigma0 + 3.0) * (6.0 * sigma0 + 3.0);
-  gBelowPyramid = param_small_footprints == SMALL_FOOTPRINTS_YAN2016 &&
+  float elementVariance = 0.1875 / float(FALLBACK_K * FALLBACK_K);
+  gElements = positionNormalFootprint(centre, sigmaP, size, FALLBACK_K, normalMapGlintsIntrinsicRoughness(m),
+                                       positionNormalRadiusBudget(3.0 * sqrt(largest + elementVariance) + 1.0, FALLBACK_K));
+  float budget = float(FALLBACK_K * FALLBACK_K) * (6.0 * sigma0 + 3.0) * (6.0 * sigma0 + 3.0);
+  gBelowPyramid = param_small_footprints != SMALL_FOOTPRINTS_CLAMP &&
                   (largest < sigma0 * sigma0 || (smallest < sigma0 * sigma0 && float(gElements.count.x * gElements.count.y) <= budget));
   if (!gBelowPyramid) gElements.count = ivec2(0);
 #endif

@@ -38,10 +38,11 @@ TEST(Deng2022, MatchesYan2016AndTheReferenceNearAndFar) {
       ASSERT_EQ(deng.count_non_finite(), 0u);
       // The compression and interpolation cost little next to the model's own error...
       EXPECT_LT(deng_err, 1.35 * yan_err + 2 * ref.noise_rmse()) << "tiling " << tiling << (area ? " area" : "");
-      // The pyramid stays closer to the elements it compresses than those are to the truth
-      // (measured: 0.64-1.29 of deng-yan against yan2016's 0.47-1.61 near, 0.26-0.68 against
-      // 0.40-0.96 far)...
-      EXPECT_LT(between, 1.5 * yan_err) << "tiling " << tiling << (area ? " area" : "");
+      // The pyramid stays closer to the elements it compresses than those are to the truth: near,
+      // the fallback sums the very elements (deng-yan measured 0.047 and 0.24 against yan2016's
+      // 0.47 and 1.61 from the reference; 0.64 and 1.29 with one element per texel), far the
+      // compressed pyramid (0.26 and 0.68 against 0.40 and 0.96)...
+      EXPECT_LT(between, (tiling < 4.0 ? 0.3 : 1.0) * yan_err) << "tiling " << tiling << (area ? " area" : "");
       // ...and keep the energy yan2016 has.
       EXPECT_NEAR(energy_ratio(deng, yan), 1.0, 0.08) << "tiling " << tiling << (area ? " area" : "");
     }
@@ -65,16 +66,16 @@ TEST(Deng2022, ProbesAlongTheMajorAxisKeepAnisotropicFootprintsShape) {
     const Image probes = f.method("deng2022").total, one = f.method("deng2022", {{"anisotropic_probes", "1"}}).total;
     std::printf("grazing, tiling %g: rmse to yan2016: probes %.4f, one query %.4f; energy probes/yan %.4f, one/yan %.4f\n",
                 tiling, rmse(probes, yan), rmse(one, yan), energy_ratio(probes, yan), energy_ratio(one, yan));
-    EXPECT_LT(rmse(probes, yan), 0.8 * rmse(one, yan)) << "tiling " << tiling;  // measured: 0.62 and 0.61 of it
+    EXPECT_LT(rmse(probes, yan), 0.8 * rmse(one, yan)) << "tiling " << tiling;  // measured: 0.42 and 0.54 of it
     EXPECT_NEAR(energy_ratio(probes, yan), 1.0, 0.1) << "tiling " << tiling;
   }
 }
 
 TEST(Deng2022, TheElementFallbackIsYan2016BelowTheFirstLevel) {
   // Magnified (a texel over several pixels): every footprint is finer than the first level, so
-  // deng2022 sums the elements exactly as yan2016 with k = 1 does.
+  // deng2022 sums the elements exactly as yan2016 with k = 2 (the pyramid's own elements) does.
   SceneFixture f(normal_glints_floor(0.25, false));
-  const Image deng = f.method("deng2022").total, yan = f.method("yan2016").total;
+  const Image deng = f.method("deng2022").total, yan = f.method("yan2016", kExactYan).total;
   EXPECT_LT(rmse(deng, yan), 1e-5);
   // Clamped to the first level instead, it blurs: further from yan2016.
   const Image clamped = f.method("deng2022", {{"small_footprints", "clamp"}}).total;

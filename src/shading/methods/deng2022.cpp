@@ -22,10 +22,13 @@ MethodDescriptor deng2022_method() {
                  "pyramid is precomputed on first use per map and settings and cached. Other materials are "
                  "shaded as by conventional (lights with extent by LTC).",
       .params = {footprint_sigma_param(),
-                 {"small_footprints", 0, 0, 1,
-                  "footprints finer than the pyramid's first level: yan2016 (summed over the map's elements, as "
-                  "the paper does; bounded by that level's size) or clamp (the first level's NDF: blurred)",
-                  {"yan2016", "clamp"}},
+                 {"small_footprints", 0, 0, 2,
+                  "footprints whose minor axis is finer than the pyramid's first level: yan2016 (summed over the "
+                  "map's elements, 2 per texel and axis as the pyramid's images, as the paper does; bounded by that "
+                  "level's size), yan2016-k1 (1 element per texel: 4x cheaper, far coarser up close) or clamp (the "
+                  "first level's NDF: blurred)",
+                  {"yan2016", "yan2016-k1", "clamp"},
+                  /*compile_time=*/true},
                  {"anisotropic_probes", 8.0f, 1.0f, 16.0f,
                   "isotropic pyramid queries along an anisotropic footprint's major axis, at most (1: one query of "
                   "the footprint's area, blurred along the minor axis and cut along the major one)",

@@ -1,4 +1,4 @@
-// Descriptor of `yan2016`: the exact P-NDF of the pixel's footprint (Yan et al. 2016), brute force.
+// Descriptor of `yan2016`: the P-NDF of the pixel's footprint (Yan et al. 2016) by brute force over its elements.
 #include "shading/methods/shared_params.hpp"
 #include "shading/registry.hpp"
 

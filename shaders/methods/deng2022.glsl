@@ -4,9 +4,9 @@
 // Delta lights: a point query at the half vector; lights with extent: a box query over the
 // light's half-vector box. Cost independent of the footprint's size and of the light's; an
 // anisotropic footprint is up to `anisotropic_probes` isotropic queries along its major axis
-// (glints/normal-map/footprint_probes.glsl). Footprints whose largest axis is finer than the
+// (glints/normal-map/footprint_probes.glsl). Footprints whose minor axis is finer than the
 // pyramid's first level are summed over the map's elements as yan2016 does (the paper's switch,
-// sec. 5.1), at a cost bounded by that level's size. Other materials are shaded as by
+// sec. 5.1) where that sum costs no more than one of that level's footprints. Other materials are shaded as by
 // `conventional` (lights with extent by LTC).
 // Descriptor: src/shading/methods/deng2022.cpp; docs/methods.md#deng2022.
 #define METHOD_LOBES_KEEP_ISOTROPY  // its lobes are the material's own (lobe/lobe_shading.glsl)

@@ -26,7 +26,7 @@ const PrefilteredNdf& pyramid() {
     PrefilterSettings s;
     s.ndf_resolution = 64;
     s.block_size = 16;
-    s.base_footprints = 64;
+    s.base_stride = 1;
     return precompute_prefiltered_ndf(map(), 0.03, s);
   }();
   return p;

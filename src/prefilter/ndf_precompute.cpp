@@ -64,7 +64,7 @@ PrefilteredNdf precompute_prefiltered_ndf(const NormalMap& map, double intrinsic
   const int n = settings.ndf_resolution, b = settings.block_size, nb = n / b, r = settings.cp.rank;
   const int g = settings.group_footprints;
 
-  const int nx0 = std::min(map.width, settings.base_footprints), ny0 = std::min(map.height, settings.base_footprints);
+  const int nx0 = base_footprints(map.width, settings), ny0 = base_footprints(map.height, settings);
   // Images of the level below that the stop test compares with (keyed by footprint index).
   std::vector<std::pair<int, NdfImage>> below;
   int below_nx = 0;

@@ -31,10 +31,10 @@ const std::vector<PrefilterParam>& prefilter_param_table() {
       {"block_size", 4.0f, 64.0f,
        "B: angular blocks of B x B pixels, a divisor of ndf_resolution with at most 8 blocks a side",
        PREFILTER_INT_FIELD(block_size)},
-      {"base_footprints", 16.0f, 1024.0f,
-       "footprints per side of the finest level (at most the map's size): its sigma and stride are map size / "
-       "this texels, so storage does not grow with the map",
-       PREFILTER_INT_FIELD(base_footprints)},
+      {"base_stride", 1.0f, 64.0f,
+       "texels between the finest level's footprints, and their sigma: fixed whatever the map's size (the paper's "
+       "choice), so that the element fallback below it costs the same on any map; storage grows with the map's area",
+       PREFILTER_INT_FIELD(base_stride)},
       {"group_footprints", 1.0f, 16.0f,
        "footprints per side of a group: the blocks of group_footprints^2 neighbouring footprints share one tensor",
        PREFILTER_INT_FIELD(group_footprints)},

@@ -33,7 +33,7 @@ std::string PrefilterSettings::describe() const {
   std::ostringstream s;
   s.precision(17);
   s << "elements_per_texel=" << elements_per_texel << " ndf_resolution=" << ndf_resolution
-    << " block_size=" << block_size << " base_footprints=" << base_footprints
+    << " block_size=" << block_size << " base_stride=" << base_stride
     << " group_footprints=" << group_footprints << " stop_tolerance=" << stop_tolerance
     << " max_levels=" << max_levels << " empty_block_mass=" << empty_block_mass << " rank=" << cp.rank
     << " max_iterations=" << cp.max_iterations << " tolerance=" << cp.tolerance
@@ -53,7 +53,7 @@ void PrefilterSettings::validate() const {
   need(ndf_resolution >= 8 && ndf_resolution <= 256, "ndf_resolution", ndf_resolution, "8 .. 256");
   need(block_size >= 4 && ndf_resolution % block_size == 0 && ndf_resolution / block_size <= 8, "block_size",
        block_size, "a divisor of ndf_resolution, >= 4, with at most 8 blocks per side");
-  need(base_footprints >= 1 && base_footprints <= 4096, "base_footprints", base_footprints, "1 .. 4096");
+  need(base_stride >= 1 && base_stride <= 64, "base_stride", base_stride, "1 .. 64");
   need(group_footprints >= 1 && group_footprints <= 64, "group_footprints", group_footprints, "1 .. 64");
   need(stop_tolerance >= 0 && stop_tolerance <= 1, "stop_tolerance", stop_tolerance, "0 .. 1");
   need(max_levels >= 1 && max_levels <= 16, "max_levels", max_levels, "1 .. 16");
@@ -66,8 +66,8 @@ std::uint64_t prefiltered_ndf_bytes_bound(const PrefilterSettings& settings, int
                                static_cast<std::uint64_t>(settings.ndf_resolution / settings.block_size);
   const std::uint64_t rank = static_cast<std::uint64_t>(settings.cp.rank);
   const std::uint64_t b = static_cast<std::uint64_t>(settings.block_size);
-  std::uint64_t nx = static_cast<std::uint64_t>(std::min(width, settings.base_footprints));
-  std::uint64_t ny = static_cast<std::uint64_t>(std::min(height, settings.base_footprints));
+  std::uint64_t nx = static_cast<std::uint64_t>(base_footprints(width, settings));
+  std::uint64_t ny = static_cast<std::uint64_t>(base_footprints(height, settings));
   std::uint64_t bytes = 4 * 12;  // the header's words (src/prefilter/prefiltered_ndf_layout.hpp)
   for (int level = 0; level < settings.max_levels; ++level) {
     bytes += 4 * 8;  // the level's words

@@ -23,7 +23,8 @@ struct PrefilterSettings {
   int elements_per_texel = 2;      ///< Yan 2016's elements per texel and axis (the NDF images' source)
   int ndf_resolution = 64;         ///< N: an NDF image is N x N
   int block_size = 16;             ///< B: angular blocks of B x B pixels (N / B per side, at most 8)
-  int base_footprints = 128;       ///< level 0 has min(map size, this) footprints per side
+  int base_stride = 2;             ///< level 0's footprints lie this many texels apart (and sigma_0 is
+                                   ///< this), whatever the map's size (sec. 4.1: a fixed stride)
   int group_footprints = 4;        ///< a group (one tensor) holds up to this squared footprints of a level
   double stop_tolerance = 0.05;    ///< stop adding levels when one differs from the level below by less
                                    ///< (relative L2 of the NDF images)
@@ -45,6 +46,11 @@ struct PrefilterSettings {
   /// Throws InputError naming the setting, its value and what is allowed.
   void validate() const;
 };
+
+/// Level 0's footprints along a side of `texels` texels: one every base_stride texels (at least one).
+[[nodiscard]] inline int base_footprints(int texels, const PrefilterSettings& settings) {
+  return texels / settings.base_stride > 0 ? texels / settings.base_stride : 1;
+}
 
 /// An upper bound of a pyramid's storage_bytes() for a width x height map under `settings`, known
 /// before precomputing it: every level the settings allow, no block dropped.

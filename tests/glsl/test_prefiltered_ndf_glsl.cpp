@@ -31,7 +31,7 @@ struct BoundPyramid {
     shaders();  // a current GL context before the buffers below
     settings.ndf_resolution = 32;
     settings.block_size = 8;
-    settings.base_footprints = 32;
+    settings.base_stride = 1;
     pyramid = precompute_prefiltered_ndf(map, kSigmaR, settings);
     const std::vector<const PrefilteredNdf*> materials = {nullptr, nullptr, &pyramid};
     const PrefilteredNdfBuffers packed = pack_prefiltered_ndfs(materials, kMaxMaterials);

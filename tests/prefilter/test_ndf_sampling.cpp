@@ -28,7 +28,7 @@ const PrefilteredNdf& pyramid() {
     PrefilterSettings s;
     s.ndf_resolution = 32;
     s.block_size = 8;
-    s.base_footprints = 32;
+    s.base_stride = 1;
     return precompute_prefiltered_ndf(bumps(), 0.03, s);
   }();
   return p;

@@ -25,7 +25,7 @@ PrefilterSettings small_settings() {
   PrefilterSettings s;
   s.ndf_resolution = 32;
   s.block_size = 8;
-  s.base_footprints = 32;
+  s.base_stride = 1;
   s.group_footprints = 4;
   s.cp.rank = 16;
   return s;
@@ -185,7 +185,7 @@ TEST(PrefilteredNdf, QueriesApproachTheExactNdfOnAndBetweenStoredFootprints) {
 // parameters parse in any order (the decomposition's reset comes first).
 TEST(PrefilteredNdf, AlsCompressesCloserThanHalsAndItsQueriesStayNonnegative) {
   const PrefilterSettings als = prefilter_settings_from({{"rank", 8.0f}, {"decomposition", 1.0f}, {"ndf_resolution", 32.0f},
-                                                         {"block_size", 8.0f}, {"base_footprints", 32.0f}});
+                                                         {"block_size", 8.0f}, {"base_stride", 1.0f}});
   ASSERT_FALSE(als.cp.nonnegative);
   ASSERT_EQ(als.cp.max_iterations, 500);
   ASSERT_EQ(als.cp.rank, 8);
@@ -253,10 +253,27 @@ TEST(PrefilteredNdf, OneTexelFootprintWithoutRoughnessSeesTheTexelsNormal) {
 TEST(PrefilteredNdf, UniformMapStopsAfterOneLevelAbove) {
   const NormalMap flat{16, 16, std::vector<glm::vec3>(256, glm::normalize(glm::vec3(0.1f, 0.2f, 1.0f))), "uniform"};
   PrefilterSettings s = small_settings();
-  s.base_footprints = 16;
+  s.base_stride = 1;
   const PrefilteredNdf p = precompute_prefiltered_ndf(flat, 0.02, s);
   ASSERT_EQ(p.levels.size(), 2u);
   EXPECT_LT(p.levels[1].distance_to_level_below, 1e-3);
+}
+
+// Issue 30, item 4: sigma_0 in texels, and so the element fallback's cost below it, is the same on
+// any map; only the number of footprints grows (the paper's fixed stride, sec. 4.1).
+TEST(PrefilteredNdf, TheFinestLevelsStrideIsFixedWhateverTheMapsSize) {
+  PrefilterSettings s = small_settings();
+  s.base_stride = 2;
+  s.max_levels = 1;
+  for (const int side : {16, 32, 48}) {
+    const NormalMap flat{side, side, std::vector<glm::vec3>(static_cast<std::size_t>(side * side), glm::vec3(0, 0, 1)),
+                         "uniform"};
+    const PrefilteredNdf p = precompute_prefiltered_ndf(flat, 0.02, s);
+    ASSERT_EQ(p.levels.size(), 1u);
+    EXPECT_EQ(p.levels[0].sigma, 2.0) << side;
+    EXPECT_EQ(p.levels[0].nx, side / 2) << side;
+    EXPECT_EQ(p.levels[0].spacing, glm::dvec2(2.0)) << side;
+  }
 }
 
 TEST(PrefilteredNdf, NoNanInARandomisedSweep) {

@@ -142,13 +142,13 @@ TEST(Images, ReferenceConvergesWithMoreSamples) {
 // material of the scenes every_method_scenes() chooses (they hold every scene's material kinds),
 // or change that helper to match; the other scenes render `conventional`.
 // deng2022's pyramids of the normal-map-glints scenes' 256^2 maps at the default precompute
-// settings take about 25 s of CPU each. Built smaller (rank 4, 16 footprints a side at the finest
+// settings take about 25 s of CPU each. Built smaller (rank 4, a stride of 16 texels at the finest
 // level, 32^2 NDF images in 8^2 blocks: as many blocks a side as the defaults') they have the same
 // structure (levels of halving footprints, groups, CP factors, prefix sums), are read by the same
 // code and cover more pixels with the element fallback (yan2016's sum) below the first level: a
 // NaN from either on these maps still shows. The defaults' pyramid is tested in test_deng2022.cpp.
 const std::map<std::string, std::string> kSmallPyramid = {
-    {"rank", "4"}, {"base_footprints", "16"}, {"ndf_resolution", "32"}, {"block_size", "8"}};
+    {"rank", "4"}, {"base_stride", "16"}, {"ndf_resolution", "32"}, {"block_size", "8"}};
 
 class EveryMethodOnBuiltinScene : public ::testing::TestWithParam<std::string> {};
 

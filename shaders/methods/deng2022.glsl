@@ -2,7 +2,8 @@
 // time: the pixel footprint's NDF read from the material's CP-compressed pyramid of NDF images
 // (glints/normal-map/prefiltered_ndf.glsl) instead of summed over the map's elements as `yan2016` does.
 // Delta lights: a point query at the half vector; lights with extent: a box query over the
-// light's half-vector box. Cost independent of the footprint's size and of the light's; an
+// light's half-vector box, by default from its four corners through per-footprint prefix tables
+// (`box_queries`). Cost independent of the footprint's size and of the light's; an
 // anisotropic footprint is up to `anisotropic_probes` isotropic queries along its major axis
 // (glints/normal-map/footprint_probes.glsl). Footprints whose minor axis is finer than the
 // pyramid's first level are summed over the map's elements as yan2016 does (the paper's switch,
@@ -40,7 +41,8 @@ float normalGlintsBoxMean(vec2 lo, vec2 hi) {
   if (gBelowPyramid) return positionNormalBoxMean(uNormalMap, gElements, FALLBACK_K, lo, hi);
   float sum = 0.0;
   for (int j = 0; j < gProbes.count; ++j)
-    sum += probeWeight(gProbes, j) * pndfRangeMean(uMaterial, probeCentre(gProbes, j), gProbes.sigma, lo, hi);
+    sum += probeWeight(gProbes, j) * pndfRangeMean(uMaterial, probeCentre(gProbes, j), gProbes.sigma, lo, hi,
+                                                   param_box_queries == BOX_QUERIES_PREFIX_TABLES);
   return sum;
 }
 #include "glints/normal-map/shading.glsl"

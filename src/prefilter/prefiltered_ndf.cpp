@@ -61,7 +61,8 @@ void PrefilterSettings::validate() const {
   cp.validate();
 }
 
-std::uint64_t prefiltered_ndf_bytes_bound(const PrefilterSettings& settings, int width, int height) {
+std::uint64_t prefiltered_ndf_bytes_bound(const PrefilterSettings& settings, int width, int height,
+                                          bool box_prefix_tables) {
   const std::uint64_t blocks = static_cast<std::uint64_t>(settings.ndf_resolution / settings.block_size) *
                                static_cast<std::uint64_t>(settings.ndf_resolution / settings.block_size);
   const std::uint64_t rank = static_cast<std::uint64_t>(settings.cp.rank);
@@ -77,7 +78,7 @@ std::uint64_t prefiltered_ndf_bytes_bound(const PrefilterSettings& settings, int
     // A row of R floats per kept block; per group and block a, b (B x R) and their prefix sums
     // ((B + 1) x R each); a record per footprint and an offset per group.
     bytes += 4 * (footprints * blocks * rank + groups * blocks * (4 * b + 2) * rank) + sizeof(FootprintRecord) * footprints +
-             4 * groups;
+             4 * groups + (box_prefix_tables ? 4 * footprints * blocks * (2 * rank + 1) : 0);
     if (nx == 1 && ny == 1) break;
     nx = (nx + 1) / 2;
     ny = (ny + 1) / 2;
@@ -88,6 +89,17 @@ std::uint64_t prefiltered_ndf_bytes_bound(const PrefilterSettings& settings, int
 std::size_t PrefilteredNdf::storage_bytes() const {
   return footprints.size() * sizeof(FootprintRecord) + group_offsets.size() * sizeof(std::uint32_t) +
          (angular.size() + rows.size()) * sizeof(float) + levels.size() * 16 * sizeof(float);
+}
+
+PrefilteredNdf::AngularFactors PrefilteredNdf::angular_factors(std::uint32_t footprint) const {
+  const auto br = static_cast<std::size_t>(settings.block_size * rank());
+  const float* a = &angular[group_offsets[footprints[footprint].group]];
+  return {a, a + br, a + 2 * br, a + 3 * br + static_cast<std::size_t>(rank())};
+}
+
+const float* PrefilteredNdf::block_factor(std::uint32_t footprint, int bit) const {
+  const FootprintRecord& rec = footprints[footprint];
+  return kept(rec, bit) ? &rows[static_cast<std::size_t>(row_of(rec, bit)) * static_cast<std::size_t>(rank())] : nullptr;
 }
 
 double PrefilteredNdf::pixel(std::uint32_t footprint, int i, int j) const {
@@ -114,10 +126,7 @@ NdfImage PrefilteredNdf::image(std::uint32_t footprint) const {
 double PrefilteredNdf::pixel_range_sum(std::uint32_t footprint, glm::dvec2 x0, glm::dvec2 x1) const {
   const int b = settings.block_size, nb = blocks_per_side(), r = rank();
   const FootprintRecord& rec = footprints[footprint];
-  const float* a = &angular[group_offsets[rec.group]];
-  const float* bf = a + static_cast<std::size_t>(b * r);
-  const float* sa = bf + static_cast<std::size_t>(b * r);
-  const float* sb = sa + static_cast<std::size_t>((b + 1) * r);
+  const auto [a, bf, sa, sb] = angular_factors(footprint);
   // S(t) = S[floor t] + frac(t) m[floor t]: the integral of a piecewise-constant column up to t.
   auto prefix = [&](const float* sums, const float* m, double t, int k) {
     const int f = std::min(static_cast<int>(t), b - 1);

@@ -53,8 +53,10 @@ struct PrefilterSettings {
 }
 
 /// An upper bound of a pyramid's storage_bytes() for a width x height map under `settings`, known
-/// before precomputing it: every level the settings allow, no block dropped.
-std::uint64_t prefiltered_ndf_bytes_bound(const PrefilterSettings& settings, int width, int height);
+/// before precomputing it: every level the settings allow, no block dropped; with
+/// `box_prefix_tables`, their (N/B)^2 (2R + 1) floats per footprint too (box_prefix_tables.hpp).
+std::uint64_t prefiltered_ndf_bytes_bound(const PrefilterSettings& settings, int width, int height,
+                                          bool box_prefix_tables = false);
 
 /// One level of the pyramid: nx x ny footprints of standard deviation sigma texels, centred at
 /// ((i + 0.5) spacing.x, (j + 0.5) spacing.y), grouped in groups_x x groups_y tensors.
@@ -98,6 +100,16 @@ class PrefilteredNdf {
   [[nodiscard]] int rank() const { return settings.cp.rank; }
   [[nodiscard]] int blocks_per_side() const { return grid.resolution / settings.block_size; }
   [[nodiscard]] std::size_t storage_bytes() const;
+
+  /// A footprint's group's angular factors: a and b (B x R each) and their exclusive prefix sums SA
+  /// and SB ((B + 1) x R each; row B the column's total), row-major (pixel, rank).
+  struct AngularFactors {
+    const float *a, *b, *sa, *sb;
+  };
+  [[nodiscard]] AngularFactors angular_factors(std::uint32_t footprint) const;
+  /// The R values of the long factor for block `bit` (by * (N/B) + bx) of a footprint, or null
+  /// where the block was dropped (it is 0).
+  [[nodiscard]] const float* block_factor(std::uint32_t footprint, int bit) const;
 
   /// The reconstructed NDF image pixel (i, j) of a stored footprint (global index).
   [[nodiscard]] double pixel(std::uint32_t footprint, int i, int j) const;

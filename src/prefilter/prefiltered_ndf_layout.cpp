@@ -3,6 +3,7 @@
 #include <bit>
 
 #include "core/error.hpp"
+#include "prefilter/box_prefix_tables.hpp"
 
 namespace glintlab {
 
@@ -14,7 +15,8 @@ std::uint32_t word(std::size_t v) {
 }
 }  // namespace
 
-PrefilteredNdfBuffers pack_prefiltered_ndfs(std::span<const PrefilteredNdf* const> per_material, int max_materials) {
+PrefilteredNdfBuffers pack_prefiltered_ndfs(std::span<const PrefilteredNdf* const> per_material, int max_materials,
+                                            bool box_prefix_tables) {
   PrefilteredNdfBuffers out;
   out.records.assign(static_cast<std::size_t>(max_materials), kNoPrefilteredNdf);
   for (std::size_t m = 0; m < per_material.size() && m < static_cast<std::size_t>(max_materials); ++m) {
@@ -28,11 +30,13 @@ PrefilteredNdfBuffers pack_prefiltered_ndfs(std::span<const PrefilteredNdf* cons
     const std::size_t groups_at = footprints_at + 4 * p->footprints.size();
     const std::size_t angular_at = out.values.size();
     const std::size_t rows_at = angular_at + p->angular.size();
+    const std::size_t tables_at = rows_at + p->rows.size();
     rec.insert(rec.end(), {word(p->levels.size()), word(static_cast<std::size_t>(p->grid.resolution)),
                            word(static_cast<std::size_t>(p->settings.block_size)),
                            word(static_cast<std::size_t>(p->rank())), bits(p->grid.extent), word(footprints_at),
                            word(groups_at), word(angular_at), word(rows_at), word(static_cast<std::size_t>(p->width)),
-                           word(static_cast<std::size_t>(p->height)), 0u});
+                           word(static_cast<std::size_t>(p->height)),
+                           box_prefix_tables ? word(tables_at) : kNoPrefilteredNdf});
     for (const PrefilterLevel& l : p->levels)
       rec.insert(rec.end(), {word(static_cast<std::size_t>(l.nx)), word(static_cast<std::size_t>(l.ny)),
                              bits(l.spacing.x), bits(l.spacing.y), l.first_footprint, bits(l.sigma), 0u, 0u});
@@ -40,6 +44,10 @@ PrefilteredNdfBuffers pack_prefiltered_ndfs(std::span<const PrefilteredNdf* cons
     rec.insert(rec.end(), p->group_offsets.begin(), p->group_offsets.end());
     out.values.insert(out.values.end(), p->angular.begin(), p->angular.end());
     out.values.insert(out.values.end(), p->rows.begin(), p->rows.end());
+    if (box_prefix_tables) {
+      const BoxPrefixTables tables = glintlab::box_prefix_tables(*p);
+      out.values.insert(out.values.end(), tables.values.begin(), tables.values.end());
+    }
     word(out.values.size());
     word(rec.size());
   }

@@ -5,11 +5,13 @@
 // records: word m (m < max_materials) holds material m's header offset, or kNoPrefilteredNdf.
 //   header at H: [0] levels, [1] N, [2] B, [3] R, [4] extent (float bits), [5] first word of the
 //   footprint records, [6] first word of the group offsets, [7] first float of the angular
-//   factors, [8] first float of the long factor's rows, [9] map width, [10] map height, [11] 0;
+//   factors, [8] first float of the long factor's rows, [9] map width, [10] map height, [11] first float of the box prefix
+//   tables (src/prefilter/box_prefix_tables.hpp), or kNoPrefilteredNdf where they were not packed;
 //   then per level l at H + 12 + 8 l: nx, ny, spacing.x, spacing.y (float bits), first footprint,
 //   sigma (float bits), 0, 0.
 //   footprint f: 4 words (mask_lo, mask_hi, first row, group); group g: its angular offset.
-// values: each material's angular factors (a, b, SA, SB per group), then its rows.
+// values: each material's angular factors (a, b, SA, SB per group), then its rows, then (if packed)
+//   its box prefix tables, (N/B)^2 (2R + 1) floats per footprint.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -27,7 +29,9 @@ struct PrefilteredNdfBuffers {
   std::vector<float> values;
 };
 
-/// `per_material[m]`: material m's pyramid, or null. Throws RuntimeFailure past 2^32 words.
-PrefilteredNdfBuffers pack_prefiltered_ndfs(std::span<const PrefilteredNdf* const> per_material, int max_materials);
+/// `per_material[m]`: material m's pyramid, or null; `box_prefix_tables`: whether to derive and pack
+/// the tables of constant-cost box queries. Throws RuntimeFailure past 2^32 words.
+PrefilteredNdfBuffers pack_prefiltered_ndfs(std::span<const PrefilteredNdf* const> per_material, int max_materials,
+                                            bool box_prefix_tables = true);
 
 }  // namespace glintlab

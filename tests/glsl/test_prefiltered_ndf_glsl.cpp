@@ -1,6 +1,6 @@
 // deng2022's GLSL queries (shaders/glints/normal-map/prefiltered_ndf.glsl) against the C++ ones
-// (src/prefilter/prefiltered_ndf.cpp) on the same packed pyramid: point and box queries over
-// random footprints (inside and outside the pyramid's range of sigma) and half vectors.
+// (src/prefilter/prefiltered_ndf.cpp) on the same packed pyramid: point and box queries (block by
+// block and through the box prefix tables) over random footprints (inside and outside the pyramid's range of sigma) and half vectors.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -61,7 +61,8 @@ TEST(PrefilteredNdfGlsl, QueriesAgreeWithTheCpu) {
 vec4 evaluate(vec4 a, vec4 b) {
   int m = int(a.w);
   if (!pndfPresent(m) || pndfPresent(0)) return vec4(-1.0);
-  return vec4(pndfDensity(m, a.xy, a.z, b.xy), pndfRangeMean(m, a.xy, a.z, b.xy - b.zw, b.xy + b.zw), 0.0, 0.0);
+  return vec4(pndfDensity(m, a.xy, a.z, b.xy), pndfRangeMean(m, a.xy, a.z, b.xy - b.zw, b.xy + b.zw, false),
+              pndfRangeMean(m, a.xy, a.z, b.xy - b.zw, b.xy + b.zw, true), 0.0);
 })",
                                  a, b);
   double peak = 0.0;
@@ -73,7 +74,9 @@ vec4 evaluate(vec4 a, vec4 b) {
     ASSERT_NE(out[i].x, -1.0f) << "the packed pyramid's material offsets";
     EXPECT_NEAR(out[i].x, d, 2e-4 * d + 1e-4) << "point query " << i;
     // The box query subtracts prefix sums: in float on the device, in double here.
-    EXPECT_NEAR(out[i].y, r, 2e-3 * r + 1e-4) << "box query " << i;
+    EXPECT_NEAR(out[i].y, r, 2e-3 * r + 1e-4) << "box query, block by block " << i;
+    // From the corners: differences of float prefix sums of the whole image.
+    EXPECT_NEAR(out[i].z, r, 2e-3 * r + 1e-3) << "box query, prefix tables " << i;
     nonzero += d > 0.1 ? 1 : 0;
   }
   EXPECT_GT(nonzero, 50);  // the sweep reaches the NDF's mass, not just empty space

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "core/cache_entry.hpp"
+#include "prefilter/box_prefix_tables.hpp"
 #include "prefilter/ndf_precompute.hpp"
 #include "prefilter/position_normal.hpp"
 #include "prefilter/prefilter_cache.hpp"
@@ -257,6 +258,48 @@ TEST(PrefilteredNdf, UniformMapStopsAfterOneLevelAbove) {
   const PrefilteredNdf p = precompute_prefiltered_ndf(flat, 0.02, s);
   ASSERT_EQ(p.levels.size(), 2u);
   EXPECT_LT(p.levels[1].distance_to_level_below, 1e-3);
+}
+
+// Issue 30, item 7: a box query from its four corners through the prefix tables is the block by
+// block sum (eq. 7) for boxes inside one block, across block rows and columns, and over the whole
+// image, in every footprint of every level.
+TEST(PrefilteredNdf, BoxQueriesFromTheirCornersEqualTheBlockByBlockSum) {
+  const PrefilteredNdf& p = pyramid();
+  const BoxPrefixTables tables = box_prefix_tables(p);
+  ASSERT_EQ(tables.values.size(), p.footprints.size() * static_cast<std::size_t>(p.blocks_per_side() * p.blocks_per_side() *
+                                                                                (2 * p.rank() + 1)));
+  const double n = p.grid.resolution, b = p.settings.block_size;
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  double peak = 0.0;
+  for (std::uint32_t f = 0; f < p.footprints.size(); ++f)
+    peak = std::max(peak, p.pixel_range_sum(f, {0, 0}, {n, n}));
+  int checked = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const auto f = static_cast<std::uint32_t>(u(rng) * static_cast<double>(p.footprints.size()));
+    glm::dvec2 x0, x1;
+    switch (i % 4) {
+      case 0:  // inside one block
+        x0 = glm::floor(glm::dvec2(u(rng), u(rng)) * (n / b)) * b + glm::dvec2(u(rng), u(rng)) * 0.5 * b;
+        x1 = x0 + glm::dvec2(u(rng), u(rng)) * 0.5 * b;
+        break;
+      case 1:  // one block column, several rows
+        x0 = {std::floor(u(rng) * (n / b)) * b + 0.3 * b, u(rng) * n * 0.3};
+        x1 = {x0.x + 0.5 * b, x0.y + u(rng) * 0.7 * n};
+        break;
+      case 2:  // anywhere
+        x0 = glm::dvec2(u(rng), u(rng)) * n;
+        x1 = x0 + glm::dvec2(u(rng), u(rng)) * (n - x0);
+        break;
+      default:  // the whole image
+        x0 = {0, 0};
+        x1 = {n, n};
+    }
+    const double expected = p.pixel_range_sum(f, x0, x1), got = box_prefix_range_sum(p, tables, f, x0, x1);
+    ASSERT_NEAR(got, expected, 1e-5 * peak + 1e-4 * expected) << "footprint " << f << " box " << i;
+    checked += expected > 1e-3 * peak ? 1 : 0;
+  }
+  EXPECT_GT(checked, 1000);  // boxes with mass, not only empty space
 }
 
 // Issue 30, item 4: sigma_0 in texels, and so the element fallback's cost below it, is the same on

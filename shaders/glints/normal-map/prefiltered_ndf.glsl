@@ -15,6 +15,7 @@ struct PndfHeader {
   int levels, n, b, rank;
   float extent;
   uint footprints, groups, angular, rows;
+  uint tables;  // the box prefix tables' first float, or PNDF_NONE
 };
 
 PndfHeader pndfHeader(int material) {
@@ -29,6 +30,7 @@ PndfHeader pndfHeader(int material) {
   h.groups = pndfRecords[h.at + 6u];
   h.angular = pndfRecords[h.at + 7u];
   h.rows = pndfRecords[h.at + 8u];
+  h.tables = pndfRecords[h.at + 11u];
   return h;
 }
 
@@ -90,6 +92,42 @@ float pndfPixelRangeSum(PndfHeader h, uint f, vec2 x0, vec2 x1) {
         total += (pndfPrefix(h, sa, a, hi.x, r) - pndfPrefix(h, sa, a, lo.x, r)) *
                  (pndfPrefix(h, sb, b, hi.y, r) - pndfPrefix(h, sb, b, lo.y, r)) * pndfValues[row + uint(r)];
     }
+  return max(total, 0.0);
+}
+
+// The same integral from the box's four corners through the footprint's box prefix tables
+// (src/prefilter/box_prefix_tables.hpp explains them; its box_prefix_range_sum is this one's twin):
+// R products per corner whatever the box's size. Differences of table entries come first, so that
+// a box inside one block row or column cancels exactly. Corner ij: x_i, y_j.
+float pndfPixelRangeSumByCorners(PndfHeader h, uint f, vec2 x0, vec2 x1) {
+  const int nb = h.n / h.b;
+  const uint a = pndfGroupAngular(h, f), b = a + uint(h.b * h.rank);
+  const uint sa = b + uint(h.b * h.rank), sb = sa + uint((h.b + 1) * h.rank);
+  const ivec2 block0 = min(ivec2(x0) / h.b, ivec2(nb - 1)), block1 = min(ivec2(x1) / h.b, ivec2(nb - 1));
+  const vec2 in0 = x0 - vec2(block0 * h.b), in1 = x1 - vec2(block1 * h.b);
+  const int bit00 = block0.y * nb + block0.x, bit10 = block0.y * nb + block1.x;
+  const int bit01 = block1.y * nb + block0.x, bit11 = block1.y * nb + block1.x;
+  const uint stride = uint(2 * h.rank + 1), table = h.tables + f * uint(nb * nb) * stride;
+  const uint t00 = table + uint(bit00) * stride, t10 = table + uint(bit10) * stride;
+  const uint t01 = table + uint(bit01) * stride, t11 = table + uint(bit11) * stride;
+  // Each corner's long factor; a dropped block reads the first row, weighted 0.
+  uint row00, row10, row01, row11;
+  const float k00 = pndfBlockRow(h, f, bit00, row00) ? 1.0 : 0.0, k10 = pndfBlockRow(h, f, bit10, row10) ? 1.0 : 0.0;
+  const float k01 = pndfBlockRow(h, f, bit01, row01) ? 1.0 : 0.0, k11 = pndfBlockRow(h, f, bit11, row11) ? 1.0 : 0.0;
+  row00 = k00 > 0.0 ? row00 : h.rows;
+  row10 = k10 > 0.0 ? row10 : h.rows;
+  row01 = k01 > 0.0 ? row01 : h.rows;
+  row11 = k11 > 0.0 ? row11 : h.rows;
+  float total = (pndfValues[t11] - pndfValues[t01]) - (pndfValues[t10] - pndfValues[t00]);
+  for (int r = 0; r < h.rank; ++r) {
+    const float pa0 = pndfPrefix(h, sa, a, in0.x, r), pa1 = pndfPrefix(h, sa, a, in1.x, r);
+    const float pb0 = pndfPrefix(h, sb, b, in0.y, r), pb1 = pndfPrefix(h, sb, b, in1.y, r);
+    const uint u = uint(1 + r), l = uint(1 + h.rank + r);
+    total += pa1 * pb1 * k11 * pndfValues[row11 + uint(r)] - pa0 * pb1 * k01 * pndfValues[row01 + uint(r)] -
+             pa1 * pb0 * k10 * pndfValues[row10 + uint(r)] + pa0 * pb0 * k00 * pndfValues[row00 + uint(r)] +
+             pa1 * (pndfValues[t11 + u] - pndfValues[t10 + u]) + pa0 * (pndfValues[t00 + u] - pndfValues[t01 + u]) +
+             pb1 * (pndfValues[t11 + l] - pndfValues[t01 + l]) + pb0 * (pndfValues[t00 + l] - pndfValues[t10 + l]);
+  }
   return max(total, 0.0);
 }
 
@@ -159,8 +197,10 @@ float pndfDensity(int material, vec2 centre, float sigma, vec2 s) {
   return max(sum, 0.0);  // a CP reconstruction can dip below 0 where the NDF is near it
 }
 
-// The mean of P over the box [lo, hi] of s (0 outside the image).
-float pndfRangeMean(int material, vec2 centre, float sigma, vec2 lo, vec2 hi) {
+// The mean of P over the box [lo, hi] of s (0 outside the image). `prefixTables` (a constant of the
+// caller's, so that one path is compiled): through the box prefix tables, which the pyramid must
+// have been packed with, at a constant cost; otherwise block by block (eq. 7).
+float pndfRangeMean(int material, vec2 centre, float sigma, vec2 lo, vec2 hi, bool prefixTables) {
   const PndfHeader h = pndfHeader(material);
   const vec2 size = hi - lo;
   if (!(size.x > 0.0 && size.y > 0.0)) return pndfDensity(material, centre, sigma, 0.5 * (lo + hi));
@@ -171,7 +211,8 @@ float pndfRangeMean(int material, vec2 centre, float sigma, vec2 lo, vec2 hi) {
   for (int q = 0; q < 8; ++q) {
     float weight;
     const uint footprint = pndfCorner(interpolation, q, weight);
-    if (weight > 0.0) sum += weight * pndfPixelRangeSum(h, footprint, x0, x1);
+    if (weight > 0.0)
+      sum += weight * (prefixTables ? pndfPixelRangeSumByCorners(h, footprint, x0, x1) : pndfPixelRangeSum(h, footprint, x0, x1));
   }
   const float pixel = 2.0 * h.extent / float(h.n);
   return sum * pixel * pixel / (size.x * size.y);

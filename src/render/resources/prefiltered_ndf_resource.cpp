@@ -3,6 +3,7 @@
 // (src/prefilter/), read from the disk cache or precomputed, packed into the two storage buffers
 // shaders/glints/normal-map/prefiltered_ndf.glsl reads (kPrefilteredNdf*Binding).
 #include <cstdio>
+#include <string>
 
 #include "core/gpu_contract.hpp"
 #include "core/hash.hpp"
@@ -18,6 +19,13 @@ namespace glintlab {
 namespace {
 
 bool has_pyramid(const Material& m) { return m.is("normal-map-glints") && m.normal_map; }
+
+// deng2022's `box_queries` (src/shading/methods/deng2022.cpp): 0, prefix-tables, packs the tables
+// of constant-cost box queries; 1, blocks, does without them.
+bool wants_box_prefix_tables(const ParamValues& params) {
+  const auto it = params.find("box_queries");
+  return it == params.end() || it->second == 0.0f;
+}
 
 class PrefilteredNdfBuffersResource : public GpuResource {
  public:
@@ -58,14 +66,16 @@ ResourceType prefiltered_ndf_resource() {
             }
             char hex[17];
             std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h.digest()));
-            return prefilter_settings_from(c.params).describe() + " maps=" + hex;
+            return prefilter_settings_from(c.params).describe() + " box_prefix_tables=" +
+                   std::to_string(wants_box_prefix_tables(c.params)) + " maps=" + hex;
           },
       .estimate_bytes =
           [](const ResourceContext& c) {
             std::uint64_t bytes = 4 * kMaxMaterials + sizeof(float);  // each material's word; a value at least
             const PrefilterSettings settings = prefilter_settings_from(c.params);
             for (const Material& m : c.scene.materials)
-              if (has_pyramid(m)) bytes += prefiltered_ndf_bytes_bound(settings, m.normal_map->width, m.normal_map->height);
+              if (has_pyramid(m)) bytes += prefiltered_ndf_bytes_bound(settings, m.normal_map->width, m.normal_map->height,
+                                                                  wants_box_prefix_tables(c.params));
             return bytes;
           },
       .make =
@@ -80,7 +90,8 @@ ResourceType prefiltered_ndf_resource() {
                                                 : nullptr);
               per_material.push_back(pyramids.back().get());
             }
-            PrefilteredNdfBuffers packed = pack_prefiltered_ndfs(per_material, kMaxMaterials);
+            PrefilteredNdfBuffers packed =
+                pack_prefiltered_ndfs(per_material, kMaxMaterials, wants_box_prefix_tables(c.params));
             if (packed.values.empty()) packed.values.push_back(0.0f);  // a buffer is never empty
             return std::make_unique<PrefilteredNdfBuffersResource>(packed);
           },

@@ -29,6 +29,13 @@ MethodDescriptor deng2022_method() {
                   "first level's NDF: blurred)",
                   {"yan2016", "yan2016-k1", "clamp"},
                   /*compile_time=*/true},
+                 {"box_queries", 0, 0, 1,
+                  "box queries (lights with extent): prefix-tables (per footprint, 2D prefix sums over its angular "
+                  "blocks: any box is its 4 corners, a constant cost; 2R + 1 more floats per block of every "
+                  "footprint) or blocks (the paper's eq. 7 block by block: no more storage, a cost growing with the "
+                  "blocks the box overlaps, up to (N/B)^2)",
+                  {"prefix-tables", "blocks"},
+                  /*compile_time=*/true},
                  {"anisotropic_probes", 8.0f, 1.0f, 16.0f,
                   "isotropic pyramid queries along an anisotropic footprint's major axis, at most (1: one query of "
                   "the footprint's area, blurred along the minor axis and cut along the major one)",

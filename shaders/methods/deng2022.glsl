@@ -19,6 +19,7 @@
 #include "glints/normal-map/prefiltered_ndf.glsl"
 #include "glints/normal-map/footprint_probes.glsl"
 
+PndfHeader gPyramid;       // the material's pyramid, read once per pixel
 FootprintProbes gProbes;  // the footprint as isotropic queries of the pyramid (texels of the map)
 float gMaskingAlpha;
 vec3 gDiffuseNormal;  // the map's filtered normal in the macro frame, for Lambert
@@ -34,14 +35,14 @@ float normalGlintsDensity(vec2 s) {
   if (gBelowPyramid) return positionNormalDensity(uNormalMap, gElements, FALLBACK_K, s);
   float sum = 0.0;
   for (int j = 0; j < gProbes.count; ++j)
-    sum += probeWeight(gProbes, j) * pndfDensity(uMaterial, probeCentre(gProbes, j), gProbes.sigma, s);
+    sum += probeWeight(gProbes, j) * pndfDensity(gPyramid, probeCentre(gProbes, j), gProbes.sigma, s);
   return sum;
 }
 float normalGlintsBoxMean(vec2 lo, vec2 hi) {
   if (gBelowPyramid) return positionNormalBoxMean(uNormalMap, gElements, FALLBACK_K, lo, hi);
   float sum = 0.0;
   for (int j = 0; j < gProbes.count; ++j)
-    sum += probeWeight(gProbes, j) * pndfRangeMean(uMaterial, probeCentre(gProbes, j), gProbes.sigma, lo, hi,
+    sum += probeWeight(gProbes, j) * pndfRangeMean(gPyramid, probeCentre(gProbes, j), gProbes.sigma, lo, hi,
                                                    param_box_queries == BOX_QUERIES_PREFIX_TABLES);
   return sum;
 }
@@ -56,7 +57,8 @@ void prepareSurface(inout Surface s) {
   vec2 centre = fract(s.uv) * vec2(size);
   MaterialData m = materials[uMaterial];
   gMaskingAlpha = normalMapGlintsMaskingAlpha(m);
-  float sigma0 = pndfFirstSigma(uMaterial);
+  gPyramid = pndfHeader(uMaterial);
+  float sigma0 = pndfFirstSigma(gPyramid);
   gProbes = footprintProbes(centre, sigmaP, sigma0, int(param_anisotropic_probes));
   // The switch (sec. 5.1): the pyramid cannot resolve a footprint whose minor axis is finer than
   // sigma_0; such a footprint is summed over the map's elements in its true shape (never shrunk)

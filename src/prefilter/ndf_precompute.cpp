@@ -57,11 +57,16 @@ PrefilteredNdf precompute_prefiltered_ndf(const NormalMap& map, double intrinsic
   const PositionNormalDistribution pnd(map, intrinsic_roughness, settings.elements_per_texel);
   PrefilteredNdf out;
   out.settings = settings;
+  const double extent = pnd.suggested_extent();
+  const NdfGridChoice chosen = choose_ndf_grid(settings, extent, intrinsic_roughness);
+  out.settings.ndf_resolution = chosen.resolution;
+  out.settings.block_size = chosen.block_size;
+  out.settings.validate();  // an explicit block_size must divide the N chosen
   out.width = map.width;
   out.height = map.height;
   out.intrinsic_roughness = intrinsic_roughness;
-  out.grid = {settings.ndf_resolution, pnd.suggested_extent()};
-  const int n = settings.ndf_resolution, b = settings.block_size, nb = n / b, r = settings.cp.rank;
+  out.grid = {chosen.resolution, extent};
+  const int n = chosen.resolution, b = chosen.block_size, nb = n / b, r = settings.cp.rank;
   const int g = settings.group_footprints;
 
   const int nx0 = base_footprints(map.width, settings), ny0 = base_footprints(map.height, settings);

@@ -28,8 +28,11 @@ std::string mismatch(const PrefilteredNdf& p, const NormalMap& map, double intri
                      const PrefilterSettings& settings) {
   if (p.width != map.width || p.height != map.height) return "its map size is not the map's";
   if (p.intrinsic_roughness != intrinsic_roughness) return "its intrinsic roughness differs";
-  if (p.settings.elements_per_texel != settings.elements_per_texel || p.settings.ndf_resolution != settings.ndf_resolution ||
-      p.settings.block_size != settings.block_size || p.settings.cp.rank != settings.cp.rank)
+  // ndf_resolution and block_size 0 ask for a grid chosen from the map (choose_ndf_grid).
+  const auto differs = [](int stored, int asked) { return asked != 0 && stored != asked; };
+  if (p.settings.elements_per_texel != settings.elements_per_texel ||
+      differs(p.settings.ndf_resolution, settings.ndf_resolution) || differs(p.settings.block_size, settings.block_size) ||
+      p.settings.cp.rank != settings.cp.rank)
     return "its settings differ from its header";
   if (static_cast<int>(p.levels.size()) > settings.max_levels) return "it has more levels than allowed";
   return {};

@@ -50,9 +50,11 @@ void PrefilterSettings::validate() const {
     }
   };
   need(elements_per_texel >= 1 && elements_per_texel <= 2, "elements_per_texel", elements_per_texel, "1 .. 2");
-  need(ndf_resolution >= 8 && ndf_resolution <= 256, "ndf_resolution", ndf_resolution, "8 .. 256");
-  need(block_size >= 4 && ndf_resolution % block_size == 0 && ndf_resolution / block_size <= 8, "block_size",
-       block_size, "a divisor of ndf_resolution, >= 4, with at most 8 blocks per side");
+  need(ndf_resolution == 0 || (ndf_resolution >= 8 && ndf_resolution <= 256), "ndf_resolution", ndf_resolution,
+       "0 (from sigma_r) or 8 .. 256");
+  need(block_size == 0 || (block_size >= 4 && (ndf_resolution == 0 || (ndf_resolution % block_size == 0 &&
+                                                                       ndf_resolution / block_size <= 8))),
+       "block_size", block_size, "0 (N / 4), or a divisor of ndf_resolution, >= 4, with at most 8 blocks per side");
   need(base_stride >= 1 && base_stride <= 64, "base_stride", base_stride, "1 .. 64");
   need(group_footprints >= 1 && group_footprints <= 64, "group_footprints", group_footprints, "1 .. 64");
   need(stop_tolerance >= 0 && stop_tolerance <= 1, "stop_tolerance", stop_tolerance, "0 .. 1");
@@ -61,12 +63,24 @@ void PrefilterSettings::validate() const {
   cp.validate();
 }
 
+NdfGridChoice choose_ndf_grid(const PrefilterSettings& settings, double extent, double sigma_r) {
+  NdfGridChoice c{settings.ndf_resolution, settings.block_size};
+  if (c.resolution == 0) {
+    const double pixels = 4.0 * extent / std::max(sigma_r, 1e-6);  // 2 extent / (sigma_r / 2)
+    c.resolution = std::clamp(16 * static_cast<int>(std::ceil(std::min(pixels, 256.0) / 16.0)), 32, 256);
+  }
+  if (c.block_size == 0) c.block_size = c.resolution / 4;
+  return c;
+}
+
 std::uint64_t prefiltered_ndf_bytes_bound(const PrefilterSettings& settings, int width, int height,
                                           bool box_prefix_tables) {
-  const std::uint64_t blocks = static_cast<std::uint64_t>(settings.ndf_resolution / settings.block_size) *
-                               static_cast<std::uint64_t>(settings.ndf_resolution / settings.block_size);
+  // Before the map's extent is known: the finest grid ndf_resolution 0 may choose.
+  const NdfGridChoice grid = choose_ndf_grid(settings, 1.0, settings.ndf_resolution == 0 ? 1e-6 : 1.0);
+  const std::uint64_t blocks = static_cast<std::uint64_t>(grid.resolution / grid.block_size) *
+                               static_cast<std::uint64_t>(grid.resolution / grid.block_size);
   const std::uint64_t rank = static_cast<std::uint64_t>(settings.cp.rank);
-  const std::uint64_t b = static_cast<std::uint64_t>(settings.block_size);
+  const std::uint64_t b = static_cast<std::uint64_t>(grid.block_size);
   std::uint64_t nx = static_cast<std::uint64_t>(base_footprints(width, settings));
   std::uint64_t ny = static_cast<std::uint64_t>(base_footprints(height, settings));
   std::uint64_t bytes = 4 * 12;  // the header's words (src/prefilter/prefiltered_ndf_layout.hpp)

@@ -21,8 +21,8 @@ namespace glintlab {
 
 struct PrefilterSettings {
   int elements_per_texel = 2;      ///< Yan 2016's elements per texel and axis (the NDF images' source)
-  int ndf_resolution = 64;         ///< N: an NDF image is N x N
-  int block_size = 16;             ///< B: angular blocks of B x B pixels (N / B per side, at most 8)
+  int ndf_resolution = 64;         ///< N: an NDF image is N x N; 0: from sigma_r (choose_ndf_grid)
+  int block_size = 16;             ///< B: angular blocks of B x B pixels (N / B per side, at most 8); 0: N / 4
   int base_stride = 2;             ///< level 0's footprints lie this many texels apart (and sigma_0 is
                                    ///< this), whatever the map's size (sec. 4.1: a fixed stride)
   int group_footprints = 4;        ///< a group (one tensor) holds up to this squared footprints of a level
@@ -46,6 +46,15 @@ struct PrefilterSettings {
   /// Throws InputError naming the setting, its value and what is allowed.
   void validate() const;
 };
+
+/// N and B of a map's NDF images over [-extent, extent]^2 at intrinsic roughness sigma_r (issue 30,
+/// item 5): the settings' own where set; ndf_resolution 0: the smallest multiple of 16 whose pixel
+/// 2 extent / N is at most sigma_r / 2, within 32 .. 256; block_size 0: N / 4 (4 blocks a side, so
+/// that a finer grid costs no more per query and stores only longer angular factors).
+struct NdfGridChoice {
+  int resolution = 0, block_size = 0;
+};
+[[nodiscard]] NdfGridChoice choose_ndf_grid(const PrefilterSettings& settings, double extent, double sigma_r);
 
 /// Level 0's footprints along a side of `texels` texels: one every base_stride texels (at least one).
 [[nodiscard]] inline int base_footprints(int texels, const PrefilterSettings& settings) {

@@ -61,8 +61,9 @@ TEST(PrefilteredNdfGlsl, QueriesAgreeWithTheCpu) {
 vec4 evaluate(vec4 a, vec4 b) {
   int m = int(a.w);
   if (!pndfPresent(m) || pndfPresent(0)) return vec4(-1.0);
-  return vec4(pndfDensity(m, a.xy, a.z, b.xy), pndfRangeMean(m, a.xy, a.z, b.xy - b.zw, b.xy + b.zw, false),
-              pndfRangeMean(m, a.xy, a.z, b.xy - b.zw, b.xy + b.zw, true), 0.0);
+  PndfHeader h = pndfHeader(m);
+  return vec4(pndfDensity(h, a.xy, a.z, b.xy), pndfRangeMean(h, a.xy, a.z, b.xy - b.zw, b.xy + b.zw, false),
+              pndfRangeMean(h, a.xy, a.z, b.xy - b.zw, b.xy + b.zw, true), 0.0);
 })",
                                  a, b);
   double peak = 0.0;
@@ -112,9 +113,9 @@ TEST(PrefilteredNdfGlsl, ProbesAlongTheMajorAxisApproachTheExactNdfOfAnAnisotrop
     return evaluate_glsl("#include \"glints/normal-map/prefiltered_ndf.glsl\"\n"
                          "#include \"glints/normal-map/footprint_probes.glsl\"\n", R"(
 vec4 evaluate(vec4 a, vec4 b) {
-  FootprintProbes p = footprintProbes(b.zw, mat2(a.x, a.y, a.y, a.z), pndfFirstSigma(2), int(a.w));
+  FootprintProbes p = footprintProbes(b.zw, mat2(a.x, a.y, a.y, a.z), pndfFirstSigma(pndfHeader(2)), int(a.w));
   float sum = 0.0;
-  for (int j = 0; j < p.count; ++j) sum += probeWeight(p, j) * pndfDensity(2, probeCentre(p, j), p.sigma, b.xy);
+  for (int j = 0; j < p.count; ++j) sum += probeWeight(p, j) * pndfDensity(pndfHeader(2), probeCentre(p, j), p.sigma, b.xy);
   return vec4(sum, 0.0, 0.0, 0.0);
 })", a, b);
   };

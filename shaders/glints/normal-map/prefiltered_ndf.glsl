@@ -1,6 +1,7 @@
 // Deng et al. 2022's queries on a material's CP-compressed NDF pyramid (docs/methods.md#deng2022):
 // the GLSL twin of src/prefilter/prefiltered_ndf.cpp, reading the layout of
-// src/prefilter/prefiltered_ndf_layout.hpp from two storage buffers. Nothing here feeds a
+// src/prefilter/prefiltered_ndf_layout.hpp from two storage buffers. The queries take the
+// material's header, read once per pixel (pndfHeader), not once per light. Nothing here feeds a
 // derivative, so llvmpipe's masked helper-invocation loads do not matter.
 #include "generated/gpu_contract.glsl"
 #include "core/wrap.glsl"
@@ -39,7 +40,7 @@ bool pndfPresent(int material) { return material >= 0 && pndfRecords[material] !
 uint pndfLevelWord(PndfHeader h, int level, uint field) { return pndfRecords[h.at + 12u + 8u * uint(level) + field]; }
 
 // The footprint sigma (texels) of the pyramid's first level.
-float pndfFirstSigma(int material) { return uintBitsToFloat(pndfLevelWord(pndfHeader(material), 0, 5u)); }
+float pndfFirstSigma(PndfHeader h) { return uintBitsToFloat(pndfLevelWord(h, 0, 5u)); }
 
 // Whether block `bit` of footprint f is kept, and the float index of its row of the long factor.
 bool pndfBlockRow(PndfHeader h, uint f, int bit, out uint row) {
@@ -53,19 +54,6 @@ bool pndfBlockRow(PndfHeader h, uint f, int bit, out uint row) {
 }
 
 uint pndfGroupAngular(PndfHeader h, uint f) { return h.angular + pndfRecords[h.groups + pndfRecords[h.footprints + 4u * f + 3u]]; }
-
-// Reconstructed pixel (i, j) of footprint f (eq. 6): sum_r a(i, r) b(j, r) c(k, r).
-float pndfPixel(PndfHeader h, uint f, int i, int j) {
-  if (i < 0 || j < 0 || i >= h.n || j >= h.n) return 0.0;
-  const int nb = h.n / h.b;
-  uint row;
-  if (!pndfBlockRow(h, f, (j / h.b) * nb + i / h.b, row)) return 0.0;
-  const uint a = pndfGroupAngular(h, f) + uint((i % h.b) * h.rank);
-  const uint b = pndfGroupAngular(h, f) + uint((h.b + j % h.b) * h.rank);
-  float v = 0.0;
-  for (int r = 0; r < h.rank; ++r) v += pndfValues[a + uint(r)] * pndfValues[b + uint(r)] * pndfValues[row + uint(r)];
-  return v;
-}
 
 // S(t) = S[floor t] + frac(t) m[floor t]: a factor column's integral from 0 to t (t in [0, B]).
 float pndfPrefix(PndfHeader h, uint sums, uint factor, float t, int r) {
@@ -178,20 +166,45 @@ uint pndfCorner(PndfInterpolation interpolation, int q, out float weight) {
 vec2 pndfToPixels(PndfHeader h, vec2 s) { return (s + h.extent) * (float(h.n) / (2.0 * h.extent)); }
 
 // P(s) of the footprint: pixels bilinearly interpolated (0 outside the image), never negative.
-float pndfDensity(int material, vec2 centre, float sigma, vec2 s) {
-  const PndfHeader h = pndfHeader(material);
+// Bilinear weights are separable, so per stored footprint the 2 x 2 pixels are summed in factor
+// space: sum_r (w_i0 a(i0, r) + w_i1 a(i1, r)) (w_j0 b(j0, r) + w_j1 b(j1, r)) c(r) where they share
+// a block (most of the time), each of the up to 4 blocks with its own c otherwise; 8 loads per rank.
+float pndfDensity(PndfHeader h, vec2 centre, float sigma, vec2 s) {
   const PndfInterpolation interpolation = pndfInterpolation(h, centre, sigma);
   const vec2 x = pndfToPixels(h, s) - 0.5;
-  const vec2 x0 = floor(x), fr = x - x0;
+  const vec2 fr = x - floor(x);
+  const ivec2 p0 = ivec2(floor(x)), p1 = p0 + 1;
+  // Pixels outside the image weigh 0 (and read a pixel inside it).
+  const vec2 w0 = mix(vec2(0.0), 1.0 - fr, equal(p0, clamp(p0, 0, h.n - 1)));
+  const vec2 w1 = mix(vec2(0.0), fr, equal(p1, clamp(p1, 0, h.n - 1)));
+  const ivec2 q0 = clamp(p0, 0, h.n - 1), q1 = clamp(p1, 0, h.n - 1);
+  const int nb = h.n / h.b;
+  const ivec2 block0 = q0 / h.b, block1 = q1 / h.b;
+  const ivec2 in0 = q0 - block0 * h.b, in1 = q1 - block1 * h.b;
   float sum = 0.0;
   for (int q = 0; q < 8; ++q) {
     float weight;
     const uint footprint = pndfCorner(interpolation, q, weight);
     if (weight <= 0.0) continue;
-    for (int c = 0; c < 4; ++c) {
-      const ivec2 d = ivec2(c & 1, c >> 1);
-      const float w = (d.x == 1 ? fr.x : 1.0 - fr.x) * (d.y == 1 ? fr.y : 1.0 - fr.y);
-      sum += weight * w * pndfPixel(h, footprint, int(x0.x) + d.x, int(x0.y) + d.y);
+    const uint a = pndfGroupAngular(h, footprint), b = a + uint(h.b * h.rank);
+    uint row00, row10, row01, row11;
+    const float k00 = pndfBlockRow(h, footprint, block0.y * nb + block0.x, row00) ? weight : 0.0;
+    const float k10 = pndfBlockRow(h, footprint, block0.y * nb + block1.x, row10) ? weight : 0.0;
+    const float k01 = pndfBlockRow(h, footprint, block1.y * nb + block0.x, row01) ? weight : 0.0;
+    const float k11 = pndfBlockRow(h, footprint, block1.y * nb + block1.x, row11) ? weight : 0.0;
+    // A dropped block reads the first row, weighted 0.
+    row00 = k00 > 0.0 ? row00 : h.rows;
+    row10 = k10 > 0.0 ? row10 : h.rows;
+    row01 = k01 > 0.0 ? row01 : h.rows;
+    row11 = k11 > 0.0 ? row11 : h.rows;
+    const uint ai0 = a + uint(in0.x * h.rank), ai1 = a + uint(in1.x * h.rank);
+    const uint bj0 = b + uint(in0.y * h.rank), bj1 = b + uint(in1.y * h.rank);
+    for (int r = 0; r < h.rank; ++r) {
+      const uint u = uint(r);
+      const float x0 = w0.x * pndfValues[ai0 + u], x1 = w1.x * pndfValues[ai1 + u];
+      const float y0 = w0.y * pndfValues[bj0 + u], y1 = w1.y * pndfValues[bj1 + u];
+      sum += x0 * (y0 * k00 * pndfValues[row00 + u] + y1 * k01 * pndfValues[row01 + u]) +
+             x1 * (y0 * k10 * pndfValues[row10 + u] + y1 * k11 * pndfValues[row11 + u]);
     }
   }
   return max(sum, 0.0);  // a CP reconstruction can dip below 0 where the NDF is near it
@@ -200,10 +213,9 @@ float pndfDensity(int material, vec2 centre, float sigma, vec2 s) {
 // The mean of P over the box [lo, hi] of s (0 outside the image). `prefixTables` (a constant of the
 // caller's, so that one path is compiled): through the box prefix tables, which the pyramid must
 // have been packed with, at a constant cost; otherwise block by block (eq. 7).
-float pndfRangeMean(int material, vec2 centre, float sigma, vec2 lo, vec2 hi, bool prefixTables) {
-  const PndfHeader h = pndfHeader(material);
+float pndfRangeMean(PndfHeader h, vec2 centre, float sigma, vec2 lo, vec2 hi, bool prefixTables) {
   const vec2 size = hi - lo;
-  if (!(size.x > 0.0 && size.y > 0.0)) return pndfDensity(material, centre, sigma, 0.5 * (lo + hi));
+  if (!(size.x > 0.0 && size.y > 0.0)) return pndfDensity(h, centre, sigma, 0.5 * (lo + hi));
   const vec2 x0 = clamp(pndfToPixels(h, lo), 0.0, float(h.n)), x1 = clamp(pndfToPixels(h, hi), 0.0, float(h.n));
   if (!(x1.x > x0.x && x1.y > x0.y)) return 0.0;
   const PndfInterpolation interpolation = pndfInterpolation(h, centre, sigma);

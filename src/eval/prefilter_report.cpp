@@ -9,6 +9,7 @@
 #include "core/atomic_file.hpp"
 #include "core/cache_directory.hpp"
 #include "core/error.hpp"
+#include "prefilter/box_prefix_tables.hpp"
 #include "prefilter/position_normal.hpp"
 #include "prefilter/prefilter_cache.hpp"
 
@@ -78,9 +79,11 @@ void run_prefilter_report(const Scene& scene, const PrefilterReportOptions& opti
     const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     std::printf("material '%s': %s, %dx%d, sigma_r %g\n  %s\n", m.name.c_str(), m.normal_map->description.c_str(),
                 p.width, p.height, p.intrinsic_roughness, options.settings.describe().c_str());
-    std::printf("  NDF images %dx%d over |s| <= %.3f, %zu levels, %.2f MB; precompute %.1f s (this run %.1f s)\n",
-                p.grid.resolution, p.grid.resolution, p.grid.extent, p.levels.size(), p.storage_bytes() / 1e6,
-                p.precompute_seconds, seconds);
+    std::printf("  NDF images %dx%d in %dx%d blocks over |s| <= %.3f, %zu levels, %.2f MB (box_queries = "
+                "prefix-tables adds %.2f MB on the GPU); precompute %.1f s (this run %.1f s)\n",
+                p.grid.resolution, p.grid.resolution, p.settings.block_size, p.settings.block_size, p.grid.extent,
+                p.levels.size(), p.storage_bytes() / 1e6, box_prefix_tables_bytes(p) / 1e6, p.precompute_seconds,
+                seconds);
     std::printf("  %5s %8s %11s %8s %12s %12s %12s %10s %10s\n", "level", "sigma", "footprints", "groups",
                 "kept blocks", "CP error", "vs below", "NDF (s)", "CP (s)");
     nlohmann::json levels = nlohmann::json::array();
@@ -105,6 +108,7 @@ void run_prefilter_report(const Scene& scene, const PrefilterReportOptions& opti
                             {"settings", options.settings.describe()},
                             {"rank", p.rank()},
                             {"storage_bytes", p.storage_bytes()},
+                            {"box_prefix_tables_bytes", box_prefix_tables_bytes(p)},
                             {"precompute_seconds", p.precompute_seconds},
                             {"ndf_thread_seconds", ndf_seconds},
                             {"compress_thread_seconds", cp_seconds},

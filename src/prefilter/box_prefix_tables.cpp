@@ -10,40 +10,43 @@ BoxPrefixTables box_prefix_tables(const PrefilteredNdf& pyramid) {
   t.block_stride = 2 * r + 1;
   t.footprint_stride = nb * nb * t.block_stride;
   t.values.assign(pyramid.footprints.size() * static_cast<std::size_t>(t.footprint_stride), 0.0f);
-  std::vector<double> q(static_cast<std::size_t>((nb + 1) * (nb + 1)));  // Q with a zero row and column
-  std::vector<double> u(static_cast<std::size_t>(r)), l(static_cast<std::size_t>(r));
+  // Running sums in double, in bit order: Q over the blocks below and left (q[bx]: the column
+  // sums below the current row, left of and including bx), U per column, L along the row.
+  std::vector<double> column_below(static_cast<std::size_t>(nb)), u(static_cast<std::size_t>(nb * r));
+  std::vector<double> l(static_cast<std::size_t>(r));
   for (std::uint32_t f = 0; f < pyramid.footprints.size(); ++f) {
     const PrefilteredNdf::AngularFactors af = pyramid.angular_factors(f);
     const float* a_total = af.sa + static_cast<std::size_t>(b * r);  // row B of the prefix sums
     const float* b_total = af.sb + static_cast<std::size_t>(b * r);
-    std::fill(q.begin(), q.end(), 0.0);
-    for (int by = 0; by < nb; ++by)
-      for (int bx = 0; bx < nb; ++bx) {
-        const float* c = pyramid.block_factor(f, by * nb + bx);
-        double block_total = 0.0;
-        for (int k = 0; k < r && c; ++k) block_total += static_cast<double>(a_total[k]) * b_total[k] * c[k];
-        // q[(by + 1) (nb + 1) + bx + 1]: the blocks up to and including (bx, by).
-        const auto at = [&](int x, int y) -> double& { return q[static_cast<std::size_t>(y * (nb + 1) + x)]; };
-        at(bx + 1, by + 1) = block_total + at(bx, by + 1) + at(bx + 1, by) - at(bx, by);
-      }
-    for (int by = 0; by < nb; ++by)
+    std::fill(column_below.begin(), column_below.end(), 0.0);
+    std::fill(u.begin(), u.end(), 0.0);
+    for (int by = 0; by < nb; ++by) {
+      std::fill(l.begin(), l.end(), 0.0);
+      double q = 0.0;  // sum of column_below[0 .. bx - 1]
       for (int bx = 0; bx < nb; ++bx) {
         float* out = &t.values[static_cast<std::size_t>(f) * static_cast<std::size_t>(t.footprint_stride) +
                                static_cast<std::size_t>((by * nb + bx) * t.block_stride)];
-        out[0] = static_cast<float>(q[static_cast<std::size_t>(by * (nb + 1) + bx)]);
-        std::fill(u.begin(), u.end(), 0.0);
-        std::fill(l.begin(), l.end(), 0.0);
-        for (int below = 0; below < by; ++below)
-          if (const float* c = pyramid.block_factor(f, below * nb + bx))
-            for (int k = 0; k < r; ++k) u[static_cast<std::size_t>(k)] += static_cast<double>(b_total[k]) * c[k];
-        for (int left = 0; left < bx; ++left)
-          if (const float* c = pyramid.block_factor(f, by * nb + left))
-            for (int k = 0; k < r; ++k) l[static_cast<std::size_t>(k)] += static_cast<double>(a_total[k]) * c[k];
+        double* column = &u[static_cast<std::size_t>(bx * r)];
+        out[0] = static_cast<float>(q);
         for (int k = 0; k < r; ++k) {
-          out[1 + k] = static_cast<float>(u[static_cast<std::size_t>(k)]);
+          out[1 + k] = static_cast<float>(column[k]);
           out[1 + r + k] = static_cast<float>(l[static_cast<std::size_t>(k)]);
         }
+        q += column_below[static_cast<std::size_t>(bx)];
+        if (const float* c = pyramid.block_factor(f, by * nb + bx))
+          for (int k = 0; k < r; ++k) {
+            column[k] += static_cast<double>(b_total[k]) * c[k];
+            l[static_cast<std::size_t>(k)] += static_cast<double>(a_total[k]) * c[k];
+          }
       }
+      // The row done: each column's total below the next row.
+      for (int bx = 0; bx < nb; ++bx) {
+        double below = 0.0;
+        const double* column = &u[static_cast<std::size_t>(bx * r)];
+        for (int k = 0; k < r; ++k) below += a_total[k] * column[k];
+        column_below[static_cast<std::size_t>(bx)] = below;
+      }
+    }
   }
   return t;
 }

@@ -9,6 +9,7 @@
 // totals times c); L_r: over the blocks left in the row (a totals times c). Any box is then its four
 // corners, O(R) each whatever its size. Derived from the pyramid when it is packed (not cached):
 // 2R + 1 floats per block of every footprint.
+#include <cstddef>
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <vector>
@@ -29,6 +30,12 @@ struct BoxPrefixTables {
 };
 
 [[nodiscard]] BoxPrefixTables box_prefix_tables(const PrefilteredNdf& pyramid);
+
+/// The tables' size in bytes without building them: (N/B)^2 (2R + 1) floats per footprint.
+[[nodiscard]] inline std::size_t box_prefix_tables_bytes(const PrefilteredNdf& pyramid) {
+  const auto blocks = static_cast<std::size_t>(pyramid.blocks_per_side() * pyramid.blocks_per_side());
+  return pyramid.footprints.size() * blocks * static_cast<std::size_t>(2 * pyramid.rank() + 1) * sizeof(float);
+}
 
 /// PrefilteredNdf::pixel_range_sum through the tables: the integral of footprint f's pixels over
 /// [x0, x1] (continuous pixel coordinates in [0, N]) from its four corners, the differences of

@@ -118,12 +118,9 @@ const float* PrefilteredNdf::block_factor(std::uint32_t footprint, int bit) cons
 
 double PrefilteredNdf::pixel(std::uint32_t footprint, int i, int j) const {
   const int b = settings.block_size, nb = blocks_per_side(), r = rank();
-  const FootprintRecord& rec = footprints[footprint];
-  const int bit = (j / b) * nb + i / b;
-  if (!kept(rec, bit)) return 0.0;
-  const float* a = &angular[group_offsets[rec.group]];
-  const float* bf = a + static_cast<std::size_t>(b * r);
-  const float* c = &rows[static_cast<std::size_t>(row_of(rec, bit)) * static_cast<std::size_t>(r)];
+  const float* c = block_factor(footprint, (j / b) * nb + i / b);
+  if (!c) return 0.0;
+  const auto [a, bf, sa, sb] = angular_factors(footprint);
   double v = 0.0;
   for (int k = 0; k < r; ++k) v += static_cast<double>(a[(i % b) * r + k]) * bf[(j % b) * r + k] * c[k];
   return v;
@@ -139,7 +136,6 @@ NdfImage PrefilteredNdf::image(std::uint32_t footprint) const {
 
 double PrefilteredNdf::pixel_range_sum(std::uint32_t footprint, glm::dvec2 x0, glm::dvec2 x1) const {
   const int b = settings.block_size, nb = blocks_per_side(), r = rank();
-  const FootprintRecord& rec = footprints[footprint];
   const auto [a, bf, sa, sb] = angular_factors(footprint);
   // S(t) = S[floor t] + frac(t) m[floor t]: the integral of a piecewise-constant column up to t.
   auto prefix = [&](const float* sums, const float* m, double t, int k) {
@@ -151,12 +147,11 @@ double PrefilteredNdf::pixel_range_sum(std::uint32_t footprint, glm::dvec2 x0, g
   const int by0 = static_cast<int>(x0.y) / b, by1 = std::min(nb - 1, static_cast<int>(std::ceil(x1.y)) / b);
   for (int by = by0; by <= by1; ++by)
     for (int bx = bx0; bx <= bx1; ++bx) {
-      const int bit = by * nb + bx;
-      if (!kept(rec, bit)) continue;
+      const float* c = block_factor(footprint, by * nb + bx);
+      if (!c) continue;
       const double lx = std::clamp(x0.x - bx * b, 0.0, double(b)), hx = std::clamp(x1.x - bx * b, 0.0, double(b));
       const double ly = std::clamp(x0.y - by * b, 0.0, double(b)), hy = std::clamp(x1.y - by * b, 0.0, double(b));
       if (!(hx > lx && hy > ly)) continue;
-      const float* c = &rows[static_cast<std::size_t>(row_of(rec, bit)) * static_cast<std::size_t>(r)];
       for (int k = 0; k < r; ++k)
         total += (prefix(sa, a, hx, k) - prefix(sa, a, lx, k)) * (prefix(sb, bf, hy, k) - prefix(sb, bf, ly, k)) * c[k];
     }

@@ -53,6 +53,14 @@ bool pndfBlockRow(PndfHeader h, uint f, int bit, out uint row) {
   return kept;
 }
 
+// 1 where block `bit` of footprint f is kept, with its row; 0 where it was dropped, with the first
+// row, so that branch-free sums read a valid row and weigh it 0.
+float pndfKeptRow(PndfHeader h, uint f, int bit, out uint row) {
+  const bool kept = pndfBlockRow(h, f, bit, row);
+  row = kept ? row : h.rows;
+  return kept ? 1.0 : 0.0;
+}
+
 uint pndfGroupAngular(PndfHeader h, uint f) { return h.angular + pndfRecords[h.groups + pndfRecords[h.footprints + 4u * f + 3u]]; }
 
 // S(t) = S[floor t] + frac(t) m[floor t]: a factor column's integral from 0 to t (t in [0, B]).
@@ -98,14 +106,9 @@ float pndfPixelRangeSumByCorners(PndfHeader h, uint f, vec2 x0, vec2 x1) {
   const uint stride = uint(2 * h.rank + 1), table = h.tables + f * uint(nb * nb) * stride;
   const uint t00 = table + uint(bit00) * stride, t10 = table + uint(bit10) * stride;
   const uint t01 = table + uint(bit01) * stride, t11 = table + uint(bit11) * stride;
-  // Each corner's long factor; a dropped block reads the first row, weighted 0.
-  uint row00, row10, row01, row11;
-  const float k00 = pndfBlockRow(h, f, bit00, row00) ? 1.0 : 0.0, k10 = pndfBlockRow(h, f, bit10, row10) ? 1.0 : 0.0;
-  const float k01 = pndfBlockRow(h, f, bit01, row01) ? 1.0 : 0.0, k11 = pndfBlockRow(h, f, bit11, row11) ? 1.0 : 0.0;
-  row00 = k00 > 0.0 ? row00 : h.rows;
-  row10 = k10 > 0.0 ? row10 : h.rows;
-  row01 = k01 > 0.0 ? row01 : h.rows;
-  row11 = k11 > 0.0 ? row11 : h.rows;
+  uint row00, row10, row01, row11;  // each corner's long factor
+  const float k00 = pndfKeptRow(h, f, bit00, row00), k10 = pndfKeptRow(h, f, bit10, row10);
+  const float k01 = pndfKeptRow(h, f, bit01, row01), k11 = pndfKeptRow(h, f, bit11, row11);
   float total = (pndfValues[t11] - pndfValues[t01]) - (pndfValues[t10] - pndfValues[t00]);
   for (int r = 0; r < h.rank; ++r) {
     const float pa0 = pndfPrefix(h, sa, a, in0.x, r), pa1 = pndfPrefix(h, sa, a, in1.x, r);
@@ -188,15 +191,10 @@ float pndfDensity(PndfHeader h, vec2 centre, float sigma, vec2 s) {
     if (weight <= 0.0) continue;
     const uint a = pndfGroupAngular(h, footprint), b = a + uint(h.b * h.rank);
     uint row00, row10, row01, row11;
-    const float k00 = pndfBlockRow(h, footprint, block0.y * nb + block0.x, row00) ? weight : 0.0;
-    const float k10 = pndfBlockRow(h, footprint, block0.y * nb + block1.x, row10) ? weight : 0.0;
-    const float k01 = pndfBlockRow(h, footprint, block1.y * nb + block0.x, row01) ? weight : 0.0;
-    const float k11 = pndfBlockRow(h, footprint, block1.y * nb + block1.x, row11) ? weight : 0.0;
-    // A dropped block reads the first row, weighted 0.
-    row00 = k00 > 0.0 ? row00 : h.rows;
-    row10 = k10 > 0.0 ? row10 : h.rows;
-    row01 = k01 > 0.0 ? row01 : h.rows;
-    row11 = k11 > 0.0 ? row11 : h.rows;
+    const float k00 = weight * pndfKeptRow(h, footprint, block0.y * nb + block0.x, row00);
+    const float k10 = weight * pndfKeptRow(h, footprint, block0.y * nb + block1.x, row10);
+    const float k01 = weight * pndfKeptRow(h, footprint, block1.y * nb + block0.x, row01);
+    const float k11 = weight * pndfKeptRow(h, footprint, block1.y * nb + block1.x, row11);
     const uint ai0 = a + uint(in0.x * h.rank), ai1 = a + uint(in1.x * h.rank);
     const uint bj0 = b + uint(in0.y * h.rank), bj1 = b + uint(in1.y * h.rank);
     for (int r = 0; r < h.rank; ++r) {

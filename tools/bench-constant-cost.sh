@@ -7,7 +7,7 @@
 #   - the angular sweep: sigma = 6 texels (between levels 1 and 2), a sphere light of radius R m at
 #     2 m from a point to a light whose half-vector box covers most of the NDF image.
 # Methods: conventional, deng2022 (box queries through its prefix tables), deng2022 with the paper's
-# block-by-block box queries, yan2016 (max_radius 128). Prints two markdown tables (median GPU ms,
+# block-by-block box queries, yan2016 (max_elements 60000). Prints two markdown tables (median GPU ms,
 # wall where the GL timer does not measure) and each method's largest over smallest per sweep.
 #   tools/bench-constant-cost.sh [GLINTLAB] [SIZE] [FRAMES]   (defaults: build/release/glintlab, 128, 5)
 # The first run precomputes the map's pyramid (minutes; cached after). On llvmpipe keep SIZE small
@@ -64,7 +64,7 @@ run() {  # run LABEL TEXELS_A_PIXEL LIGHT
   local list
   list=$(IFS=,; echo "${methods[*]}")
   "$B" bench --scene "$work/s.toml" --methods "$list" --bench-frames "$frames" --warmup 1 \
-    --param yan2016.max_radius=128 --frames 1 -o "$work/run" > /dev/null
+    --param yan2016.max_elements=60000 --frames 1 -o "$work/run" > /dev/null
   local row="| $1 |"
   for m in "${methods[@]}"; do row+=$(LC_ALL=C printf ' %.2f |' "$(ms "$work/run/bench.json" "$m")"); done
   echo "$row"

@@ -67,13 +67,13 @@ void prepareSurface(inout Surface s) {
   float trace = sigmaP[0][0] + sigmaP[1][1];
   float largest = 0.5 * trace + sqrt(max(0.25 * trace * trace - determinant(sigmaP), 0.0));
   float smallest = max(trace - largest, 0.0);
-  float elementVariance = 0.1875 / float(FALLBACK_K * FALLBACK_K);
+  float side = float(FALLBACK_K) * (6.0 * sigma0 + 3.0), budget = side * side;
+  // A box's side is at most 2 k r + 1 elements: every element of a footprint under sigma_0 a side.
   gElements = positionNormalFootprint(centre, sigmaP, size, FALLBACK_K, normalMapGlintsIntrinsicRoughness(m),
-                                       positionNormalRadiusBudget(3.0 * sqrt(largest + elementVariance) + 1.0, FALLBACK_K));
-  float budget = float(FALLBACK_K * FALLBACK_K) * (6.0 * sigma0 + 3.0) * (6.0 * sigma0 + 3.0);
+                                      positionNormalElementBudget((side + 1.0) * (side + 1.0)));
   gBelowPyramid = param_small_footprints != SMALL_FOOTPRINTS_CLAMP &&
-                  (largest < sigma0 * sigma0 || (smallest < sigma0 * sigma0 && float(gElements.count.x * gElements.count.y) <= budget));
-  if (!gBelowPyramid) gElements.count = ivec2(0);
+                  (largest < sigma0 * sigma0 || (smallest < sigma0 * sigma0 && gElements.boxElements <= budget));
+  if (!gBelowPyramid) gElements.cells = ivec2(0);
 #endif
 }
 

@@ -1,6 +1,7 @@
 // Method `yan2016`: Yan et al. 2016's position-normal distribution of the pixel's Gaussian footprint,
-// evaluated exactly by brute force over the normal map's elements (glints/normal-map/position_normal.glsl), on
-// `normal-map-glints` materials: the baseline whose cost grows with the footprint. Delta lights
+// by brute force over the normal map's elements (glints/normal-map/position_normal.glsl), on
+// `normal-map-glints` materials: the baseline whose cost grows with the footprint, up to
+// `max_elements`, past which a stratified subset of the elements stands for them all. Delta lights
 // take P at the half vector; lights with extent its mean over their half-vector box. Other
 // materials are shaded as by `conventional` (lights with extent by LTC).
 // Descriptor: src/shading/methods/yan2016.cpp; docs/methods.md#yan2016.
@@ -33,7 +34,7 @@ void prepareSurface(inout Surface s) {
   MaterialData m = materials[uMaterial];
   gFootprint = positionNormalFootprint(fract(s.uv) * vec2(size), sigmaP, size, ELEMENTS_PER_TEXEL,
                                        normalMapGlintsIntrinsicRoughness(m),
-                                       positionNormalRadiusBudget(param_max_radius, ELEMENTS_PER_TEXEL));
+                                       positionNormalElementBudget(param_max_elements));
   gMaskingAlpha = normalMapGlintsMaskingAlpha(m);
 #endif
 }

@@ -1,12 +1,16 @@
 // Yan et al. 2016's P-NDF in GLSL (shaders/glints/normal-map/position_normal.glsl, method yan2016) on the GL
 // device: a flat map is the intrinsic Gaussian (closed form, written here); P and the box means agree
 // with the CPU's PositionNormalDistribution (src/prefilter/position_normal.hpp) for correlated,
-// anisotropic and wrapping footprints, k = 1 and 2; P integrates to 1; the max_radius cap is the
-// CPU's footprint shrunk as documented. Tiny maps; a few thousand evaluations per case.
+// anisotropic and wrapping footprints, k = 1 and 2; P integrates to 1; past its element budget a
+// footprint is summed over a stratified subset that fits the budget and stands for the whole sum.
+// Tiny maps; a few thousand evaluations per case.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numeric>
+#include <random>
 #include <glm/gtc/constants.hpp>
 
 #include "gl_fixture.hpp"
@@ -43,13 +47,17 @@ Footprint footprint_of(const Query& q) {
 }
 
 /// (density at lo, mean over [lo, hi]) for each query, on the device.
-std::vector<glm::vec2> evaluate(const std::vector<Query>& queries, int k, double sigma_r, double max_radius) {
+/// Budget: the elements a footprint may sum before it takes a subset (kEveryElement: all of them).
+constexpr double kEveryElement = 1e9;
+
+std::vector<glm::vec2> evaluate(const std::vector<Query>& queries, int k, double sigma_r,
+                                double budget = kEveryElement) {
   char includes[512];
   std::snprintf(includes, sizeof includes,
                 "#include \"generated/gpu_contract.glsl\"\n#include \"glints/normal-map/position_normal.glsl\"\n"
                 "layout(binding = NORMAL_MAP_UNIT) uniform sampler2D uMap;\n"
-                "const int K = %d;\nconst float SIGMA_R = %.9g, MAX_RADIUS = %.9g, FOOTPRINT_RHO = %.9g;\n",
-                k, sigma_r, max_radius, kRho);
+                "const int K = %d;\nconst float SIGMA_R = %.9g, BUDGET = %.9g, FOOTPRINT_RHO = %.9g;\n",
+                k, sigma_r, budget, kRho);
   std::vector<glm::vec4> a, b;
   for (const Query& q : queries) {
     a.emplace_back(glm::vec2(q.centre), glm::vec2(q.variance));
@@ -58,7 +66,7 @@ std::vector<glm::vec2> evaluate(const std::vector<Query>& queries, int k, double
   const auto r = evaluate_glsl(includes, R"(
 vec4 evaluate(vec4 a, vec4 b) {
   float c01 = FOOTPRINT_RHO * sqrt(a.z * a.w);
-  PositionNormalFootprint f = positionNormalFootprint(a.xy, mat2(a.z, c01, c01, a.w), textureSize(uMap, 0), K, SIGMA_R, MAX_RADIUS);
+  PositionNormalFootprint f = positionNormalFootprint(a.xy, mat2(a.z, c01, c01, a.w), textureSize(uMap, 0), K, SIGMA_R, BUDGET);
   return vec4(positionNormalDensity(uMap, f, K, b.xy), positionNormalBoxMean(uMap, f, K, b.xy, b.zw), 0.0, 0.0);
 })", a, b);
   std::vector<glm::vec2> out;
@@ -68,6 +76,28 @@ vec4 evaluate(vec4 a, vec4 b) {
 
 const std::vector<glm::dvec2> kVariances = {{0.01, 0.01}, {1.0, 1.0}, {4.0, 0.5}, {9.0, 25.0}};
 const std::vector<glm::dvec2> kCentres = {{10.3, 7.6}, {0.2, 31.9}};  // the second wraps on a 32^2 map
+
+TEST(PositionNormalGlsl, TheCheapErfcHasItsStatedAccuracy) {
+  // erfcPositive (one exp, a degree-5 polynomial: tools/fit-erfc.cpp's 5.2e-6) against std::erfc
+  // over [0, 9]; float's rounding of x^2 inside exp adds up to 81 x 6e-8 relative at x = 9.
+  std::vector<glm::vec4> a, b;
+  for (int i = 0; i < 900; ++i) {
+    const double x = 0.01 * i;
+    a.emplace_back(x, x + 0.0025, x + 0.005, x + 0.0075);
+    b.emplace_back(0.0f);
+  }
+  const auto r = evaluate_glsl("#include \"glints/normal-map/position_normal.glsl\"\n",
+                               "vec4 evaluate(vec4 a, vec4 b) { return erfcPositive(a); }", a, b);
+  double worst = 0;
+  for (std::size_t i = 0; i < r.size(); ++i)
+    for (int c = 0; c < 4; ++c) {
+      const double x = a[i][c], exact = std::erfc(x);
+      const double bound = 8e-6 + 2 * x * x * 6e-8;
+      EXPECT_NEAR(r[i][c], exact, bound * exact) << "x " << x;
+      worst = std::max(worst, std::abs(r[i][c] / exact - 1));
+    }
+  std::printf("erfcPositive: worst relative error over [0, 9] %.2e\n", worst);
+}
 
 TEST(PositionNormalGlsl, FlatMapIsTheIntrinsicGaussian) {
   // Every element's normal is +z and J = 0: P = N2(s; 0, sigma_r^2 I) whatever the footprint, and a
@@ -87,7 +117,7 @@ TEST(PositionNormalGlsl, FlatMapIsTheIntrinsicGaussian) {
     return 0.5 * (std::erf(b / (std::sqrt(2.0) * sr)) - std::erf(a / (std::sqrt(2.0) * sr))) / (b - a);
   };
   for (int k : {1, 2}) {
-    const auto r = evaluate(queries, k, sr, 32);
+    const auto r = evaluate(queries, k, sr);
     for (std::size_t i = 0; i < queries.size(); ++i) {
       const Query& q = queries[i];
       const double density = std::exp(-0.5 * glm::dot(q.lo, q.lo) / (sr * sr)) / (2 * glm::pi<double>() * sr * sr);
@@ -130,7 +160,7 @@ TEST(PositionNormalGlsl, AgreesWithTheCpu) {
           }
         EXPECT_GT(taken, 0);
       }
-    const auto r = evaluate(queries, k, sr, 128);
+    const auto r = evaluate(queries, k, sr);
     double worst_density = 0, worst_box = 0;
     for (std::size_t i = 0; i < queries.size(); ++i) {
       const Footprint f = footprint_of(queries[i]);
@@ -165,7 +195,7 @@ TEST(PositionNormalGlsl, IntegratesToOne) {
           queries.push_back({{10.3, 7.6}, v, lo + 0.5 * h, lo + 0.5 * h});  // density at the cell's centre
           queries.push_back({{10.3, 7.6}, v, lo, lo + h});                  // mean over the cell
         }
-      const auto r = evaluate(queries, k, sr, 128);
+      const auto r = evaluate(queries, k, sr);
       double midpoint = 0, boxes = 0;
       for (std::size_t i = 0; i < r.size(); i += 2) {
         midpoint += r[i].x * h * h;
@@ -177,29 +207,113 @@ TEST(PositionNormalGlsl, IntegratesToOne) {
   }
 }
 
-TEST(PositionNormalGlsl, MaxRadiusShrinksTheFootprintToFit) {
-  // A footprint of 10 texels with max_radius 8: Sigma_p scaled by t so that 3 sqrt(Sigma_h + t
-  // Sigma_p) = 8 along its wider axis, which the CPU reproduces with the scaled footprint.
+TEST(PositionNormalGlsl, ASubsetFitsTheBudgetWithTheSmallestStride) {
+  // Stride, cells and box of random footprints and budgets, on the device; the cells each
+  // footprint meets at stride s and s - 1 counted here: within the budget at s, over it at s - 1.
   const NormalMap map = generate_bumps(32, 0.25f, 32, 6, 5);
   gl::Texture tex = bind_map(map);
-  const double sr = 0.02, radius = 8;
-  const PositionNormalDistribution cpu(map, sr, 1);
-  const double sh2 = cpu.element_sigma() * cpu.element_sigma();
-  std::vector<Query> queries;
-  for (int j = 0; j < 5; ++j)
-    for (int i = 0; i < 5; ++i) queries.push_back({{10.3, 7.6}, {100.0, 64.0}, glm::dvec2(i - 2, j - 2) * 0.06, {}});
-  const auto r = evaluate(queries, 1, sr, radius);
-  double largest_change = 0;
-  for (std::size_t i = 0; i < queries.size(); ++i) {
-    Footprint f = footprint_of(queries[i]);
-    const double t = (radius * radius / 9 - sh2) / 100.0;
-    f.covariance *= t;
-    const double unscaled = cpu.density(footprint_of(queries[i]), queries[i].lo);
-    const double density = cpu.density(f, queries[i].lo);
-    EXPECT_NEAR(r[i].x, density, 1e-4 * density + 1e-6) << "query " << i;
-    largest_change = std::max(largest_change, std::abs(density - unscaled) / std::max(unscaled, 0.1));
+  std::vector<glm::vec4> a, b;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (int i = 0; i < 400; ++i) {
+    const double sx = std::exp(unit(rng) * 5), sy = std::exp(unit(rng) * 5);
+    a.emplace_back(32 * unit(rng), 32 * unit(rng), sx * sx, sy * sy);
+    b.emplace_back(std::floor(std::exp(3 + unit(rng) * 8)), i % 2 ? 1 : 2, 0, 0);
   }
-  EXPECT_GT(largest_change, 0.05) << "the cap must change P somewhere";
+  const auto r = evaluate_glsl("#include \"generated/gpu_contract.glsl\"\n#include \"glints/normal-map/position_normal.glsl\"\n"
+                               "layout(binding = NORMAL_MAP_UNIT) uniform sampler2D uMap;\n", R"(
+vec4 evaluate(vec4 a, vec4 b) {
+  PositionNormalFootprint f = b.y == 1.0 ? positionNormalFootprint(a.xy, mat2(a.z, 0.0, 0.0, a.w), textureSize(uMap, 0), 1, 0.02, b.x)
+                                         : positionNormalFootprint(a.xy, mat2(a.z, 0.0, 0.0, a.w), textureSize(uMap, 0), 2, 0.02, b.x);
+  return vec4(f.stride, f.cells.x, f.cells.y, f.boxElements);
+})", a, b);
+  int subsets = 0;
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const int k = static_cast<int>(b[i].y), stride = static_cast<int>(r[i].x);
+    const double budget = b[i].x, sh2 = 0.1875 / (k * k);
+    // The box as the shader bounds it, and the cells it meets at a stride.
+    const glm::dvec2 c(a[i].x, a[i].y), radius = 3.0 * glm::sqrt(glm::dvec2(a[i].z, a[i].w) + sh2);
+    const glm::dvec2 first = glm::ceil(double(k) * (c - radius) - 0.5), last = glm::floor(double(k) * (c + radius) - 0.5);
+    const auto cells = [&](int s) {
+      const glm::dvec2 n = glm::floor(last / double(s)) - glm::floor(first / double(s)) + 1.0;
+      return n.x * n.y;
+    };
+    ASSERT_NEAR(r[i].w, cells(1), 1e-3 * cells(1)) << "footprint " << i;
+    EXPECT_DOUBLE_EQ(double(r[i].y) * r[i].z, cells(stride)) << "footprint " << i;
+    EXPECT_LE(cells(stride), budget) << "footprint " << i << ": stride " << stride;
+    if (stride == 1) {
+      EXPECT_LE(cells(1), budget) << "footprint " << i;
+    } else {
+      ++subsets;
+      EXPECT_GT(cells(1), budget) << "footprint " << i;
+      EXPECT_GT(cells(stride - 1), budget) << "footprint " << i << ": stride " << stride;
+    }
+  }
+  EXPECT_GT(subsets, 100);
+}
+
+TEST(PositionNormalGlsl, AStratifiedSubsetIsAnUnbiasedSampleOfTheWholeSum) {
+  // A footprint of 12 texels (a 73^2-element box at k = 1) with budgets for strides 2 and 4: the
+  // box means of P over a 40^2 grid of half vectors, where the whole sum's is at least 5% of its
+  // peak. One subset is a sample of the map's normals (relative L2 to the whole sum's P, measured
+  // 0.14 and 0.34); the mean over 16 seeds of the hash is a quarter of that (0.035, 0.078: unbiased
+  // up to the ratio's O(1 / n)); every subset's P still integrates to the whole sum's mass.
+  const NormalMap map = generate_bumps(32, 0.25f, 32, 6, 5);
+  gl::Texture tex = bind_map(map);
+  const double sr = 0.02;
+  const PositionNormalDistribution cpu(map, sr, 1);
+  const Footprint footprint{{10.3, 7.6}, glm::dmat2(144.0)};
+  constexpr int kSeeds = 16, kGrid = 40;
+  std::vector<double> whole;
+  std::vector<glm::dvec2> cells;
+  for (int j = 0; j < kGrid; ++j)
+    for (int i = 0; i < kGrid; ++i) {
+      cells.push_back(glm::dvec2(i, j) / double(kGrid) - 0.5);
+      whole.push_back(cpu.range_mean(footprint, cells.back(), cells.back() + 1.0 / kGrid));
+    }
+  const double peak = *std::max_element(whole.begin(), whole.end());
+  const double whole_mass = std::accumulate(whole.begin(), whole.end(), 0.0) / (kGrid * kGrid);
+  for (double budget : {1500.0, 400.0}) {
+    std::vector<glm::vec4> a, b;
+    for (int seed = 0; seed < kSeeds; ++seed)
+      for (const glm::dvec2& lo : cells) {
+        a.emplace_back(glm::vec2(lo), glm::vec2(lo + 1.0 / kGrid));
+        b.emplace_back(float(seed), float(budget), 0.0f, 0.0f);
+      }
+    const auto r = evaluate_glsl("#include \"generated/gpu_contract.glsl\"\n"
+                                 "#include \"glints/normal-map/position_normal.glsl\"\n"
+                                 "layout(binding = NORMAL_MAP_UNIT) uniform sampler2D uMap;\n", R"(
+vec4 evaluate(vec4 a, vec4 b) {
+  PositionNormalFootprint f = positionNormalFootprint(vec2(10.3, 7.6), mat2(144.0), textureSize(uMap, 0), 1, 0.02, b.y);
+  f.seed = uint(b.x);
+  return vec4(positionNormalBoxMean(uMap, f, 1, a.xy, a.zw), f.stride, 0.0, 0.0);
+})", a, b);
+    const auto relative_l2 = [&](const std::vector<double>& p) {
+      double diff2 = 0, norm2 = 0;
+      for (std::size_t i = 0; i < whole.size(); ++i)
+        if (whole[i] >= 0.05 * peak) {
+          diff2 += (p[i] - whole[i]) * (p[i] - whole[i]);
+          norm2 += whole[i] * whole[i];
+        }
+      return std::sqrt(diff2 / norm2);
+    };
+    std::vector<double> mean(whole.size(), 0.0);
+    double single = 0;
+    for (int seed = 0; seed < kSeeds; ++seed) {
+      std::vector<double> p(whole.size());
+      for (std::size_t i = 0; i < whole.size(); ++i) p[i] = r[seed * whole.size() + i].x;
+      for (std::size_t i = 0; i < whole.size(); ++i) mean[i] += p[i] / kSeeds;
+      single += relative_l2(p) / kSeeds;
+      const double mass = std::accumulate(p.begin(), p.end(), 0.0) / (kGrid * kGrid);
+      EXPECT_NEAR(mass, whole_mass, 2e-3) << "budget " << budget << " seed " << seed;
+    }
+    const double averaged = relative_l2(mean);
+    std::printf("budget %.0f (stride %.0f): relative L2 to the whole sum's P: one subset %.4f, mean of %d %.4f\n",
+                budget, r[0].y, single, kSeeds, averaged);
+    EXPECT_GT(r[0].y, 1.5) << "budget " << budget << ": the subset must be one";
+    EXPECT_LT(single, 0.5) << "budget " << budget;
+    EXPECT_LT(averaged, 0.4 * single) << "budget " << budget;  // 1 / sqrt(16) = 0.25 if unbiased
+  }
 }
 
 }  // namespace

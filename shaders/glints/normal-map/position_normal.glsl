@@ -13,7 +13,16 @@
 //   m_e - u_e = Sigma_u Sigma_p^-1 d = sh2 T^-1 d,
 //   mean_e = p_e + J_e (m_e - u_e), cov_e = J_e Sigma_u J_e^T + sigma_r^2 I,
 // and P(s) = sum_e w_e N2(s; mean_e, cov_e) / sum_e w_e over the elements with d^T T^-1 d <= 9.
+//
+// A footprint whose 3-sigma box holds more elements than the caller's budget (llvmpipe stops a
+// shader's loops after 65535 iterations in all) is never shrunk: the sum runs over a stratified
+// subset, the element grid cut into s x s cells (s the smallest stride that fits the budget) and
+// one element per cell chosen by a hash of the cell, fixed on the surface (no flicker as the
+// footprint moves). Over the hash, every element is in the subset with probability 1 / s^2, so
+// both sums are unbiased and their ratio consistent; the error is sampling noise of the map's
+// normals, not a lost part of the footprint (issue 30, item 2).
 #include "core/constants.glsl"
+#include "core/sampling.glsl"
 #include "core/wrap.glsl"
 
 struct PositionNormalFootprint {
@@ -22,35 +31,66 @@ struct PositionNormalFootprint {
   mat2 sigmaU;        // Sigma_u
   float shapeVariance;
   float sigmaR2;      // sigma_r^2
-  ivec2 first;        // the first element index (before wrapping) of the truncation box
-  ivec2 count;        // elements per axis in the box
+  float boxElements;  // the elements in the 3-sigma box of T (a float: it may pass 2^31)
+  int stride;         // s: one element per s x s cell of the element grid (1: every element)
+  ivec2 firstCell;    // the first cell (element index / s, before wrapping) that meets the box
+  ivec2 cells;        // cells per axis; cells.x cells.y <= the budget
+  uint seed;          // the subset's hash seed (0 in the methods; tests vary it)
   ivec2 size;         // the map's texels
 };
 
+// The cells of stride s that the elements [first, last] meet along each axis.
+vec2 positionNormalCells(vec2 first, vec2 last, float s) { return floor(last / s) - floor(first / s) + 1.0; }
+
+// The smallest stride s whose cells over the box [first, last] number at most `budget`: between
+// sqrt(a b / budget) (fewer cells than that is impossible) and the root of
+// (budget - 4) s^2 - 2 (a + b) s - a b (a side meets at most a / s + 2 cells), by bisection.
+int positionNormalStride(vec2 first, vec2 last, float budget) {
+  vec2 box = last - first + 1.0;
+  if (box.x * box.y <= budget) return 1;
+  float m = max(budget - 4.0, 1.0), sum = box.x + box.y;
+  int lo = max(int(sqrt(box.x * box.y / budget)) - 1, 1);  // too small
+  int hi = max(int(ceil((sum + sqrt(sum * sum + m * box.x * box.y)) / m)), 2);  // fits
+  for (int i = 0; i < 32 && hi - lo > 1; ++i) {
+    int mid = (lo + hi) / 2;
+    vec2 n = positionNormalCells(first, last, float(mid));
+    if (n.x * n.y <= budget) hi = mid; else lo = mid;
+  }
+  return hi;
+}
+
 // The footprint N(centre, sigmaP) (texels; sigmaP: the pixel footprint's texel covariance,
-// footprintTexelCovariance in core/footprint.glsl) prepared for the sums below. Truncation: the elements
-// in the bounding box of the 3-sigma ellipse of T, whose half extents are kept within maxRadius
-// texels by scaling Sigma_p down (a large footprint is then under-blurred: the baseline's cost is
-// O(maxRadius^2 k^2) per evaluation).
+// footprintTexelCovariance in core/footprint.glsl) prepared for the sums below: the elements in
+// the bounding box of the 3-sigma ellipse of T, every one while they number at most `budget`,
+// a stratified subset of `budget` or fewer past it (the cost is O(min(box, budget)) per evaluation).
 PositionNormalFootprint positionNormalFootprint(vec2 centre, mat2 sigmaP, ivec2 size, const int k, float sigmaR,
-                                                float maxRadius) {
+                                                float budget) {
   PositionNormalFootprint f;
   float sh2 = 0.1875 / float(k * k);  // (1.5 / (k sqrt 12))^2
-  vec2 room = max(vec2(maxRadius * maxRadius / 9.0 - sh2), vec2(0.0));
-  vec2 diagonal = max(vec2(sigmaP[0][0], sigmaP[1][1]), vec2(1e-30));
-  sigmaP *= min(1.0, min(room.x / diagonal.x, room.y / diagonal.y));
   mat2 total = sigmaP + mat2(sh2);
   f.centre = mod(centre, vec2(size));
   f.totalInverse = inverse(total);
   f.sigmaU = mat2(sh2) - sh2 * sh2 * f.totalInverse;
   f.shapeVariance = sh2;
   f.sigmaR2 = max(sigmaR * sigmaR, 1e-8);  // a sigma_r of 0 would make point elements singular
-  vec2 radius = min(3.0 * sqrt(vec2(total[0][0], total[1][1])), vec2(maxRadius));
-  f.first = ivec2(ceil(float(k) * (f.centre - radius) - 0.5));
-  ivec2 last = ivec2(floor(float(k) * (f.centre + radius) - 0.5));
-  f.count = max(last - f.first + 1, ivec2(0));
+  vec2 radius = 3.0 * sqrt(vec2(total[0][0], total[1][1]));
+  vec2 first = ceil(float(k) * (f.centre - radius) - 0.5), last = floor(float(k) * (f.centre + radius) - 0.5);
+  vec2 box = max(last - first + 1.0, vec2(0.0));
+  f.boxElements = box.x * box.y;
+  f.stride = f.boxElements > 0.0 ? positionNormalStride(first, last, max(budget, 1.0)) : 1;
+  f.firstCell = ivec2(floor(first / float(f.stride)));
+  f.cells = f.boxElements > 0.0 ? ivec2(positionNormalCells(first, last, float(f.stride))) : ivec2(0);
+  f.seed = 0u;
   f.size = size;
   return f;
+}
+
+// Element index of cell `cell`: the cell's own at stride 1, else the one its hash picks.
+ivec2 positionNormalCellElement(ivec2 cell, int stride, uint seed) {
+  if (stride == 1) return cell;
+  uint h = hash3(uvec3(uvec2(cell), uint(stride) ^ (seed * 0x9e3779b9u)));
+  uint s = uint(stride);
+  return cell * stride + ivec2(int(h % s), int((h / s) % s));
 }
 
 vec3 mapTexel(sampler2D map, ivec2 size, ivec2 i) { return texelFetch(map, floorMod(i, size), 0).xyz; }
@@ -83,16 +123,13 @@ void positionNormalElement(sampler2D map, ivec2 size, ivec2 e, const int k, out 
   }
 }
 
-// erfc(x) for x >= 0, relative error < 3e-5: Abramowitz & Stegun 7.1.26 below 2 (absolute error
-// 1.5e-7), above it the continued fraction erfc(x) = exp(-x^2) / (sqrt(pi) (x + (1/2) / (x + 1 / (x +
-// (3/2) / ...)))) at 12 levels (relative error < 3e-7 there, where 7.1.26's grows to 1%).
+// erfc(x) for x >= 0 with one exp, no branch and no loop: exp(-x^2) t P(t), t = 1 / (1 + 0.44 x),
+// P of degree 5 fitted for the least maximum relative error over [0, 12] (5.2e-6; float's
+// exp(-x^2) is 0 past 9.3) by tools/fit-erfc.cpp.
 vec4 erfcPositive(vec4 x) {
-  vec4 t = 1.0 / (1.0 + 0.3275911 * x);
-  vec4 near = t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
-  vec4 far = max(x, vec4(2.0));
-  vec4 f = far;
-  for (int n = 12; n >= 1; --n) f = far + 0.5 * float(n) / f;
-  return mix(near, 0.5641895835 / f, greaterThanEqual(x, vec4(2.0))) * exp(-x * x);
+  vec4 t = 1.0 / (1.0 + 0.44 * x);
+  vec4 p = 0.2485641985 + t * (0.242537039 + t * (0.263708899 + t * (0.04051555005 + t * (0.3508311959 - t * 0.1461620291))));
+  return t * p * exp(-x * x);
 }
 
 // The means over [a, b] of four 1D normal densities of means m and standard deviation sigma.
@@ -149,29 +186,28 @@ float gaussianBoxMean(vec2 mean, mat2 cov, vec2 lo, vec2 hi) {
   return sum * share * 0.3989422804 / sx;
 }
 
-// A truncation radius (texels) within llvmpipe's 65535 loop iterations per invocation: at most
-// maxRadius, and the element loops of all the scene's lights together under 60000, (2 r k + 1)^2
-// elements per light. Applied on every driver, so that images agree. Needs the forward pass's
+// The elements one light's sum may visit: at most `budget` for all the scene's lights together,
+// and within llvmpipe's 65535 loop iterations per invocation (60000 for the element loops, shared
+// by the lights). Applied on every driver, so that images agree. Needs the forward pass's
 // LIGHT_RANGES (a method module's context; absent in the tests' compute harness).
 #ifdef LIGHT_RANGES
-float positionNormalRadiusBudget(float maxRadius, const int k) {
+float positionNormalElementBudget(float budget) {
   const ivec2 ranges[LIGHT_KIND_COUNT] = LIGHT_RANGES;
   int lights = 0;
   for (int i = 0; i < LIGHT_KIND_COUNT; ++i) lights += ranges[i].y - ranges[i].x;
-  float perLight = 60000.0 / float(max(lights, 1));
-  return min(maxRadius, (floor(sqrt(perLight)) - 1.0) / (2.0 * float(k)));
+  return floor(min(budget, 60000.0) / float(max(lights, 1)));
 }
 #endif
 
 // sum_e w_e X_e / sum_e w_e over the footprint's elements, where X_e is the element's density
 // N2(s; mean_e, cov_e) at s = lo (`box` false), or its mean over the box [lo, hi] (`box` true).
-// One loop over a flat index with a per-pixel trip count (never unrolled; llvmpipe counts every
-// iteration towards its 65535 cap, which the caller's maxRadius respects).
+// One loop over a flat index of the cells with a per-pixel trip count (never unrolled; llvmpipe
+// counts every iteration towards its 65535 cap, which the caller's budget respects).
 float positionNormalSum(sampler2D map, PositionNormalFootprint f, const int k, vec2 lo, vec2 hi, const bool box) {
   float sum = 0.0, weights = 0.0;
-  int n = f.count.x * f.count.y;
+  int n = f.cells.x * f.cells.y;
   for (int i = 0; i < n; ++i) {
-    ivec2 e = f.first + ivec2(i % f.count.x, i / f.count.x);
+    ivec2 e = positionNormalCellElement(f.firstCell + ivec2(i % f.cells.x, i / f.cells.x), f.stride, f.seed);
     vec2 u, p;
     mat2 J;
     positionNormalElement(map, f.size, e, k, u, p, J);

@@ -11,13 +11,17 @@
 #include <cstdio>
 #include <numeric>
 #include <random>
+#include <sstream>
 #include <glm/gtc/constants.hpp>
 
+#include "chi_square.hpp"
 #include "gl_fixture.hpp"
+#include "prefilter/ndf_image.hpp"
 #include "prefilter/position_normal.hpp"
 
 using namespace glintlab;
 using namespace glintlab::test;
+using glintlab::test::chi_square;
 
 namespace {
 
@@ -313,6 +317,86 @@ vec4 evaluate(vec4 a, vec4 b) {
     EXPECT_GT(r[0].y, 1.5) << "budget " << budget << ": the subset must be one";
     EXPECT_LT(single, 0.5) << "budget " << budget;
     EXPECT_LT(averaged, 0.4 * single) << "budget " << budget;  // 1 / sqrt(16) = 0.25 if unbiased
+  }
+}
+
+TEST(PositionNormalGlsl, SamplesFollowTheElementMixture) {
+  // The GLSL sampler (glints/normal-map/ndf_sampling.glsl) on the device, as the CPU's
+  // (tests/prefilter/test_ndf_sampling.cpp): its pdf is the GLSL density, which is the CPU's, and
+  // a chi-square test of 40000 samples against the CPU's box means over a 24^2 grid (and the mass
+  // outside it) passes; the mixture of a footprint twice as wide is told apart. Then a footprint
+  // past its budget: the samples follow the subset's own density (the GLSL box means).
+  const NormalMap map = generate_bumps(32, 0.3f, 48, 6, 17);
+  gl::Texture tex = bind_map(map);
+  const double sr = 0.03;
+  const PositionNormalDistribution cpu(map, sr, 2);
+  const NdfGrid grid{24, cpu.suggested_extent()};
+  constexpr int kSamples = 40000;
+  std::mt19937 rng(43);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  const std::string includes = "#include \"generated/gpu_contract.glsl\"\n"
+                               "#include \"glints/normal-map/ndf_sampling.glsl\"\n"
+                               "layout(binding = NORMAL_MAP_UNIT) uniform sampler2D uMap;\n";
+  for (const auto& [variance, budget] : {std::pair{glm::vec2(4.0f, 2.0f), 1e9f}, {glm::vec2(64.0f, 49.0f), 300.0f}}) {
+    std::vector<glm::vec4> a, b;
+    for (int i = 0; i < kSamples; ++i) {
+      a.emplace_back(9.2f, 17.7f, variance);
+      b.emplace_back(static_cast<float>(i), u(rng), u(rng), budget);
+    }
+    const auto out = evaluate_glsl(includes, R"(
+vec4 evaluate(vec4 a, vec4 b) {
+  float c01 = 0.5 * sqrt(a.z * a.w);
+  PositionNormalFootprint f = positionNormalFootprint(a.xy, mat2(a.z, c01, c01, a.w), textureSize(uMap, 0), 2, 0.03, b.w);
+  NdfSample x = positionNormalSample(uMap, f, 2, uint(b.x), b.yz);
+  return vec4(x.s, x.pdf, f.stride);
+})",
+                                   a, b);
+    const double c01 = 0.5 * std::sqrt(double(variance.x) * variance.y);
+    const Footprint footprint{{9.2, 17.7}, glm::dmat2(variance.x, c01, c01, variance.y)};
+    const bool subset = out[0].w > 1.5f;
+    // The bins' expected mass: the CPU's box means for the whole sum; the device's for a subset.
+    std::vector<glm::vec4> qa, qb;
+    for (int j = 0; j < grid.resolution; ++j)
+      for (int i = 0; i < grid.resolution; ++i) {
+        const glm::dvec2 lo = grid.pixel_centre(i, j) - 0.5 * grid.pixel_size(), hi = lo + grid.pixel_size();
+        qa.emplace_back(glm::vec2(lo), glm::vec2(hi));
+        qb.emplace_back(variance, budget, 0.0f);
+      }
+    const auto device_means = evaluate_glsl(includes, R"(
+vec4 evaluate(vec4 a, vec4 b) {
+  float c01 = 0.5 * sqrt(b.x * b.y);
+  PositionNormalFootprint f = positionNormalFootprint(vec2(9.2, 17.7), mat2(b.x, c01, c01, b.y), textureSize(uMap, 0), 2, 0.03, b.z);
+  return vec4(positionNormalBoxMean(uMap, f, 2, a.xy, a.zw), 0.0, 0.0, 0.0);
+})",
+                                            qa, qb);
+    std::vector<double> observed(grid.pixel_count() + 1, 0.0), expected(grid.pixel_count() + 1, 0.0),
+        wrong(grid.pixel_count() + 1, 0.0);
+    double expected_outside = kSamples, wrong_outside = kSamples;
+    Footprint wide = footprint;
+    wide.covariance *= 4.0;
+    for (int c = 0; c < grid.pixel_count(); ++c) {
+      const glm::dvec2 lo(qa[c].x, qa[c].y), hi(qa[c].z, qa[c].w);
+      const double mean = subset ? device_means[c].x : cpu.range_mean(footprint, lo, hi);
+      expected[c] = mean * grid.pixel_area() * kSamples;
+      wrong[c] = cpu.range_mean(wide, lo, hi) * grid.pixel_area() * kSamples;
+      expected_outside -= expected[c];
+      wrong_outside -= wrong[c];
+    }
+    expected.back() = std::max(expected_outside, 0.0);
+    wrong.back() = std::max(wrong_outside, 0.0);
+    for (const glm::vec4& x : out) {
+      ASSERT_GT(x.z, 0.0f) << "a sample";
+      if (!subset) ASSERT_NEAR(x.z, cpu.density(footprint, glm::dvec2(x.x, x.y)), 1e-4 * x.z + 1e-3) << "the CPU's density";
+      const glm::dvec2 g = grid.to_pixels(glm::dvec2(x.x, x.y));
+      const int i = static_cast<int>(std::floor(g.x)), j = static_cast<int>(std::floor(g.y));
+      const bool inside = i >= 0 && j >= 0 && i < grid.resolution && j < grid.resolution;
+      observed[inside ? static_cast<std::size_t>(j * grid.resolution + i) : grid.pixel_count()] += 1;
+    }
+    const auto chi = chi_square(observed, expected);
+    std::printf("GLSL yan2016 sampler (stride %.0f): %s\n", out[0].w, (std::ostringstream() << chi).str().c_str());
+    EXPECT_EQ(subset, budget < 1e6f);
+    EXPECT_TRUE(chi.passes(2)) << chi;
+    EXPECT_LT(chi_square(observed, wrong).p, 1e-6);
   }
 }
 

@@ -6,15 +6,20 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <sstream>
+#include <tuple>
 
+#include "chi_square.hpp"
 #include "core/gpu_contract.hpp"
 #include "gl_fixture.hpp"
 #include "prefilter/ndf_precompute.hpp"
+#include "prefilter/ndf_sampling.hpp"
 #include "prefilter/position_normal.hpp"
 #include "prefilter/prefiltered_ndf_layout.hpp"
 
 using namespace glintlab;
 using namespace glintlab::test;
+using glintlab::test::chi_square;
 
 namespace {
 
@@ -27,14 +32,14 @@ struct BoundPyramid {
   PrefilteredNdf pyramid;
   gl::Buffer records, values;
 
-  BoundPyramid() {
+  explicit BoundPyramid(bool box_prefix_tables = true) {
     shaders();  // a current GL context before the buffers below
     settings.ndf_resolution = 32;
     settings.block_size = 8;
     settings.base_stride = 1;
     pyramid = precompute_prefiltered_ndf(map, kSigmaR, settings);
     const std::vector<const PrefilteredNdf*> materials = {nullptr, nullptr, &pyramid};
-    const PrefilteredNdfBuffers packed = pack_prefiltered_ndfs(materials, kMaxMaterials);
+    const PrefilteredNdfBuffers packed = pack_prefiltered_ndfs(materials, kMaxMaterials, box_prefix_tables);
     records = gl::make_buffer(static_cast<GLsizeiptr>(packed.records.size() * 4), packed.records.data());
     values = gl::make_buffer(static_cast<GLsizeiptr>(packed.values.size() * 4), packed.values.data());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPrefilteredNdfRecordsBinding, records.id());
@@ -131,4 +136,62 @@ vec4 evaluate(vec4 a, vec4 b) {
   std::printf("anisotropic footprints: relative L2 to the exact P-NDF: probes %.4f, one query %.4f\n", probed_error,
               one_error);
   EXPECT_LT(probed_error, 0.7 * one_error);  // measured: 0.149 against 0.251
+}
+
+// The GLSL sampler of the pyramid (glints/normal-map/ndf_sampling.glsl, sec. 5.2) on the device,
+// as the CPU's (tests/prefilter/test_ndf_sampling.cpp): its pdf is the C++ density over the C++
+// mass, and a chi-square test of 40000 samples against that density over the cells between pixel
+// centres (where the density is bilinear: its value at a cell's centre times the cell's area is
+// the cell's integral) passes, while the density of a footprint twice as wide is told apart. Both
+// packings: with the box prefix tables (a footprint between levels, 8 blended) and without (block
+// by block; a stored level's footprint).
+TEST(PrefilteredNdfGlsl, SamplesFollowTheDensityTheMethodEvaluates) {
+  constexpr int kSamples = 40000;
+  std::mt19937 rng(41);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  for (const auto& [tables, centre, sigma] : {std::tuple{true, glm::vec2(11.3f, 20.6f), 1.7f}, {false, glm::vec2(4.5f, 4.5f), 2.0f}}) {
+    const BoundPyramid bound(tables);
+    const PrefilteredNdf& p = bound.pyramid;
+    const int side = p.grid.resolution + 1;
+    const double area = p.grid.pixel_area();
+    std::vector<glm::vec4> a, b;
+    for (int i = 0; i < kSamples; ++i) {
+      a.emplace_back(centre, sigma, 2.0f);
+      b.emplace_back(static_cast<float>(i), u(rng), u(rng), 0.0f);
+    }
+    const auto out = evaluate_glsl("#include \"glints/normal-map/ndf_sampling.glsl\"", R"(
+vec4 evaluate(vec4 a, vec4 b) {
+  NdfSample x = pndfSample(pndfHeader(int(a.w)), a.xy, a.z, uint(b.x), b.yz);
+  return vec4(x.s, x.pdf, pndfSamplePdf(pndfHeader(int(a.w)), a.xy, a.z, x.s));
+})",
+                                   a, b);
+    const auto cpu_pdf = [&](double s_sigma, glm::dvec2 s) { return prefiltered_ndf_pdf(p, glm::dvec2(centre), s_sigma, s); };
+    std::vector<double> observed(static_cast<std::size_t>(side * side), 0.0), expected(observed.size()),
+        wrong(observed.size());
+    int outside = 0;
+    for (const glm::vec4& x : out) {
+      ASSERT_GT(x.z, 0.0f) << "a sample";
+      const glm::dvec2 s(x.x, x.y);
+      ASSERT_NEAR(x.z, x.w, 1e-5 * x.w) << "the sample's pdf is pndfSamplePdf's";
+      ASSERT_NEAR(x.z, cpu_pdf(sigma, s), 2e-3 * x.z + 1e-4) << "the C++ density over the C++ mass";
+      const glm::dvec2 g = p.grid.to_pixels(s) + 0.5;
+      const int i = static_cast<int>(std::floor(g.x)), j = static_cast<int>(std::floor(g.y));
+      if (i < 0 || j < 0 || i >= side || j >= side) {
+        ++outside;
+        continue;
+      }
+      observed[static_cast<std::size_t>(j * side + i)] += 1;
+    }
+    for (int c = 0; c < side * side; ++c) {
+      const glm::dvec2 at = glm::dvec2(c % side, c / side) * p.grid.pixel_size() - p.grid.extent;
+      expected[static_cast<std::size_t>(c)] = cpu_pdf(sigma, at) * area * kSamples;
+      wrong[static_cast<std::size_t>(c)] = cpu_pdf(2.0 * sigma, at) * area * kSamples;
+    }
+    const auto chi = chi_square(observed, expected);
+    std::printf("GLSL deng2022 sampler at sigma %.2f (%s): %s\n", sigma, tables ? "prefix tables" : "block by block",
+                (std::ostringstream() << chi).str().c_str());
+    EXPECT_EQ(outside, 0);
+    EXPECT_TRUE(chi.passes(2)) << chi;
+    EXPECT_LT(chi_square(observed, wrong).p, 1e-6);
+  }
 }

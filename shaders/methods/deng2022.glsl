@@ -34,15 +34,17 @@ PositionNormalFootprint gElements;
 float normalGlintsDensity(vec2 s) {
   if (gBelowPyramid) return positionNormalDensity(uNormalMap, gElements, FALLBACK_K, s);
   float sum = 0.0;
+  ProbeWeights w = gProbes.weights;
   for (int j = 0; j < gProbes.count; ++j)
-    sum += probeWeight(gProbes, j) * pndfDensity(gPyramid, probeCentre(gProbes, j), gProbes.sigma, s);
+    sum += nextProbeWeight(w) * pndfDensity(gPyramid, probeCentre(gProbes, j), gProbes.sigma, s);
   return sum;
 }
 float normalGlintsBoxMean(vec2 lo, vec2 hi) {
   if (gBelowPyramid) return positionNormalBoxMean(uNormalMap, gElements, FALLBACK_K, lo, hi);
   float sum = 0.0;
+  ProbeWeights w = gProbes.weights;
   for (int j = 0; j < gProbes.count; ++j)
-    sum += probeWeight(gProbes, j) * pndfRangeMean(gPyramid, probeCentre(gProbes, j), gProbes.sigma, lo, hi,
+    sum += nextProbeWeight(w) * pndfRangeMean(gPyramid, probeCentre(gProbes, j), gProbes.sigma, lo, hi,
                                                    param_box_queries == BOX_QUERIES_PREFIX_TABLES);
   return sum;
 }
@@ -64,9 +66,7 @@ void prepareSurface(inout Surface s) {
   // sigma_0; such a footprint is summed over the map's elements in its true shape (never shrunk)
   // where that costs no more than a round footprint of sigma_0 does, k^2 (6 sigma_0 + 3)^2 elements
   // (always when its largest axis is under sigma_0), within llvmpipe's loop budget.
-  float trace = sigmaP[0][0] + sigmaP[1][1];
-  float largest = 0.5 * trace + sqrt(max(0.25 * trace * trace - determinant(sigmaP), 0.0));
-  float smallest = max(trace - largest, 0.0);
+  float largest = gProbes.major, smallest = gProbes.minor;
   float side = float(FALLBACK_K) * (6.0 * sigma0 + 3.0), budget = side * side;
   // A box's side is at most 2 k r + 1 elements: every element of a footprint under sigma_0 a side.
   gElements = positionNormalFootprint(centre, sigmaP, size, FALLBACK_K, normalMapGlintsIntrinsicRoughness(m),

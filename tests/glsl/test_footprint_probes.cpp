@@ -34,9 +34,10 @@ std::pair<std::vector<glm::vec4>, std::vector<glm::vec4>> probe(const std::vecto
 vec4 evaluate(vec4 a, vec4 b) {
   FootprintProbes p = footprintProbes(vec2(3.5, -2.25), mat2(a.x, a.y, a.y, a.z), a.w, int(b.x));
   mat2 scatter = mat2(0.0);
+  ProbeWeights w = p.weights;
   for (int j = 0; j < p.count; ++j) {
     vec2 t = probeCentre(p, j) - p.centre;
-    scatter += probeWeight(p, j) * outerProduct(t, t);
+    scatter += nextProbeWeight(w) * outerProduct(t, t);
   }
   mat2 mixture = mat2(p.sigma * p.sigma) + scatter;
   return vec4(mixture[0][0], mixture[0][1], mixture[1][1], length(p.step) / p.sigma);
@@ -45,7 +46,8 @@ vec4 evaluate(vec4 a, vec4 b) {
 vec4 evaluate(vec4 a, vec4 b) {
   FootprintProbes p = footprintProbes(vec2(3.5, -2.25), mat2(a.x, a.y, a.y, a.z), a.w, int(b.x));
   float sum = 0.0;
-  for (int j = 0; j < p.count; ++j) sum += probeWeight(p, j);
+  ProbeWeights w = p.weights;
+  for (int j = 0; j < p.count; ++j) sum += nextProbeWeight(w);
   return vec4(sum, float(p.count), p.sigma, 0.0);
 })", a, b);
   return {moments, counts};

@@ -120,7 +120,8 @@ TEST(PrefilteredNdfGlsl, ProbesAlongTheMajorAxisApproachTheExactNdfOfAnAnisotrop
 vec4 evaluate(vec4 a, vec4 b) {
   FootprintProbes p = footprintProbes(b.zw, mat2(a.x, a.y, a.y, a.z), pndfFirstSigma(pndfHeader(2)), int(a.w));
   float sum = 0.0;
-  for (int j = 0; j < p.count; ++j) sum += probeWeight(p, j) * pndfDensity(pndfHeader(2), probeCentre(p, j), p.sigma, b.xy);
+  ProbeWeights w = p.weights;
+  for (int j = 0; j < p.count; ++j) sum += nextProbeWeight(w) * pndfDensity(pndfHeader(2), probeCentre(p, j), p.sigma, b.xy);
   return vec4(sum, 0.0, 0.0, 0.0);
 })", a, b);
   };

@@ -7,7 +7,23 @@
 // Sigma_p) and kept at most 2 sigma (sums of Gaussians 2 sigma apart ripple by under 1%). With more
 // probes needed than allowed, sigma grows until M probes suffice: the minor axis is then blurred,
 // as anisotropic texture filtering does past its limit. sigma is never below the pyramid's first
-// level (minSigma).
+// level (minSigma). The weights come in order from a recurrence set up once per pixel (no exp per
+// probe and light): with z_j = z_0 + j h, w_{j+1} = w_j exp(-z_j h - h^2 / 2), and that ratio
+// shrinks by exp(-h^2) a step.
+
+// The probes' weights in order: nextProbeWeight returns w_0, w_1, ... (they sum to 1).
+struct ProbeWeights {
+  float weight;  // the next probe's
+  float ratio;   // the one after it over it
+  float shrink;  // the ratio's own factor a step, exp(-h^2)
+};
+
+float nextProbeWeight(inout ProbeWeights w) {
+  float current = w.weight;
+  w.weight *= w.ratio;
+  w.ratio *= w.shrink;
+  return current;
+}
 
 struct FootprintProbes {
   vec2 centre;      // c (texels)
@@ -16,6 +32,8 @@ struct FootprintProbes {
   float gridStep;   // the probes' spacing in deviations of the weights' Gaussian
   float weightSum;  // of the M weights
   int count;        // M
+  ProbeWeights weights;  // the first probe's weight and its recurrence
+  float major, minor;    // Sigma_p's eigenvalues (texels^2)
 };
 
 const float PROBE_SPAN = 2.0;  // the probes cover +-2 deviations of the line Gaussian
@@ -44,6 +62,9 @@ FootprintProbes footprintProbes(vec2 centre, mat2 sigmaP, float minSigma, int ma
   float m = 0.5 * (sigmaP[0][0] + sigmaP[1][1]), q = 0.5 * (sigmaP[0][0] - sigmaP[1][1]), b = sigmaP[0][1];
   float r = sqrt(q * q + b * b);
   float major = m + r, minor = max(m - r, 0.0);
+  p.major = major;
+  p.minor = minor;
+  p.weights = ProbeWeights(1.0, 1.0, 1.0);
   if (maxProbes <= 1) {
     p.sigma = max(sqrt(sqrt(major * minor)), minSigma);
     return p;
@@ -72,13 +93,9 @@ FootprintProbes footprintProbes(vec2 centre, mat2 sigmaP, float minSigma, int ma
   }
   vec2 axis = q >= 0.0 ? vec2(r + q, b) : vec2(b, r - q);
   p.step = normalize(axis) * (p.gridStep * sqrt(line / variance));
+  float h = p.gridStep, z0 = -0.5 * float(p.count - 1) * h;
+  p.weights = ProbeWeights(exp(-0.5 * z0 * z0) / p.weightSum, exp(-z0 * h - 0.5 * h * h), exp(-h * h));
   return p;
 }
 
 vec2 probeCentre(FootprintProbes p, int j) { return p.centre + (float(j) - 0.5 * float(p.count - 1)) * p.step; }
-
-// Probe j's weight; the weights sum to 1.
-float probeWeight(FootprintProbes p, int j) {
-  float z = (float(j) - 0.5 * float(p.count - 1)) * p.gridStep;
-  return exp(-0.5 * z * z) / p.weightSum;
-}

@@ -15,6 +15,12 @@
 #include "lobe/lobe_shading.glsl"
 
 #if MATERIAL_KIND == MATERIAL_KIND_NORMAL_MAP_GLINTS
+// The pyramid's shape compiled in where the parameters fix it (they made the pyramid): 0 where N is
+// chosen from sigma_r at precompute (and B with it), read from the header then.
+#define PNDF_COMPILED_SHAPE
+const int PNDF_FIXED_N = param_ndf_resolution;
+const int PNDF_FIXED_B = param_block_size > 0 ? param_block_size : param_ndf_resolution / 4;
+const int PNDF_FIXED_RANK = param_rank;
 #include "glints/normal-map/position_normal.glsl"
 #include "glints/normal-map/prefiltered_ndf.glsl"
 #include "glints/normal-map/footprint_probes.glsl"

@@ -66,6 +66,9 @@ std::vector<ParamDecl> prefilter_params() {
     ParamDecl d{p.name, static_cast<float>(p.get(defaults)), p.min, p.max, p.description, p.choices};
     d.host_only = true;
     d.integer = true;
+    // The query's shape: compiled in, so that its loops unroll and its divisions fold.
+    const std::string name = p.name;
+    d.specialises = name == "rank" || name == "ndf_resolution" || name == "block_size";
     params.push_back(std::move(d));
   }
   return params;

@@ -32,6 +32,11 @@ struct ParamDecl {
   bool host_only = false;
   /// A count (a rank, a resolution): a value with a fraction is refused, never rounded.
   bool integer = false;
+  /// A host-only count the module is also compiled for (deng2022's rank and angular grid): it sees
+  /// `const int param_<name>` holding the value, each value its own program, so that loops over it
+  /// unroll and divisions by it fold (a GPU's shifts instead of integer divisions). Needs
+  /// host_only and integer.
+  bool specialises = false;
 
   [[nodiscard]] bool is_enumeration() const { return !choices.empty(); }
   /// "0 .. 1", or "a|b|c" for an enumeration.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <set>
 
 #include "core/error.hpp"
@@ -66,7 +67,10 @@ ParamUses param_uses(const std::string& source) {
 std::string generated_module_path(const MethodDescriptor& method, const ParamValues& values) {
   std::string path = "generated/methods/" + method.id;
   for (const ParamDecl& p : method.params)
-    if (p.compile_time) path += "." + p.name + "-" + p.choices.at(compile_time_choice(p, values));
+    if (p.compile_time)
+      path += "." + p.name + "-" + p.choices.at(compile_time_choice(p, values));
+    else if (p.specialises)
+      path += "." + p.name + "-" + std::to_string(specialised_value(p, values));
   return path + ".glsl";
 }
 
@@ -85,6 +89,11 @@ std::size_t compile_time_choice(const ParamDecl& param, const ParamValues& value
   return std::min(static_cast<std::size_t>(std::max(value, 0.0f)), param.choices.size() - 1);
 }
 
+int specialised_value(const ParamDecl& param, const ParamValues& values) {
+  const auto it = values.find(param.name);
+  return static_cast<int>(std::lround(it == values.end() ? param.default_value : it->second));
+}
+
 std::string generated_module_source(const MethodDescriptor& method, const std::string& module_source,
                                     const ParamValues& values) {
   const std::string where = "method '" + method.id + "': shaders/" + method.module_path();
@@ -94,10 +103,10 @@ std::string generated_module_source(const MethodDescriptor& method, const std::s
                          " itself; parameter uniforms are generated from the descriptor's ParamDecls: remove the "
                          "declaration");
   for (const ParamDecl& p : method.params)
-    if (p.host_only && uses.read.contains(p.name))
+    if (p.host_only && !p.specialises && uses.read.contains(p.name))
       throw RuntimeFailure(where + " reads param_" + p.name + ", a host-only parameter (ParamDecl::host_only): the "
                            "module cannot see it");
-    else if (!p.host_only && !uses.read.contains(p.name))
+    else if ((!p.host_only || p.specialises) && !uses.read.contains(p.name))
       throw RuntimeFailure(where + " never reads parameter '" + p.name + "' (param_" + p.name +
                            ") that its descriptor declares; use it in the module or remove the declaration");
   for (const std::string& name : uses.read)
@@ -112,6 +121,10 @@ std::string generated_module_source(const MethodDescriptor& method, const std::s
                     "' (shading/method_module.hpp): its parameters, then its module.\n";
   for (const ParamDecl& p : method.params) {
     const std::string name = kParamPrefix + p.name;
+    if (p.specialises) {
+      out += "const int " + name + " = " + std::to_string(specialised_value(p, values)) + ";\n";
+      continue;
+    }
     if (p.host_only) continue;
     if (p.compile_time) {
       const std::size_t choice = compile_time_choice(p, values);

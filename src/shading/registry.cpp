@@ -52,6 +52,9 @@ void check_declaration(const MethodDescriptor& m, const char* file) {
       throw std::logic_error(where + ": parameter '" + p.name + "' has its default outside " + p.allowed());
     if (p.compile_time && p.choices.empty())
       throw std::logic_error(where + ": parameter '" + p.name + "' is compile_time but has no choices");
+    if (p.specialises && !(p.host_only && p.integer && p.choices.empty()))
+      throw std::logic_error(where + ": parameter '" + p.name + "' specialises the module but is not a host-only "
+                             "integer");
     if (!p.choice_tables.empty() && p.choice_tables.size() != p.choices.size())
       throw std::logic_error(where + ": parameter '" + p.name + "' has " + std::to_string(p.choice_tables.size()) +
                              " choice_tables for " + std::to_string(p.choices.size()) + " choices");

@@ -1,6 +1,7 @@
 // deng2022's GLSL queries (shaders/glints/normal-map/prefiltered_ndf.glsl) against the C++ ones
 // (src/prefilter/prefiltered_ndf.cpp) on the same packed pyramid: point and box queries (block by
-// block and through the box prefix tables) over random footprints (inside and outside the pyramid's range of sigma) and half vectors.
+// block and through the box prefix tables) over random footprints (inside and outside the pyramid's
+// range of sigma) and half vectors, with N, B and R read from the header or compiled in.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -62,7 +63,13 @@ TEST(PrefilteredNdfGlsl, QueriesAgreeWithTheCpu) {
     const float e = static_cast<float>(p.grid.extent);
     b.emplace_back((2 * u(rng) - 1) * 1.1f * e, (2 * u(rng) - 1) * 1.1f * e, 0.3f * e * u(rng) * u(rng), 0.3f * e * u(rng));
   }
-  const auto out = evaluate_glsl("#include \"glints/normal-map/prefiltered_ndf.glsl\"", R"(
+  // With N, B and R read from the header, and compiled in as deng2022 does (PNDF_COMPILED_SHAPE).
+  const std::string compiled = "#define PNDF_COMPILED_SHAPE\nconst int PNDF_FIXED_N = " +
+                               std::to_string(p.grid.resolution) + ", PNDF_FIXED_B = " +
+                               std::to_string(p.settings.block_size) + ", PNDF_FIXED_RANK = " +
+                               std::to_string(p.rank()) + ";\n";
+  for (const std::string& shape : {std::string(), compiled}) {
+    const auto out = evaluate_glsl(shape + "#include \"glints/normal-map/prefiltered_ndf.glsl\"", R"(
 vec4 evaluate(vec4 a, vec4 b) {
   int m = int(a.w);
   if (!pndfPresent(m) || pndfPresent(0)) return vec4(-1.0);
@@ -70,22 +77,22 @@ vec4 evaluate(vec4 a, vec4 b) {
   return vec4(pndfDensity(h, a.xy, a.z, b.xy), pndfRangeMean(h, a.xy, a.z, b.xy - b.zw, b.xy + b.zw, false),
               pndfRangeMean(h, a.xy, a.z, b.xy - b.zw, b.xy + b.zw, true), 0.0);
 })",
-                                 a, b);
-  double peak = 0.0;
-  for (float v : p.rows) peak = std::max(peak, static_cast<double>(std::abs(v)));
-  int nonzero = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    const glm::dvec2 centre(a[i].x, a[i].y), s(b[i].x, b[i].y), half(b[i].z, b[i].w);
-    const double d = p.density(centre, a[i].z, s), r = p.range_mean(centre, a[i].z, s - half, s + half);
-    ASSERT_NE(out[i].x, -1.0f) << "the packed pyramid's material offsets";
-    EXPECT_NEAR(out[i].x, d, 2e-4 * d + 1e-4) << "point query " << i;
-    // The box query subtracts prefix sums: in float on the device, in double here.
-    EXPECT_NEAR(out[i].y, r, 2e-3 * r + 1e-4) << "box query, block by block " << i;
-    // From the corners: differences of float prefix sums of the whole image.
-    EXPECT_NEAR(out[i].z, r, 2e-3 * r + 1e-3) << "box query, prefix tables " << i;
-    nonzero += d > 0.1 ? 1 : 0;
+                                   a, b);
+    int nonzero = 0;
+    const char* which = shape.empty() ? "shape from the header" : "shape compiled in";
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      const glm::dvec2 centre(a[i].x, a[i].y), s(b[i].x, b[i].y), half(b[i].z, b[i].w);
+      const double d = p.density(centre, a[i].z, s), r = p.range_mean(centre, a[i].z, s - half, s + half);
+      ASSERT_NE(out[i].x, -1.0f) << "the packed pyramid's material offsets";
+      EXPECT_NEAR(out[i].x, d, 2e-4 * d + 1e-4) << "point query " << i << ", " << which;
+      // The box query subtracts prefix sums: in float on the device, in double here.
+      EXPECT_NEAR(out[i].y, r, 2e-3 * r + 1e-4) << "box query, block by block " << i << ", " << which;
+      // From the corners: differences of float prefix sums of the whole image.
+      EXPECT_NEAR(out[i].z, r, 2e-3 * r + 1e-3) << "box query, prefix tables " << i << ", " << which;
+      nonzero += d > 0.1 ? 1 : 0;
+    }
+    EXPECT_GT(nonzero, 50);  // the sweep reaches the NDF's mass, not just empty space
   }
-  EXPECT_GT(nonzero, 50);  // the sweep reaches the NDF's mass, not just empty space
 }
 
 // deng2022's reading of an anisotropic footprint (shaders/glints/normal-map/footprint_probes.glsl):

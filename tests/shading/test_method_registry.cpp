@@ -177,6 +177,28 @@ TEST(MethodModule, EnumerationsAreIntsTheirChoicesIndices) {
   EXPECT_EQ(generated_module_path(m, {{"fixed", 2.0f}}), "generated/methods/m.fixed-third.glsl");
 }
 
+TEST(MethodModule, HostOnlyParametersAreHiddenUnlessTheySpecialiseTheModule) {
+  // A host-only setting never reaches GLSL (reading it is an error); one that specialises the
+  // module (deng2022's rank and grid) is a constant of its value, each value its own program.
+  ParamDecl hidden{"hidden", 4, 1, 8, ""};
+  hidden.host_only = hidden.integer = true;
+  ParamDecl shape = hidden;
+  shape.name = "shape";
+  shape.specialises = true;
+  const MethodDescriptor m = descriptor("m", {hidden, shape});
+  const std::string source = generated_module_source(m, "x = param_shape;", {{"shape", 6.0f}});
+  EXPECT_TRUE(contains(source, "const int param_shape = 6;\n")) << source;
+  EXPECT_FALSE(contains(source, "param_hidden")) << source;
+  EXPECT_EQ(generated_module_path(m, {{"shape", 6.0f}}), "generated/methods/m.shape-6.glsl");
+  EXPECT_EQ(generated_module_path(m), "generated/methods/m.shape-4.glsl");
+  EXPECT_THROW(generated_module_source(m, "x = param_shape + param_hidden;"), RuntimeFailure);
+  EXPECT_THROW(generated_module_source(m, "x = 1;"), RuntimeFailure) << "a specialising parameter never read";
+  // deng2022's compile its pyramid's shape in.
+  const MethodDescriptor& deng = find_method("deng2022");
+  EXPECT_TRUE(contains(generated_module_path(deng, {{"rank", 8.0f}}), ".rank-8.")) << generated_module_path(deng);
+  EXPECT_TRUE(contains(generated_module_path(deng), ".ndf_resolution-64.block_size-16.")) << generated_module_path(deng);
+}
+
 TEST(MethodRegistry, ChoiceDefinesAreTheParameterAndChoiceInUpperSnakeCase) {
   EXPECT_EQ(choice_define("area_lights", "representative-point"), "AREA_LIGHTS_REPRESENTATIVE_POINT");
   EXPECT_EQ(choice_define("remaining_count", "lognormal"), "REMAINING_COUNT_LOGNORMAL");

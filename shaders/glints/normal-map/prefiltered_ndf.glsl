@@ -11,6 +11,14 @@ layout(std430, binding = PREFILTERED_NDF_VALUES_BINDING) readonly buffer Prefilt
 
 const uint PNDF_NONE = 0xffffffffu;
 
+// The pyramid's N, B and R as constants where the including method compiles them in (its
+// parameters fix them; 0: read from the header, as here by default). A constant folds through
+// every query once the header is inlined: loops over R unroll, divisions by N and B become shifts
+// where they are powers of two.
+#ifndef PNDF_COMPILED_SHAPE
+const int PNDF_FIXED_N = 0, PNDF_FIXED_B = 0, PNDF_FIXED_RANK = 0;
+#endif
+
 struct PndfHeader {
   uint at;  // the header's word
   int levels, n, b, rank;
@@ -23,9 +31,9 @@ PndfHeader pndfHeader(int material) {
   PndfHeader h;
   h.at = pndfRecords[material];
   h.levels = int(pndfRecords[h.at + 0u]);
-  h.n = int(pndfRecords[h.at + 1u]);
-  h.b = int(pndfRecords[h.at + 2u]);
-  h.rank = int(pndfRecords[h.at + 3u]);
+  h.n = PNDF_FIXED_N > 0 ? PNDF_FIXED_N : int(pndfRecords[h.at + 1u]);
+  h.b = PNDF_FIXED_B > 0 ? PNDF_FIXED_B : int(pndfRecords[h.at + 2u]);
+  h.rank = PNDF_FIXED_RANK > 0 ? PNDF_FIXED_RANK : int(pndfRecords[h.at + 3u]);
   h.extent = uintBitsToFloat(pndfRecords[h.at + 4u]);
   h.footprints = pndfRecords[h.at + 5u];
   h.groups = pndfRecords[h.at + 6u];

@@ -70,7 +70,12 @@ PrefilteredNdf load_or_precompute_prefiltered_ndf(const NormalMap& map, double i
         PrefilteredNdf p = PrefilteredNdf::read(in);
         problem = mismatch(p, map, intrinsic_roughness, settings);
         if (problem.empty()) {
+          // The settings asked for, with the grid the entry was made with where they asked for
+          // one chosen from the map (0).
+          const int resolution = p.settings.ndf_resolution, block_size = p.settings.block_size;
           p.settings = settings;
+          p.settings.ndf_resolution = resolution;
+          p.settings.block_size = block_size;
           return p;
         }
       } catch (const RuntimeFailure& e) {

@@ -361,6 +361,15 @@ TEST(PrefilteredNdf, CacheRoundTripsAndRebuildsADamagedEntry) {
   const PrefilteredNdf c = load_or_precompute_prefiltered_ndf(bumps(), 0.03, s, dir.path());
   EXPECT_EQ(a.rows, c.rows);
   EXPECT_NE(prefiltered_ndf_key(bumps(), 0.03, s), prefiltered_ndf_key(bumps(), 0.031, s));
+  // A grid chosen at precompute (a 0 asked for: here B = N / 4) comes back from the cache as chosen.
+  PrefilterSettings chosen = s;
+  chosen.block_size = 0;
+  const PrefilteredNdf made = load_or_precompute_prefiltered_ndf(bumps(), 0.03, chosen, dir.path());
+  const PrefilteredNdf read = load_or_precompute_prefiltered_ndf(bumps(), 0.03, chosen, dir.path());
+  ASSERT_GT(made.settings.block_size, 0);
+  EXPECT_EQ(read.settings.ndf_resolution, made.settings.ndf_resolution);
+  EXPECT_EQ(read.settings.block_size, made.settings.block_size);
+  EXPECT_EQ(read.blocks_per_side(), made.blocks_per_side());
 }
 
 /// Entries that a checksum cannot catch (a consistent frame around wrong bytes, as a bug or a

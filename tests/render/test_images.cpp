@@ -138,7 +138,8 @@ TEST(Images, ReferenceConvergesWithMoreSamples) {
 // built-in scene has, with that scene's light kinds: Shaders.EveryMethodAndPassCompiles*
 // (tests/glsl/test_shaders.cpp) validate the (module, variant, light kind) they leave out, read by
 // builtin_scene_light_kinds() (tests/builtin_scene_programs.hpp). So render every method, at its
-// defaults (but deng2022's precompute settings, below: host-only, the same programs), in every
+// defaults (but deng2022's precompute settings, below: its rank and grid specialise its programs,
+// other constants in the same code; test_deng2022.cpp renders the defaults'), in every
 // material of the scenes every_method_scenes() chooses (they hold every scene's material kinds),
 // or change that helper to match; the other scenes render `conventional`.
 // deng2022's pyramids of the normal-map-glints scenes' 256^2 maps at the default precompute

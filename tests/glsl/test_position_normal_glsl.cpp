@@ -323,7 +323,7 @@ vec4 evaluate(vec4 a, vec4 b) {
 TEST(PositionNormalGlsl, SamplesFollowTheElementMixture) {
   // The GLSL sampler (glints/normal-map/ndf_sampling.glsl) on the device, as the CPU's
   // (tests/prefilter/test_ndf_sampling.cpp): its pdf is the GLSL density, which is the CPU's, and
-  // a chi-square test of 40000 samples against the CPU's box means over a 24^2 grid (and the mass
+  // a chi-square test of 20000 samples against the CPU's box means over a 24^2 grid (and the mass
   // outside it) passes; the mixture of a footprint twice as wide is told apart. Then a footprint
   // past its budget: the samples follow the subset's own density (the GLSL box means).
   const NormalMap map = generate_bumps(32, 0.3f, 48, 6, 17);
@@ -331,7 +331,7 @@ TEST(PositionNormalGlsl, SamplesFollowTheElementMixture) {
   const double sr = 0.03;
   const PositionNormalDistribution cpu(map, sr, 2);
   const NdfGrid grid{24, cpu.suggested_extent()};
-  constexpr int kSamples = 40000;
+  constexpr int kSamples = 20000;
   std::mt19937 rng(43);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   const std::string includes = "#include \"generated/gpu_contract.glsl\"\n"

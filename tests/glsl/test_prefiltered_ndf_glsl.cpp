@@ -148,13 +148,13 @@ vec4 evaluate(vec4 a, vec4 b) {
 
 // The GLSL sampler of the pyramid (glints/normal-map/ndf_sampling.glsl, sec. 5.2) on the device,
 // as the CPU's (tests/prefilter/test_ndf_sampling.cpp): its pdf is the C++ density over the C++
-// mass, and a chi-square test of 40000 samples against that density over the cells between pixel
+// mass, and a chi-square test of 20000 samples against that density over the cells between pixel
 // centres (where the density is bilinear: its value at a cell's centre times the cell's area is
 // the cell's integral) passes, while the density of a footprint twice as wide is told apart. Both
 // packings: with the box prefix tables (a footprint between levels, 8 blended) and without (block
 // by block; a stored level's footprint).
 TEST(PrefilteredNdfGlsl, SamplesFollowTheDensityTheMethodEvaluates) {
-  constexpr int kSamples = 40000;
+  constexpr int kSamples = 20000;
   std::mt19937 rng(41);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   for (const auto& [tables, centre, sigma] : {std::tuple{true, glm::vec2(11.3f, 20.6f), 1.7f}, {false, glm::vec2(4.5f, 4.5f), 2.0f}}) {

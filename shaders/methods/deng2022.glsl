@@ -21,6 +21,7 @@
 const int PNDF_FIXED_N = param_ndf_resolution;
 const int PNDF_FIXED_B = param_block_size > 0 ? param_block_size : param_ndf_resolution / 4;
 const int PNDF_FIXED_RANK = param_rank;
+#define POSITION_NORMAL_STORED_ELEMENTS  // the fallback's elements, computed once (resource position-normal-elements)
 #include "glints/normal-map/position_normal.glsl"
 #include "glints/normal-map/prefiltered_ndf.glsl"
 #include "glints/normal-map/footprint_probes.glsl"
@@ -79,6 +80,7 @@ void prepareSurface(inout Surface s) {
                                       positionNormalElementBudget((side + 1.0) * (side + 1.0)));
   gBelowPyramid = param_small_footprints != SMALL_FOOTPRINTS_CLAMP &&
                   (largest < sigma0 * sigma0 || (smallest < sigma0 * sigma0 && gElements.boxElements <= budget));
+  gElements.firstElement = positionNormalFirstElement[uMaterial];  // none stored with small_footprints = clamp
   if (!gBelowPyramid) gElements.cells = ivec2(0);
 #endif
 }

@@ -12,6 +12,7 @@
 
 #if MATERIAL_KIND == MATERIAL_KIND_NORMAL_MAP_GLINTS
 const int ELEMENTS_PER_TEXEL = param_elements_per_texel == ELEMENTS_PER_TEXEL_2 ? 2 : 1;
+#define POSITION_NORMAL_STORED_ELEMENTS  // the material's elements, computed once (resource position-normal-elements)
 #include "glints/normal-map/position_normal.glsl"
 
 PositionNormalFootprint gFootprint;
@@ -35,6 +36,7 @@ void prepareSurface(inout Surface s) {
   gFootprint = positionNormalFootprint(fract(s.uv) * vec2(size), sigmaP, size, ELEMENTS_PER_TEXEL,
                                        normalMapGlintsIntrinsicRoughness(m),
                                        positionNormalElementBudget(param_max_elements));
+  gFootprint.firstElement = positionNormalFirstElement[uMaterial];
   gMaskingAlpha = normalMapGlintsMaskingAlpha(m);
 #endif
 }

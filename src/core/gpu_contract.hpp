@@ -23,6 +23,10 @@ inline constexpr int kMaterialBlockBinding = 2;
 /// src/prefilter/prefiltered_ndf_layout.hpp, shaders/glints/normal-map/prefiltered_ndf.glsl).
 inline constexpr int kPrefilteredNdfRecordsBinding = 0;
 inline constexpr int kPrefilteredNdfValuesBinding = 1;
+/// Storage-buffer binding points of the materials' stored Gaussian elements (yan2016, deng2022's
+/// fallback; src/prefilter/position_normal_elements.hpp, shaders/glints/normal-map/position_normal.glsl).
+inline constexpr int kPositionNormalElementNormalsBinding = 2;
+inline constexpr int kPositionNormalElementJacobiansBinding = 3;
 /// Storage-buffer binding points of the path tracer's shading pass (passes/path_direct.comp,
 /// src/render/path_reference.cpp): its hits in; their shadow rays, emission and bounces out.
 inline constexpr int kPathHitsBinding = 4;

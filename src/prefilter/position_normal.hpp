@@ -42,6 +42,8 @@ class PositionNormalDistribution {
   [[nodiscard]] int height() const { return field_.height(); }
   [[nodiscard]] double intrinsic_roughness() const { return sigma_r_; }
   [[nodiscard]] int elements_per_texel() const { return k_; }
+  /// Every element, (width k) x (height k), row major.
+  [[nodiscard]] const std::vector<Element>& elements() const { return elements_; }
   /// Element shape: an isotropic Gaussian of this standard deviation in texels (1.5 / (k sqrt 12):
   /// a box of the element's spacing, widened by 1.5 so that neighbours overlap).
   [[nodiscard]] double element_sigma() const;

@@ -83,7 +83,9 @@ std::uint64_t prefiltered_ndf_bytes_bound(const PrefilterSettings& settings, int
   const std::uint64_t b = static_cast<std::uint64_t>(grid.block_size);
   std::uint64_t nx = static_cast<std::uint64_t>(base_footprints(width, settings));
   std::uint64_t ny = static_cast<std::uint64_t>(base_footprints(height, settings));
-  std::uint64_t bytes = 4 * 12;  // the header's words (src/prefilter/prefiltered_ndf_layout.hpp)
+  // The header's words and the zeros that align its three value regions to vec4s
+  // (src/prefilter/prefiltered_ndf_layout.hpp).
+  std::uint64_t bytes = 4 * 12 + 4 * 9;
   for (int level = 0; level < settings.max_levels; ++level) {
     bytes += 4 * 8;  // the level's words
     const std::uint64_t footprints = nx * ny;

@@ -9,6 +9,8 @@ namespace glintlab {
 
 namespace {
 std::uint32_t bits(double v) { return std::bit_cast<std::uint32_t>(static_cast<float>(v)); }
+std::size_t vec4_aligned(std::size_t floats) { return (floats + 3) / 4 * 4; }
+void align_to_vec4(std::vector<float>& values) { values.resize(vec4_aligned(values.size()), 0.0f); }
 std::uint32_t word(std::size_t v) {
   if (v >= kNoPrefilteredNdf) throw RuntimeFailure("prefiltered NDFs exceed 2^32 words of GPU memory");
   return static_cast<std::uint32_t>(v);
@@ -28,9 +30,12 @@ PrefilteredNdfBuffers pack_prefiltered_ndfs(std::span<const PrefilteredNdf* cons
     const std::size_t levels_at = header + kPrefilteredNdfHeaderWords;
     const std::size_t footprints_at = levels_at + p->levels.size() * kPrefilteredNdfLevelWords;
     const std::size_t groups_at = footprints_at + 4 * p->footprints.size();
+    // Each region starts on a multiple of 4 floats: with R a multiple of 4, every rank-R row of
+    // the factors is then a run of aligned vec4s (the GLSL point query's vector loads).
+    align_to_vec4(out.values);
     const std::size_t angular_at = out.values.size();
-    const std::size_t rows_at = angular_at + p->angular.size();
-    const std::size_t tables_at = rows_at + p->rows.size();
+    const std::size_t rows_at = vec4_aligned(angular_at + p->angular.size());
+    const std::size_t tables_at = vec4_aligned(rows_at + p->rows.size());
     rec.insert(rec.end(), {word(p->levels.size()), word(static_cast<std::size_t>(p->grid.resolution)),
                            word(static_cast<std::size_t>(p->settings.block_size)),
                            word(static_cast<std::size_t>(p->rank())), bits(p->grid.extent), word(footprints_at),
@@ -43,8 +48,10 @@ PrefilteredNdfBuffers pack_prefiltered_ndfs(std::span<const PrefilteredNdf* cons
     for (const FootprintRecord& f : p->footprints) rec.insert(rec.end(), {f.mask_lo, f.mask_hi, f.first_row, f.group});
     rec.insert(rec.end(), p->group_offsets.begin(), p->group_offsets.end());
     out.values.insert(out.values.end(), p->angular.begin(), p->angular.end());
+    align_to_vec4(out.values);
     out.values.insert(out.values.end(), p->rows.begin(), p->rows.end());
     if (box_prefix_tables) {
+      align_to_vec4(out.values);
       const BoxPrefixTables tables = glintlab::box_prefix_tables(*p);
       out.values.insert(out.values.end(), tables.values.begin(), tables.values.end());
     }

@@ -11,7 +11,9 @@
 //   sigma (float bits), 0, 0.
 //   footprint f: 4 words (mask_lo, mask_hi, first row, group); group g: its angular offset.
 // values: each material's angular factors (a, b, SA, SB per group), then its rows, then (if packed)
-//   its box prefix tables, (N/B)^2 (2R + 1) floats per footprint.
+//   its box prefix tables, (N/B)^2 (2R + 1) floats per footprint; each of the three starts on a
+//   multiple of 4 floats (zeros between), so that with R a multiple of 4 the factors' rows are
+//   aligned vec4s.
 #include <cstdint>
 #include <span>
 #include <vector>

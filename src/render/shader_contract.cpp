@@ -288,6 +288,8 @@ ShaderDefines contract_defines() {
       {"MATERIAL_BLOCK_BINDING", std::to_string(kMaterialBlockBinding)},
       {"PREFILTERED_NDF_RECORDS_BINDING", std::to_string(kPrefilteredNdfRecordsBinding)},
       {"PREFILTERED_NDF_VALUES_BINDING", std::to_string(kPrefilteredNdfValuesBinding)},
+      {"POSITION_NORMAL_ELEMENT_NORMALS_BINDING", std::to_string(kPositionNormalElementNormalsBinding)},
+      {"POSITION_NORMAL_ELEMENT_JACOBIANS_BINDING", std::to_string(kPositionNormalElementJacobiansBinding)},
       {"PATH_HITS_BINDING", std::to_string(kPathHitsBinding)},
       {"PATH_SHADOW_RAYS_BINDING", std::to_string(kPathShadowRaysBinding)},
       {"PATH_EMISSION_BINDING", std::to_string(kPathEmissionBinding)},

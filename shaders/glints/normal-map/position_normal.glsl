@@ -21,9 +21,26 @@
 // footprint moves). Over the hash, every element is in the subset with probability 1 / s^2, so
 // both sums are unbiased and their ratio consistent; the error is sampling noise of the map's
 // normals, not a lost part of the footprint (issue 30, item 2).
+//
+// Where the including method defines POSITION_NORMAL_STORED_ELEMENTS, p_e and J_e are read from
+// the material's elements, computed once from the map (resource `position-normal-elements`,
+// src/prefilter/position_normal_elements.hpp): one vec2 and one vec4 load per element instead of
+// five texel reads and five normalisations per element, light and pixel. The caller sets the
+// footprint's firstElement (positionNormalFirstElement[material]).
+#include "generated/gpu_contract.glsl"
 #include "core/constants.glsl"
 #include "core/sampling.glsl"
 #include "core/wrap.glsl"
+
+#ifdef POSITION_NORMAL_STORED_ELEMENTS
+layout(std430, binding = POSITION_NORMAL_ELEMENT_NORMALS_BINDING) readonly buffer PositionNormalElementNormals {
+  uint positionNormalFirstElement[MAX_MATERIALS + MAX_MATERIALS % 2];  // even: the vec2s after them align
+  vec2 positionNormalElementNormals[];
+};
+layout(std430, binding = POSITION_NORMAL_ELEMENT_JACOBIANS_BINDING) readonly buffer PositionNormalElementJacobians {
+  vec4 positionNormalElementJacobians[];  // J_e's columns dp/du.x, dp/du.y
+};
+#endif
 
 struct PositionNormalFootprint {
   vec2 centre;        // c, in texels, wrapped into [0, size)
@@ -37,6 +54,7 @@ struct PositionNormalFootprint {
   ivec2 cells;        // cells per axis; cells.x cells.y <= the budget
   uint seed;          // the subset's hash seed (0 in the methods; tests vary it)
   ivec2 size;         // the map's texels
+  uint firstElement;  // the material's first stored element (POSITION_NORMAL_STORED_ELEMENTS)
 };
 
 // The cells of stride s that the elements [first, last] meet along each axis.
@@ -82,6 +100,7 @@ PositionNormalFootprint positionNormalFootprint(vec2 centre, mat2 sigmaP, ivec2 
   f.cells = f.boxElements > 0.0 ? ivec2(positionNormalCells(first, last, float(f.stride))) : ivec2(0);
   f.seed = 0u;
   f.size = size;
+  f.firstElement = 0u;
   return f;
 }
 
@@ -122,6 +141,19 @@ void positionNormalElement(sampler2D map, ivec2 size, ivec2 e, const int k, out 
 #undef BILINEAR_XY
   }
 }
+
+#ifdef POSITION_NORMAL_STORED_ELEMENTS
+// Element e's centre, p_e and J_e as positionNormalElement computes them, from the stored elements
+// (k x k per texel, row major, the grid wrapping as the map).
+void positionNormalStoredElement(PositionNormalFootprint f, ivec2 e, const int k, out vec2 u, out vec2 p, out mat2 J) {
+  u = (vec2(e) + 0.5) / float(k);
+  const ivec2 wrapped = floorMod(e, f.size * k);
+  const uint i = f.firstElement + uint(wrapped.y * f.size.x * k + wrapped.x);
+  p = positionNormalElementNormals[i];
+  const vec4 j = positionNormalElementJacobians[i];
+  J = mat2(j.xy, j.zw);
+}
+#endif
 
 // erfc(x) for x >= 0 with one exp, no branch and no loop: exp(-x^2) t P(t), t = 1 / (1 + 0.44 x),
 // P of degree 5 fitted for the least maximum relative error over [0, 12] (5.2e-6; float's
@@ -210,7 +242,11 @@ float positionNormalSum(sampler2D map, PositionNormalFootprint f, const int k, v
     ivec2 e = positionNormalCellElement(f.firstCell + ivec2(i % f.cells.x, i / f.cells.x), f.stride, f.seed);
     vec2 u, p;
     mat2 J;
+#ifdef POSITION_NORMAL_STORED_ELEMENTS
+    positionNormalStoredElement(f, e, k, u, p, J);
+#else
     positionNormalElement(map, f.size, e, k, u, p, J);
+#endif
     vec2 d = f.centre - u;
     vec2 q = f.totalInverse * d;
     float distance2 = dot(d, q);

@@ -8,6 +8,9 @@
 
 layout(std430, binding = PREFILTERED_NDF_RECORDS_BINDING) readonly buffer PrefilteredNdfRecords { uint pndfRecords[]; };
 layout(std430, binding = PREFILTERED_NDF_VALUES_BINDING) readonly buffer PrefilteredNdfValues { float pndfValues[]; };
+// The same floats as vec4s: the factors' rank-R rows are runs of aligned vec4s where R is a
+// multiple of 4 (src/prefilter/prefiltered_ndf_layout.hpp aligns every region).
+layout(std430, binding = PREFILTERED_NDF_VALUES_BINDING) readonly buffer PrefilteredNdfVectors { vec4 pndfVectors[]; };
 
 const uint PNDF_NONE = 0xffffffffu;
 
@@ -18,6 +21,13 @@ const uint PNDF_NONE = 0xffffffffu;
 #ifndef PNDF_COMPILED_SHAPE
 const int PNDF_FIXED_N = 0, PNDF_FIXED_B = 0, PNDF_FIXED_RANK = 0;
 #endif
+// A rank compiled in as a multiple of 4: the loops over it read 4 ranks per vec4 load.
+const bool PNDF_VECTOR_LOADS = PNDF_FIXED_RANK > 0 && PNDF_FIXED_RANK % 4 == 0;
+
+// Ranks r .. r + 3 of the row at float `at` (a multiple of 4 where PNDF_VECTOR_LOADS holds).
+vec4 pndfRow4(uint at, int r) { return pndfVectors[(at >> 2u) + uint(r >> 2)]; }
+// Four consecutive floats from any float index (the box prefix tables' rows are not aligned).
+vec4 pndfFloats4(uint at) { return vec4(pndfValues[at], pndfValues[at + 1u], pndfValues[at + 2u], pndfValues[at + 3u]); }
 
 struct PndfHeader {
   uint at;  // the header's word
@@ -77,6 +87,12 @@ float pndfPrefix(PndfHeader h, uint sums, uint factor, float t, int r) {
   return pndfValues[sums + uint(f * h.rank + r)] + (t - float(f)) * pndfValues[factor + uint(f * h.rank + r)];
 }
 
+// pndfPrefix for ranks r .. r + 3 (PNDF_VECTOR_LOADS: sums and factor are aligned rows).
+vec4 pndfPrefix4(PndfHeader h, uint sums, uint factor, float t, int r) {
+  const int f = min(int(t), h.b - 1);
+  return pndfRow4(sums + uint(f * h.rank), r) + (t - float(f)) * pndfRow4(factor + uint(f * h.rank), r);
+}
+
 // The integral of footprint f's pixels over [x0, x1] (continuous pixel coordinates inside the
 // image), block by block through the prefix sums (eq. 7).
 float pndfPixelRangeSum(PndfHeader h, uint f, vec2 x0, vec2 x1) {
@@ -118,6 +134,18 @@ float pndfPixelRangeSumByCorners(PndfHeader h, uint f, vec2 x0, vec2 x1) {
   const float k00 = pndfKeptRow(h, f, bit00, row00), k10 = pndfKeptRow(h, f, bit10, row10);
   const float k01 = pndfKeptRow(h, f, bit01, row01), k11 = pndfKeptRow(h, f, bit11, row11);
   float total = (pndfValues[t11] - pndfValues[t01]) - (pndfValues[t10] - pndfValues[t00]);
+  if (PNDF_VECTOR_LOADS) {
+    for (int r = 0; r < PNDF_FIXED_RANK; r += 4) {
+      const vec4 pa0 = pndfPrefix4(h, sa, a, in0.x, r), pa1 = pndfPrefix4(h, sa, a, in1.x, r);
+      const vec4 pb0 = pndfPrefix4(h, sb, b, in0.y, r), pb1 = pndfPrefix4(h, sb, b, in1.y, r);
+      const uint u = uint(1 + r), l = uint(1 + h.rank + r);
+      total += dot(pa1 * pb1, k11 * pndfRow4(row11, r)) - dot(pa0 * pb1, k01 * pndfRow4(row01, r)) -
+               dot(pa1 * pb0, k10 * pndfRow4(row10, r)) + dot(pa0 * pb0, k00 * pndfRow4(row00, r)) +
+               dot(pa1, pndfFloats4(t11 + u) - pndfFloats4(t10 + u)) + dot(pa0, pndfFloats4(t00 + u) - pndfFloats4(t01 + u)) +
+               dot(pb1, pndfFloats4(t11 + l) - pndfFloats4(t01 + l)) + dot(pb0, pndfFloats4(t00 + l) - pndfFloats4(t10 + l));
+    }
+    return max(total, 0.0);
+  }
   for (int r = 0; r < h.rank; ++r) {
     const float pa0 = pndfPrefix(h, sa, a, in0.x, r), pa1 = pndfPrefix(h, sa, a, in1.x, r);
     const float pb0 = pndfPrefix(h, sb, b, in0.y, r), pb1 = pndfPrefix(h, sb, b, in1.y, r);
@@ -205,6 +233,15 @@ float pndfDensity(PndfHeader h, vec2 centre, float sigma, vec2 s) {
     const float k11 = weight * pndfKeptRow(h, footprint, block1.y * nb + block1.x, row11);
     const uint ai0 = a + uint(in0.x * h.rank), ai1 = a + uint(in1.x * h.rank);
     const uint bj0 = b + uint(in0.y * h.rank), bj1 = b + uint(in1.y * h.rank);
+    if (PNDF_VECTOR_LOADS) {
+      for (int r = 0; r < PNDF_FIXED_RANK; r += 4) {
+        const vec4 x0 = w0.x * pndfRow4(ai0, r), x1 = w1.x * pndfRow4(ai1, r);
+        const vec4 y0 = w0.y * pndfRow4(bj0, r), y1 = w1.y * pndfRow4(bj1, r);
+        sum += dot(x0, y0 * k00 * pndfRow4(row00, r) + y1 * k01 * pndfRow4(row01, r)) +
+               dot(x1, y0 * k10 * pndfRow4(row10, r) + y1 * k11 * pndfRow4(row11, r));
+      }
+      continue;
+    }
     for (int r = 0; r < h.rank; ++r) {
       const uint u = uint(r);
       const float x0 = w0.x * pndfValues[ai0 + u], x1 = w1.x * pndfValues[ai1 + u];

@@ -13,6 +13,7 @@ namespace glintlab {
 
 ResourceType prefiltered_ndf_resource();
 ResourceType environment_map_resource();
+ResourceType position_normal_elements_resource();
 
 std::string table_resource_id(const std::string& table_id) { return "table:" + table_id; }
 
@@ -46,6 +47,7 @@ const std::vector<ResourceType>& all_resource_types() {
     for (const Table& t : all_tables()) list.push_back(table_resource(t));
     list.push_back(prefiltered_ndf_resource());
     list.push_back(environment_map_resource());
+    list.push_back(position_normal_elements_resource());
     return list;
   }();
   return types;

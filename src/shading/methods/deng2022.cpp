@@ -41,7 +41,9 @@ MethodDescriptor deng2022_method() {
                   "the footprint's area, blurred along the minor axis and cut along the major one)",
                   {}, false, {}, false, true}},
       .tables = {"ltc-ggx"},  // other materials' lights with extent, as conventional
-      .resources = {"prefiltered-ndf"},  // the normal-map-glints materials' pyramids of its precompute settings
+      // The normal-map-glints materials' pyramids of its precompute settings, and their elements
+      // for the fallback (none with small_footprints = clamp).
+      .resources = {"prefiltered-ndf", "position-normal-elements"},
       .material_kinds = {"normal-map-glints"},
   };
   // The precompute's settings, declared with PrefilterSettings (src/prefilter/prefilter_params.hpp).

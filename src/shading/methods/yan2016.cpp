@@ -35,6 +35,7 @@ MethodDescriptor yan2016_method() {
                   {"1", "2"},
                   /*compile_time=*/true}},
       .tables = {"ltc-ggx"},  // other materials' lights with extent, as conventional
+      .resources = {"position-normal-elements"},  // the normal-map-glints materials' elements, k per texel
       .material_kinds = {"normal-map-glints"},
   };
 }

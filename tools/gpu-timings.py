@@ -32,12 +32,13 @@ LIGHT_KINDS = ("quad", "disk", "sphere")
 # The scene whose bench also takes the unshaded floor apart (--floor-breakdown).
 FLOOR_SCENE = "builtin:spheres"
 
-# Issue 28's targets: (scene label, method, baseline, largest ratio); on a GPU, and on llvmpipe at
-# 640x360 (--quick).
+# Issues 28's and 30's targets: (scene label, method, baseline, largest ratio); on a GPU, and on
+# llvmpipe at 640x360 (--quick). Issue 30's sweeps (largest over smallest <= 1.5x) are the
+# constant-cost section's ratios.
 TARGETS = [("builtin:spheres", "podee", "conventional", 2.5)] + [
     (label, "kneiphof2024", "deliot2023", 1.5)
     for label in ["builtin:glint-area-lights"] + [f"glint-area-lights, {k} light only" for k in LIGHT_KINDS]
-]
+] + [("builtin:normal-glints-noise", "deng2022", "conventional", 4.0)]
 QUICK_TARGETS = [("builtin:glint-area-lights", "kneiphof2024", "conventional", 2.0),
                  ("builtin:glint-area-lights", "conventional", "conventional{area_lights=representative-point}", 2.0)]
 
@@ -137,7 +138,7 @@ carry over to other GPUs. Commands:
 {chr(10).join(commands)}
 ```
 
-## Cost targets (issue 28)
+## Cost targets (issues 28 and 30)
 
 {chr(10).join(checks)}
 

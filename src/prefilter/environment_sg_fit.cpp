@@ -1,0 +1,155 @@
+#include "prefilter/environment_sg_fit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <Eigen/Dense>
+#include <glm/geometric.hpp>
+
+#include "core/error.hpp"
+#include "core/image.hpp"
+
+namespace glintlab {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double luminance_of(const glm::dvec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
+// min ||B a - y||_W over a >= 0, from the normal equations M = B^T W B and r = B^T W y, by cyclic
+// coordinate descent (each step the exact minimiser along one coordinate, clamped at 0): converges
+// for positive semidefinite M; stops when no amplitude moves by more than 1e-9 of the largest.
+Eigen::VectorXd nonnegative_least_squares(const Eigen::MatrixXd& m, const Eigen::VectorXd& r) {
+  const Eigen::Index n = r.size();
+  Eigen::VectorXd a = Eigen::VectorXd::Zero(n);
+  Eigen::VectorXd gradient = -r;  // M a - r
+  for (int sweep = 0; sweep < 5000; ++sweep) {
+    double largest_step = 0.0;
+    for (Eigen::Index k = 0; k < n; ++k) {
+      if (!(m(k, k) > 0.0)) continue;
+      const double next = std::max(0.0, a(k) - gradient(k) / m(k, k));
+      const double step = next - a(k);
+      if (step == 0.0) continue;
+      a(k) = next;
+      gradient += step * m.col(k);
+      largest_step = std::max(largest_step, std::abs(step));
+    }
+    if (largest_step <= 1e-9 * std::max(a.cwiseAbs().maxCoeff(), 1e-300)) break;
+  }
+  return a;
+}
+
+struct Grid {
+  std::vector<glm::dvec3> directions, radiance;
+  std::vector<double> weights;  // solid angles
+};
+
+Grid grid_of(const EnvironmentMap& map, int height) {
+  const Image image = height == map.radiance.height() ? map.radiance : downsample_environment(map.radiance, height);
+  Grid g;
+  const int w = image.width(), h = image.height();
+  for (int y = 0; y < h; ++y) {
+    const double solid_angle = environment_row_solid_angle(y, h);
+    for (int x = 0; x < w; ++x) {
+      g.directions.push_back(environment_direction_precise((x + 0.5) / w, (y + 0.5) / h));
+      g.radiance.push_back(glm::dvec3(image.at(x, y)));
+      g.weights.push_back(solid_angle);
+    }
+  }
+  return g;
+}
+
+}  // namespace
+
+glm::dvec3 SphericalGaussian::value(const glm::dvec3& d) const {
+  return amplitude * std::exp(sharpness * (glm::dot(axis, d) - 1.0));
+}
+
+glm::dvec3 SphericalGaussian::integral() const {
+  return amplitude * (2.0 * kPi * -std::expm1(-2.0 * sharpness) / sharpness);
+}
+
+double SphericalGaussian::support_angle(double epsilon) const {
+  const double a = luminance_of(amplitude);
+  if (!(a > epsilon)) return 0.0;
+  const double c = 1.0 + std::log(epsilon / a) / sharpness;
+  return c <= -1.0 ? kPi : std::acos(c);
+}
+
+glm::dvec3 SphericalGaussianFit::radiance(const glm::dvec3& d) const {
+  glm::dvec3 sum(0.0);
+  for (const SphericalGaussian& g : lobes) sum += g.value(d);
+  return sum;
+}
+
+std::vector<double> SphericalGaussianFit::lobe_probabilities() const {
+  std::vector<double> p;
+  double total = 0.0;
+  for (const SphericalGaussian& g : lobes) {
+    p.push_back(luminance_of(g.integral()));
+    total += p.back();
+  }
+  for (double& v : p) v = total > 0.0 ? v / total : 1.0 / static_cast<double>(p.size());
+  return p;
+}
+
+std::vector<glm::dvec3> fibonacci_directions(int count) {
+  std::vector<glm::dvec3> out;
+  const double golden = kPi * (3.0 - std::sqrt(5.0));  // the golden angle
+  for (int i = 0; i < count; ++i) {
+    const double z = 1.0 - (2.0 * i + 1.0) / count;
+    const double r = std::sqrt(std::max(0.0, 1.0 - z * z)), phi = golden * i;
+    out.emplace_back(r * std::cos(phi), z, r * std::sin(phi));  // +y is the map's zenith
+  }
+  return out;
+}
+
+SphericalGaussianFit fit_spherical_gaussians(const EnvironmentMap& map, int lobes, int grid_height) {
+  if (lobes < 1 || lobes > 1024)
+    throw InputError("spherical Gaussian lobes is " + std::to_string(lobes) + "; allowed: 1 .. 1024");
+  if (grid_height < 2 || grid_height > map.radiance.height())
+    throw InputError("the spherical Gaussian fit's grid height is " + std::to_string(grid_height) +
+                     "; allowed: 2 .. the map's " + std::to_string(map.radiance.height()) + " rows");
+  const Grid g = grid_of(map, grid_height);
+  const std::vector<glm::dvec3> axes = fibonacci_directions(lobes);
+  const Eigen::Index n = static_cast<Eigen::Index>(g.directions.size()), k = lobes;
+  Eigen::MatrixXd cosines(n, k);
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = 0; j < k; ++j) cosines(i, j) = glm::dot(g.directions[i], axes[j]);
+  Eigen::MatrixXd target(n, 3);
+  Eigen::VectorXd sqrt_w(n);
+  double norm2 = 0.0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    sqrt_w(i) = std::sqrt(g.weights[i]);
+    for (int c = 0; c < 3; ++c) target(i, c) = sqrt_w(i) * g.radiance[i][c];
+    norm2 += target.row(i).squaredNorm();
+  }
+
+  // Sharpness: angular deviation 1 / sqrt(lambda) about half the lattice's spacing sqrt(4 pi / K)
+  // (lambda_0 = K / pi), then a geometric grid of sqrt(2) steps about it.
+  SphericalGaussianFit best;
+  best.relative_error = HUGE_VAL;
+  best.grid_height = grid_height;
+  const double lambda0 = static_cast<double>(lobes) / kPi;
+  for (int step = -6; step <= 6; ++step) {
+    const double lambda = lambda0 * std::pow(2.0, 0.5 * step);
+    const Eigen::MatrixXd basis = sqrt_w.asDiagonal() * ((cosines.array() - 1.0) * lambda).exp().matrix();
+    const Eigen::MatrixXd normal = basis.transpose() * basis;
+    const Eigen::MatrixXd rhs = basis.transpose() * target;
+    Eigen::MatrixXd amplitudes(k, 3);
+    for (int c = 0; c < 3; ++c) amplitudes.col(c) = nonnegative_least_squares(normal, rhs.col(c));
+    const double residual2 = (basis * amplitudes - target).squaredNorm();
+    const double error = norm2 > 0.0 ? std::sqrt(residual2 / norm2) : 0.0;
+    if (error < best.relative_error) {
+      best.relative_error = error;
+      best.lobes.clear();
+      for (Eigen::Index j = 0; j < k; ++j)
+        best.lobes.push_back({axes[j], lambda, glm::dvec3(amplitudes(j, 0), amplitudes(j, 1), amplitudes(j, 2))});
+    }
+  }
+  return best;
+}
+
+}  // namespace glintlab

@@ -1,0 +1,53 @@
+#pragma once
+// An environment light as a sum of spherical Gaussians (SGs), the basis Deng et al. 2022 prefilter
+// glints under environment light with (sec. 5.4, after Tsai and Shih 2006): each lobe is one
+// angular range query of the pixel's NDF instead of many samples of the map. The fit:
+//   L(d) ~ sum_k a_k exp(lambda (xi_k . d - 1)),
+// K axes xi_k on a spherical Fibonacci lattice, one sharpness lambda for all (chosen from a
+// geometric grid about the lattice's spacing: the least error wins), and RGB amplitudes a_k >= 0
+// by nonnegative least squares weighted by each texel's solid angle (coordinate descent on the
+// normal equations). The fit's own error is reported: the relative L2 over the sphere.
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "scene/lights/environment_map.hpp"
+
+namespace glintlab {
+
+struct SphericalGaussian {
+  glm::dvec3 axis{0.0, 0.0, 1.0};  ///< unit, in the map's space (environment_map.hpp's convention)
+  double sharpness = 1.0;          ///< lambda
+  glm::dvec3 amplitude{0.0};       ///< a, RGB radiance at the axis
+
+  /// a exp(lambda (axis . d - 1)) for a unit direction d.
+  [[nodiscard]] glm::dvec3 value(const glm::dvec3& d) const;
+  /// The integral over the sphere: 2 pi a (1 - exp(-2 lambda)) / lambda.
+  [[nodiscard]] glm::dvec3 integral() const;
+  /// Deng et al.'s eq. 8 (Wang et al. 2009's compact-epsilon support): the angle from the axis
+  /// within which the lobe's luminance exceeds epsilon, acos(1 + ln(epsilon / a) / lambda); 0 where
+  /// a <= epsilon, pi where the whole sphere exceeds it.
+  [[nodiscard]] double support_angle(double epsilon) const;
+};
+
+struct SphericalGaussianFit {
+  std::vector<SphericalGaussian> lobes;
+  double relative_error = 0.0;  ///< ||fit - map|| / ||map||, solid-angle weighted L2 over RGB, on the fit's grid
+  int grid_height = 0;          ///< the rows of the map the fit was made on
+
+  /// The fit's radiance in direction d (unit, map space).
+  [[nodiscard]] glm::dvec3 radiance(const glm::dvec3& d) const;
+  /// Each lobe's probability of being chosen, its luminance integral over the total: how a renderer
+  /// importance-samples the SG environment (sec. 5.4: "we first importance sample ... to find one SG").
+  [[nodiscard]] std::vector<double> lobe_probabilities() const;
+};
+
+/// `count` unit directions on the spherical Fibonacci lattice (even over the sphere).
+std::vector<glm::dvec3> fibonacci_directions(int count);
+
+/// The fit of `map` with `lobes` SGs (1 .. 1024) on the map resampled to `grid_height` rows (at
+/// most its own; downsample_environment keeps its power). Throws InputError for a count or height
+/// outside those bounds, naming the value and what is allowed.
+SphericalGaussianFit fit_spherical_gaussians(const EnvironmentMap& map, int lobes, int grid_height = 64);
+
+}  // namespace glintlab

@@ -11,6 +11,7 @@
 // `conventional` (lights with extent by LTC).
 // Descriptor: src/shading/methods/deng2022.cpp; docs/methods.md#deng2022.
 #define METHOD_LOBES_KEEP_ISOTROPY  // its lobes are the material's own (lobe/lobe_shading.glsl)
+#define METHOD_SHADES_ENVIRONMENT   // normal-map-glints by the environment's lobes; others as conventional
 #include "lobe/lobe.glsl"
 #include "lobe/lobe_shading.glsl"
 
@@ -56,6 +57,7 @@ float normalGlintsBoxMean(vec2 lo, vec2 hi) {
   return sum;
 }
 #include "glints/normal-map/shading.glsl"
+#include "glints/normal-map/environment_lobes.glsl"
 #endif
 
 void prepareSurface(inout Surface s) {
@@ -77,7 +79,8 @@ void prepareSurface(inout Surface s) {
   float side = float(FALLBACK_K) * (6.0 * sigma0 + 3.0), budget = side * side;
   // A box's side is at most 2 k r + 1 elements: every element of a footprint under sigma_0 a side.
   gElements = positionNormalFootprint(centre, sigmaP, size, FALLBACK_K, normalMapGlintsIntrinsicRoughness(m),
-                                      positionNormalElementBudget((side + 1.0) * (side + 1.0)));
+                                      positionNormalElementBudget((side + 1.0) * (side + 1.0),
+                                                                  max(environmentLobeCount - 1, 0)));
   gBelowPyramid = param_small_footprints != SMALL_FOOTPRINTS_CLAMP &&
                   (largest < sigma0 * sigma0 || (smallest < sigma0 * sigma0 && gElements.boxElements <= budget));
   gElements.firstElement = positionNormalFirstElement[uMaterial];  // none stored with small_footprints = clamp
@@ -87,6 +90,9 @@ void prepareSurface(inout Surface s) {
 
 Radiance shadeLight(Surface s, LightData L) {
 #if MATERIAL_KIND == MATERIAL_KIND_NORMAL_MAP_GLINTS
+  if (!lightIsCompact(L))  // an environment: by its lobes (sec. 5.4), or the smooth limit without them
+    return environmentLobeCount > 0 ? shadeNormalGlintsEnvironment(s, L, gMaskingAlpha, gDiffuseNormal)
+                                    : shadeLobeEnvironment(s, L, materialSmoothLobe(s));
   return shadeNormalGlints(s, L, gMaskingAlpha, gDiffuseNormal);
 #else
   return shadeLobe(s, L, materialSmoothLobe(s), AREA_LIGHTS_LTC);  // conventional's default

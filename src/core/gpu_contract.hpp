@@ -27,6 +27,10 @@ inline constexpr int kPrefilteredNdfValuesBinding = 1;
 /// fallback; src/prefilter/position_normal_elements.hpp, shaders/glints/normal-map/position_normal.glsl).
 inline constexpr int kPositionNormalElementNormalsBinding = 2;
 inline constexpr int kPositionNormalElementJacobiansBinding = 3;
+/// Storage-buffer binding point of the environment's spherical Gaussian lobes in the forward pass
+/// (deng2022; shaders/glints/normal-map/environment_lobes.glsl). GL guarantees 8 binding points:
+/// the path tracer's compute pass binds its own buffers at 4 .. 7 before each dispatch.
+inline constexpr int kEnvironmentLobesBinding = 4;
 /// Storage-buffer binding points of the path tracer's shading pass (passes/path_direct.comp,
 /// src/render/path_reference.cpp): its hits in; their shadow rays, emission and bounces out.
 inline constexpr int kPathHitsBinding = 4;

@@ -95,6 +95,15 @@ std::vector<double> SphericalGaussianFit::lobe_probabilities() const {
   return p;
 }
 
+EnvironmentMap SphericalGaussianFit::to_map(int height) const {
+  EnvironmentMap map{Image(2 * height, height), "spherical Gaussians"};
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < 2 * height; ++x)
+      map.radiance.at(x, y) =
+          glm::vec3(glm::max(radiance(environment_direction_precise((x + 0.5) / (2 * height), (y + 0.5) / height)), 0.0));
+  return map;
+}
+
 std::vector<glm::dvec3> fibonacci_directions(int count) {
   std::vector<glm::dvec3> out;
   const double golden = kPi * (3.0 - std::sqrt(5.0));  // the golden angle
@@ -121,25 +130,34 @@ SphericalGaussianFit fit_spherical_gaussians(const EnvironmentMap& map, int lobe
   Eigen::MatrixXd target(n, 3);
   Eigen::VectorXd sqrt_w(n);
   double norm2 = 0.0;
+  glm::dvec3 map_power(0.0);
   for (Eigen::Index i = 0; i < n; ++i) {
+    map_power += g.radiance[i] * g.weights[i];
     sqrt_w(i) = std::sqrt(g.weights[i]);
     for (int c = 0; c < 3; ++c) target(i, c) = sqrt_w(i) * g.radiance[i][c];
     norm2 += target.row(i).squaredNorm();
   }
 
-  // Sharpness: angular deviation 1 / sqrt(lambda) about half the lattice's spacing sqrt(4 pi / K)
-  // (lambda_0 = K / pi), then a geometric grid of sqrt(2) steps about it.
+  // Sharpness: angular deviation 1 / sqrt(lambda) at most half the lattice's spacing sqrt(4 pi / K)
+  // (lambda_0 = K / pi), then a geometric grid of sqrt(2) steps above it: no lobe wider than its
+  // share of the sphere, which its shading as one cone (sec. 5.4's range query) needs.
   SphericalGaussianFit best;
   best.relative_error = HUGE_VAL;
   best.grid_height = grid_height;
   const double lambda0 = static_cast<double>(lobes) / kPi;
-  for (int step = -6; step <= 6; ++step) {
+  for (int step = 0; step <= 8; ++step) {
     const double lambda = lambda0 * std::pow(2.0, 0.5 * step);
     const Eigen::MatrixXd basis = sqrt_w.asDiagonal() * ((cosines.array() - 1.0) * lambda).exp().matrix();
     const Eigen::MatrixXd normal = basis.transpose() * basis;
     const Eigen::MatrixXd rhs = basis.transpose() * target;
     Eigen::MatrixXd amplitudes(k, 3);
-    for (int c = 0; c < 3; ++c) amplitudes.col(c) = nonnegative_least_squares(normal, rhs.col(c));
+    for (int c = 0; c < 3; ++c) {
+      amplitudes.col(c) = nonnegative_least_squares(normal, rhs.col(c));
+      // Scaled so that the fit's power is the map's: the L2 fit is ruled by the brightest texels
+      // (the studio's sun, one texel of 64 rows, put 23% too much power into the lobes about it).
+      const double fit_power = amplitudes.col(c).sum() * (2.0 * kPi * -std::expm1(-2.0 * lambda) / lambda);
+      if (fit_power > 0.0) amplitudes.col(c) *= map_power[c] / fit_power;
+    }
     const double residual2 = (basis * amplitudes - target).squaredNorm();
     const double error = norm2 > 0.0 ? std::sqrt(residual2 / norm2) : 0.0;
     if (error < best.relative_error) {

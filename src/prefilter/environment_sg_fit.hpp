@@ -6,7 +6,8 @@
 // K axes xi_k on a spherical Fibonacci lattice, one sharpness lambda for all (chosen from a
 // geometric grid about the lattice's spacing: the least error wins), and RGB amplitudes a_k >= 0
 // by nonnegative least squares weighted by each texel's solid angle (coordinate descent on the
-// normal equations). The fit's own error is reported: the relative L2 over the sphere.
+// normal equations), then scaled per channel so that the fit's power is the map's. The fit's own
+// error is reported: the relative L2 over the sphere.
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -40,6 +41,9 @@ struct SphericalGaussianFit {
   /// Each lobe's probability of being chosen, its luminance integral over the total: how a renderer
   /// importance-samples the SG environment (sec. 5.4: "we first importance sample ... to find one SG").
   [[nodiscard]] std::vector<double> lobe_probabilities() const;
+  /// The fit as an environment map of `height` rows, each texel its value at its centre: a light
+  /// whose radiance is the lobes' own (the truth that isolates the lobes' shading from the fit).
+  [[nodiscard]] EnvironmentMap to_map(int height) const;
 };
 
 /// `count` unit directions on the spherical Fibonacci lattice (even over the sphere).

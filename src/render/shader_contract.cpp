@@ -290,6 +290,7 @@ ShaderDefines contract_defines() {
       {"PREFILTERED_NDF_VALUES_BINDING", std::to_string(kPrefilteredNdfValuesBinding)},
       {"POSITION_NORMAL_ELEMENT_NORMALS_BINDING", std::to_string(kPositionNormalElementNormalsBinding)},
       {"POSITION_NORMAL_ELEMENT_JACOBIANS_BINDING", std::to_string(kPositionNormalElementJacobiansBinding)},
+      {"ENVIRONMENT_LOBES_BINDING", std::to_string(kEnvironmentLobesBinding)},
       {"PATH_HITS_BINDING", std::to_string(kPathHitsBinding)},
       {"PATH_SHADOW_RAYS_BINDING", std::to_string(kPathShadowRaysBinding)},
       {"PATH_EMISSION_BINDING", std::to_string(kPathEmissionBinding)},

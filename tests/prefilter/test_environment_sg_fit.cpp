@@ -1,7 +1,7 @@
 // The spherical Gaussian fit of an environment (src/prefilter/environment_sg_fit.hpp; Deng et al.
 // 2022 sec. 5.4): the SG's closed forms against quadrature, eq. 8's support angle, the fit
 // recovering a map made of known lobes, a uniform map, the error falling as lobes are added on the
-// studio environment, and bad counts refused.
+// studio environment with its power kept, and bad counts refused.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -89,7 +89,7 @@ TEST(SphericalGaussianFit, AUniformMapKeepsItsPower) {
   glm::dvec3 power(0.0);
   for (const auto& g : fit.lobes) power += g.integral();
   std::printf("uniform map, 64 lobes: relative error %.3f, power %.4f of 4 pi\n", fit.relative_error, power.x / (4 * kPi));
-  EXPECT_LT(fit.relative_error, 0.02);
+  EXPECT_LT(fit.relative_error, 0.05);  // lobes no wider than their share of the sphere ripple
   EXPECT_NEAR(power.x / (4 * kPi), 1.0, 0.02);
   EXPECT_NEAR(power.y / power.x, 0.5, 1e-3);
 }
@@ -101,8 +101,15 @@ TEST(SphericalGaussianFit, TheErrorFallsAsLobesAreAdded) {
   double previous = HUGE_VAL;
   for (int k : {8, 32, 128}) {
     const SphericalGaussianFit fit = fit_spherical_gaussians(studio, k, 32);
-    std::printf("studio, %d lobes: relative error %.3f, lambda %.1f\n", k, fit.relative_error, fit.lobes[0].sharpness);
+    glm::dvec3 power(0.0), map_power(0.0);
+    for (const auto& g : fit.lobes) power += g.integral();
+    for (int y = 0; y < studio.radiance.height(); ++y)
+      for (int x = 0; x < studio.radiance.width(); ++x)
+        map_power += glm::dvec3(studio.radiance.at(x, y)) * environment_row_solid_angle(y, studio.radiance.height());
+    std::printf("studio, %d lobes: relative error %.3f, lambda %.1f, power %.3f of the map's\n", k, fit.relative_error,
+                fit.lobes[0].sharpness, power.y / map_power.y);
     EXPECT_LT(fit.relative_error, previous) << k << " lobes";
+    EXPECT_NEAR(power.y / map_power.y, 1.0, 1e-4) << k << " lobes: the fit keeps the map's power";
     EXPECT_LT(fit.relative_error, 1.0);
     previous = fit.relative_error;
   }

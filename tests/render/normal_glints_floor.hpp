@@ -9,7 +9,8 @@ namespace glintlab::test {
 /// The methods' default footprint_sigma, and the reference's Gaussian pixel filter.
 inline constexpr float kNormalGlintsFootprint = 0.5f;
 
-inline TestScene normal_glints_floor(double tiling, bool area_lights, int width = 48, int height = 32) {
+/// The floor alone, without lights.
+inline TestScene normal_glints_floor_unlit(double tiling, int width = 48, int height = 32) {
   TestScene s;
   s.film(width, height)
       .camera({0, 0.6, 1.6}, {0, 0, -0.8}, 40)
@@ -20,6 +21,11 @@ inline TestScene normal_glints_floor(double tiling, bool area_lights, int width 
                                                   {"waves", 48}, {"max_frequency", 8}, {"seed", 3}}},
                           {"normal_map_tiling", tiling}})
       .plane("steel", {{"size", 4}});
+  return s;
+}
+
+inline TestScene normal_glints_floor(double tiling, bool area_lights, int width = 48, int height = 32) {
+  TestScene s = normal_glints_floor_unlit(tiling, width, height);
   if (area_lights)
     s.sphere_light({0.4, 0.9, -1.6}, 0.08, {300, 300, 300}, {{"visible", false}})
         .disk_light({-0.6, 0.7, -1.2}, {0.3, -1, 0.4}, 0.1, {200, 250, 300}, {{"visible", false}});

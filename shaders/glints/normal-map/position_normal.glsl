@@ -223,12 +223,14 @@ float gaussianBoxMean(vec2 mean, mat2 cov, vec2 lo, vec2 hi) {
 // by the lights). Applied on every driver, so that images agree. Needs the forward pass's
 // LIGHT_RANGES (a method module's context; absent in the tests' compute harness).
 #ifdef LIGHT_RANGES
-float positionNormalElementBudget(float budget) {
+// `extraQueries`: sums beyond one per light (an environment's lobes past the first).
+float positionNormalElementBudget(float budget, int extraQueries) {
   const ivec2 ranges[LIGHT_KIND_COUNT] = LIGHT_RANGES;
   int lights = 0;
   for (int i = 0; i < LIGHT_KIND_COUNT; ++i) lights += ranges[i].y - ranges[i].x;
-  return floor(min(budget, 60000.0) / float(max(lights, 1)));
+  return floor(min(budget, 60000.0) / float(max(lights + extraQueries, 1)));
 }
+float positionNormalElementBudget(float budget) { return positionNormalElementBudget(budget, 0); }
 #endif
 
 // sum_e w_e X_e / sum_e w_e over the footprint's elements, where X_e is the element's density

@@ -14,6 +14,7 @@ namespace glintlab {
 ResourceType prefiltered_ndf_resource();
 ResourceType environment_map_resource();
 ResourceType position_normal_elements_resource();
+ResourceType environment_lobes_resource();
 
 std::string table_resource_id(const std::string& table_id) { return "table:" + table_id; }
 
@@ -48,6 +49,7 @@ const std::vector<ResourceType>& all_resource_types() {
     list.push_back(prefiltered_ndf_resource());
     list.push_back(environment_map_resource());
     list.push_back(position_normal_elements_resource());
+    list.push_back(environment_lobes_resource());
     return list;
   }();
   return types;

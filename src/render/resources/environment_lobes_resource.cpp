@@ -1,0 +1,95 @@
+// Resource `environment-lobes` (deng2022 under an environment; docs/methods.md#deng2022): the
+// scene's environment map fitted by the requesting method's `environment_lobes` spherical
+// Gaussians (src/prefilter/environment_sg_fit.hpp; Deng et al. 2022 sec. 5.4), in the storage
+// buffer shaders/glints/normal-map/environment_lobes.glsl reads: the count, then per lobe
+// (axis in map space, sharpness) and (RGB amplitude, 0). No environment or no lobes: a count of 0.
+#include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "core/gpu_contract.hpp"
+#include "core/hash.hpp"
+#include "gl/context.hpp"
+#include "gl/objects.hpp"
+#include "prefilter/environment_sg_fit.hpp"
+#include "render/resources/resource.hpp"
+
+namespace glintlab {
+
+namespace {
+
+/// The rows of the map the lobes are fitted on (or all of a smaller map's).
+constexpr int kFitRows = 64;
+
+const EnvironmentMap* environment_of(const Scene& scene) {
+  for (const Light& l : scene.lights)
+    if (l.environment) return l.environment.get();
+  return nullptr;
+}
+
+int requested_lobes(const ResourceContext& c) {
+  const auto it = c.params.find("environment_lobes");
+  return it == c.params.end() || !environment_of(c.scene) ? 0 : static_cast<int>(it->second);
+}
+
+class EnvironmentLobesResource : public GpuResource {
+ public:
+  explicit EnvironmentLobesResource(const std::vector<float>& packed) {
+    buffer_ = gl::make_buffer(static_cast<GLsizeiptr>(packed.size() * sizeof(float)), packed.data());
+    bytes_ = packed.size() * sizeof(float);
+    check_gl("uploading the environment's lobes");
+  }
+  void bind() const override { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEnvironmentLobesBinding, buffer_.id()); }
+  [[nodiscard]] std::uint64_t gpu_bytes() const override { return bytes_; }
+
+ private:
+  gl::Buffer buffer_;
+  std::uint64_t bytes_ = 0;
+};
+
+}  // namespace
+
+ResourceType environment_lobes_resource() {
+  return {
+      .id = "environment-lobes",
+      .title = "the environment fitted by spherical Gaussian lobes (Deng et al. 2022 sec. 5.4)",
+      .binding = "storage buffer ENVIRONMENT_LOBES_BINDING",
+      .key =
+          [](const ResourceContext& c) {
+            const EnvironmentMap* map = environment_of(c.scene);
+            Hasher h;
+            h.value(requested_lobes(c));
+            if (map && requested_lobes(c) > 0) {
+              h.value(map->radiance.width());
+              h.span(std::span<const glm::vec3>(map->radiance.pixels()));
+            }
+            char hex[17];
+            std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h.digest()));
+            return "lobes=" + std::to_string(requested_lobes(c)) + " map=" + hex;
+          },
+      .estimate_bytes =
+          [](const ResourceContext& c) { return static_cast<std::uint64_t>(4 + 8 * requested_lobes(c)) * sizeof(float); },
+      .make =
+          [](const ResourceContext& c) -> std::unique_ptr<GpuResource> {
+            std::vector<float> packed(4, 0.0f);  // the count (as float bits of an int), then padding to a vec4
+            const int lobes = requested_lobes(c);
+            if (lobes > 0) {
+              const EnvironmentMap& map = *environment_of(c.scene);
+              const SphericalGaussianFit fit =
+                  fit_spherical_gaussians(map, lobes, std::min(kFitRows, map.radiance.height()));
+              packed[0] = std::bit_cast<float>(static_cast<std::int32_t>(fit.lobes.size()));
+              for (const SphericalGaussian& g : fit.lobes)
+                packed.insert(packed.end(), {static_cast<float>(g.axis.x), static_cast<float>(g.axis.y),
+                                             static_cast<float>(g.axis.z), static_cast<float>(g.sharpness),
+                                             static_cast<float>(g.amplitude.r), static_cast<float>(g.amplitude.g),
+                                             static_cast<float>(g.amplitude.b), 0.0f});
+            }
+            return std::make_unique<EnvironmentLobesResource>(packed);
+          },
+  };
+}
+
+}  // namespace glintlab

@@ -10,6 +10,7 @@
 #include "core/pixel_filter_width.hpp"
 #include "eval/commands.hpp"
 #include "eval/outputs.hpp"
+#include "eval/environment_fit_report.hpp"
 #include "eval/prefilter_report.hpp"
 #include "prefilter/prefilter_params.hpp"
 #include "eval/program_command.hpp"
@@ -292,6 +293,25 @@ int run_cli(int argc, char** argv) {
   prefilter->add_flag("--no-cache", prefilter_no_cache, "precompute even if the cache holds the pyramid");
   prefilter->add_option("-o,--out", prefilter_json, "also write the report as JSON to this file");
 
+  auto* environment_fit = app.add_subcommand(
+      "environment-fit", "fit a scene's environment by spherical Gaussian lobes as deng2022 shades it (Deng et al. "
+                         "2022 sec. 5.4) and report the fit's error per lobe count");
+  std::string environment_fit_scene;
+  EnvironmentFitOptions environment_fit_o;
+  std::string environment_fit_out;
+  environment_fit->add_option("--scene", environment_fit_scene, "scene file (.toml) or builtin:NAME")->required();
+  environment_fit->add_option("--lobes", environment_fit_o.lobes, "lobe counts to fit (1 .. 1024)")
+      ->delimiter(',')
+      ->check(CLI::Range(1, 1024))
+      ->default_str("8,16,32,48");
+  environment_fit->add_option("--rows", environment_fit_o.grid_height,
+                              "rows of the map the fit is made on (deng2022's: 64; at most the map's)")
+      ->check(CLI::Range(2, 1024))
+      ->default_str("64");
+  environment_fit->add_option("-o,--out", environment_fit_out,
+                              "also write the fit with the last lobe count as a lat-long EXR (a scene's environment "
+                              "file: the truth of the lobes' shading without the fit's error)");
+
   ProgramOptions program_o;
   auto* program = app.add_subcommand(
       "program", "print a forward program's GLSL as the driver gets it (includes expanded, the variant's defines)");
@@ -366,6 +386,10 @@ int run_cli(int argc, char** argv) {
       prefilter_o.use_cache = !prefilter_no_cache;
       prefilter_o.json = prefilter_json;
       run_prefilter_report(load_scene(prefilter_scene), prefilter_o);
+    } else if (app.got_subcommand("environment-fit")) {
+      if (!environment_fit_out.empty()) check_output_file(environment_fit_out, "-o");
+      environment_fit_o.out_exr = environment_fit_out;
+      run_environment_fit_report(load_scene(environment_fit_scene), environment_fit_o);
     } else if (app.got_subcommand("view")) {
       return run_view(view_o, view_options);
     } else if (app.got_subcommand("program")) {

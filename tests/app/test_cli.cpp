@@ -12,6 +12,7 @@
 
 #include "core/hash.hpp"
 #include "core/image_io.hpp"
+#include "scene/lights/environment_map.hpp"
 #include "app/cli_fixture.hpp"
 #include "test_scenes.hpp"
 
@@ -329,6 +330,32 @@ TEST_F(Cli, BadEnvironmentMapsExitWith2AndWriteNothing) {
                            .string() +
                        "'",
                    {"two-environments.toml", "at most one"});
+}
+
+TEST_F(Cli, EnvironmentFitWritesTheLobesAsAMapWithTheMapsPower) {
+  // `glintlab environment-fit`: a scene without an environment is bad input naming the scene; with
+  // one, -o writes the last count's fit as a map of the environment's size and power (the fit keeps it).
+  const fs::path bare = write("bare.toml", TestScene().film(16, 16).material("m").sphere("m").point_light({0, 2, 0}).toml());
+  expect_bad_input("environment-fit --scene '" + bare.string() + "'", {"bare.toml", "no environment"});
+  glintlab::Image map(64, 32);
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 64; ++x) map.at(x, y) = glm::vec3(1.0f + 0.05f * x, 0.5f, y < 8 ? 4.0f : 0.25f);
+  glintlab::write_exr(scratch / "sky.exr", {{"", &map}});
+  const fs::path scene = write("sky.toml", TestScene().film(16, 16).material("m").sphere("m")
+                                               .light("environment", {{"file", "sky.exr"}}).toml());
+  const fs::path out = scratch / "lobes.exr";
+  const CliResult r = run_glintlab("environment-fit --scene '" + scene.string() + "' --lobes 4,24 -o '" + out.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const glintlab::Image fitted = glintlab::read_exr(out);
+  ASSERT_EQ(fitted.width(), 64);
+  ASSERT_EQ(fitted.height(), 32);
+  glm::dvec3 power(0.0), fitted_power(0.0);
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 64; ++x) {
+      power += glm::dvec3(map.at(x, y)) * glintlab::environment_row_solid_angle(y, 32);
+      fitted_power += glm::dvec3(fitted.at(x, y)) * glintlab::environment_row_solid_angle(y, 32);
+    }
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(fitted_power[c] / power[c], 1.0, 0.01) << "channel " << c;  // texel centres, not integrals
 }
 
 TEST_F(Cli, BenchWithoutWarmUpTimesItsFirstFrameRight) {

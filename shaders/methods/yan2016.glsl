@@ -6,6 +6,7 @@
 // materials are shaded as by `conventional` (lights with extent by LTC).
 // Descriptor: src/shading/methods/yan2016.cpp; docs/methods.md#yan2016.
 #define METHOD_LOBES_KEEP_ISOTROPY  // its lobes are the material's own (lobe/lobe_shading.glsl)
+#define METHOD_SHADES_ENVIRONMENT   // normal-map-glints by the environment's lobes; others as conventional
 #include "lobe/lobe.glsl"
 #include "lobe/lobe_shading.glsl"
 
@@ -24,6 +25,7 @@ float normalGlintsBoxMean(vec2 lo, vec2 hi) {
   return positionNormalBoxMean(uNormalMap, gFootprint, ELEMENTS_PER_TEXEL, lo, hi);
 }
 #include "glints/normal-map/shading.glsl"
+#include "glints/normal-map/environment_lobes.glsl"
 
 #endif
 
@@ -35,7 +37,7 @@ void prepareSurface(inout Surface s) {
   MaterialData m = materials[uMaterial];
   gFootprint = positionNormalFootprint(fract(s.uv) * vec2(size), sigmaP, size, ELEMENTS_PER_TEXEL,
                                        normalMapGlintsIntrinsicRoughness(m),
-                                       positionNormalElementBudget(param_max_elements));
+                                       positionNormalElementBudget(param_max_elements, max(environmentLobeCount - 1, 0)));
   gFootprint.firstElement = positionNormalFirstElement[uMaterial];
   gMaskingAlpha = normalMapGlintsMaskingAlpha(m);
 #endif
@@ -43,6 +45,9 @@ void prepareSurface(inout Surface s) {
 
 Radiance shadeLight(Surface s, LightData L) {
 #if MATERIAL_KIND == MATERIAL_KIND_NORMAL_MAP_GLINTS
+  if (!lightIsCompact(L))  // an environment: by its lobes (as deng2022), or the smooth limit without them
+    return environmentLobeCount > 0 ? shadeNormalGlintsEnvironment(s, L, gMaskingAlpha, gDiffuseNormal)
+                                    : shadeLobeEnvironment(s, L, materialSmoothLobe(s));
   return shadeNormalGlints(s, L, gMaskingAlpha, gDiffuseNormal);
 #else
   return shadeLobe(s, L, materialSmoothLobe(s), AREA_LIGHTS_LTC);  // conventional's default

@@ -40,11 +40,7 @@ MethodDescriptor deng2022_method() {
                   "isotropic pyramid queries along an anisotropic footprint's major axis, at most (1: one query of "
                   "the footprint's area, blurred along the minor axis and cut along the major one)",
                   {}, false, {}, false, true},
-                 {"environment_lobes", 32.0f, 0.0f, 48.0f,
-                  "spherical Gaussian lobes the environment is fitted by (the paper's sec. 5.4): each one range "
-                  "query of the footprint's NDF over the lobe's half-vector box (0: the environment as the "
-                  "material's smooth lobe by the split sum, as before; at most 48 within llvmpipe's loop budget)",
-                  {}, false, {}, /*host_only=*/true, /*integer=*/true}},
+                 environment_lobes_param()},
       .tables = {"ltc-ggx"},  // other materials' lights with extent, as conventional
       // The normal-map-glints materials' pyramids of its precompute settings, and their elements
       // for the fallback (none with small_footprints = clamp).

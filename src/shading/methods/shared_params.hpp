@@ -83,6 +83,16 @@ inline ParamDecl footprint_sigma_param() {
               "gaussian matches it)"};
 }
 
+/// yan2016's and deng2022's: the environment fitted by spherical Gaussian lobes, each shaded by one
+/// range query of the footprint's NDF (resource environment-lobes; docs/methods.md#deng2022).
+inline ParamDecl environment_lobes_param() {
+  return {"environment_lobes", 32.0f, 0.0f, 48.0f,
+          "spherical Gaussian lobes the environment is fitted by (Deng et al. 2022 sec. 5.4): on normal-map-glints "
+          "materials each one range query of the footprint's NDF over the lobe's half-vector box (0: the "
+          "environment as the material's smooth lobe by the split sum; at most 48 within llvmpipe's loop budget)",
+          {}, false, {}, /*host_only=*/true, /*integer=*/true};
+}
+
 inline constexpr const char* kChermain2020Citation =
     "X. Chermain, B. Sauvage, J.-M. Dischler, C. Dachsbacher, Procedural Physically based BRDF for Real-Time "
     "Rendering of Glints, Pacific Graphics 2020 (CGF 39(7))";

@@ -33,9 +33,11 @@ MethodDescriptor yan2016_method() {
                   "k: the map as k x k Gaussian elements per texel (Yan et al. use 1 to 4); 2 follows the bilinear "
                   "field more closely at 4x the cost",
                   {"1", "2"},
-                  /*compile_time=*/true}},
+                  /*compile_time=*/true},
+                 environment_lobes_param()},
       .tables = {"ltc-ggx"},  // other materials' lights with extent, as conventional
-      .resources = {"position-normal-elements"},  // the normal-map-glints materials' elements, k per texel
+      // The normal-map-glints materials' elements (k per texel) and the environment's lobes.
+      .resources = {"position-normal-elements", "environment-lobes"},
       .material_kinds = {"normal-map-glints"},
   };
 }

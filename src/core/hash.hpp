@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <cstring>
 #include <span>
+#include <string>
 #include <string_view>
 #include <type_traits>
 
@@ -32,6 +33,13 @@ class Hasher {
     bytes(s.data(), s.size_bytes());
   }
   [[nodiscard]] std::uint64_t digest() const { return state_; }
+  /// The digest as 16 lower-case hex digits (keys and file names).
+  [[nodiscard]] std::string hex() const {
+    static constexpr char kDigits[] = "0123456789abcdef";
+    std::string out(16, '0');
+    for (int i = 0; i < 16; ++i) out[static_cast<std::size_t>(i)] = kDigits[(state_ >> (60 - 4 * i)) & 0xf];
+    return out;
+  }
 
  private:
   std::uint64_t state_ = 0xcbf29ce484222325ull;

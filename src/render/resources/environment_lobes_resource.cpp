@@ -12,10 +12,8 @@
 
 #include "core/gpu_contract.hpp"
 #include "core/hash.hpp"
-#include "gl/context.hpp"
-#include "gl/objects.hpp"
 #include "prefilter/environment_sg_fit.hpp"
-#include "render/resources/resource.hpp"
+#include "render/resources/storage_buffers_resource.hpp"
 
 namespace glintlab {
 
@@ -35,21 +33,6 @@ int requested_lobes(const ResourceContext& c) {
   return it == c.params.end() || !environment_of(c.scene) ? 0 : static_cast<int>(it->second);
 }
 
-class EnvironmentLobesResource : public GpuResource {
- public:
-  explicit EnvironmentLobesResource(const std::vector<float>& packed) {
-    buffer_ = gl::make_buffer(static_cast<GLsizeiptr>(packed.size() * sizeof(float)), packed.data());
-    bytes_ = packed.size() * sizeof(float);
-    check_gl("uploading the environment's lobes");
-  }
-  void bind() const override { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEnvironmentLobesBinding, buffer_.id()); }
-  [[nodiscard]] std::uint64_t gpu_bytes() const override { return bytes_; }
-
- private:
-  gl::Buffer buffer_;
-  std::uint64_t bytes_ = 0;
-};
-
 }  // namespace
 
 ResourceType environment_lobes_resource() {
@@ -66,9 +49,7 @@ ResourceType environment_lobes_resource() {
               h.value(map->radiance.width());
               h.span(std::span<const glm::vec3>(map->radiance.pixels()));
             }
-            char hex[17];
-            std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h.digest()));
-            return "lobes=" + std::to_string(requested_lobes(c)) + " map=" + hex;
+            return "lobes=" + std::to_string(requested_lobes(c)) + " map=" + h.hex();
           },
       .estimate_bytes =
           [](const ResourceContext& c) { return static_cast<std::uint64_t>(4 + 8 * requested_lobes(c)) * sizeof(float); },
@@ -87,7 +68,10 @@ ResourceType environment_lobes_resource() {
                                              static_cast<float>(g.amplitude.r), static_cast<float>(g.amplitude.g),
                                              static_cast<float>(g.amplitude.b), 0.0f});
             }
-            return std::make_unique<EnvironmentLobesResource>(packed);
+            auto resource = std::make_unique<StorageBuffersResource>();
+            resource->add(kEnvironmentLobesBinding, packed);
+            check_gl("uploading the environment's lobes");
+            return resource;
           },
   };
 }

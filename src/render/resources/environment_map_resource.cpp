@@ -120,9 +120,7 @@ ResourceType environment_map_resource() {
               h.value(map->radiance.height());
               h.span(std::span<const glm::vec3>(map->radiance.pixels()));
             }
-            char hex[17];
-            std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h.digest()));
-            return std::string(hex);
+            return h.hex();
           },
       .estimate_bytes =
           [](const ResourceContext& c) -> std::uint64_t {

@@ -10,10 +10,8 @@
 
 #include "core/gpu_contract.hpp"
 #include "core/hash.hpp"
-#include "gl/context.hpp"
-#include "gl/objects.hpp"
 #include "prefilter/position_normal_elements.hpp"
-#include "render/resources/resource.hpp"
+#include "render/resources/storage_buffers_resource.hpp"
 
 namespace glintlab {
 
@@ -31,30 +29,6 @@ int requested_k(const ParamValues& params) {
   return it == params.end() ? 1 : static_cast<int>(it->second) + 1;
 }
 
-class PositionNormalElementsResource : public GpuResource {
- public:
-  explicit PositionNormalElementsResource(const PositionNormalElementBuffers& packed) {
-    normals_ = gl::make_buffer(static_cast<GLsizeiptr>(packed.normals.size() * sizeof(std::uint32_t)),
-                               packed.normals.data());
-    const float none = 0.0f;  // a buffer is never empty
-    jacobians_ = packed.jacobians.empty()
-                     ? gl::make_buffer(sizeof none, &none)
-                     : gl::make_buffer(static_cast<GLsizeiptr>(packed.jacobians.size() * sizeof(float)),
-                                       packed.jacobians.data());
-    bytes_ = packed.normals.size() * sizeof(std::uint32_t) + packed.jacobians.size() * sizeof(float);
-    check_gl("uploading normal-map elements");
-  }
-  void bind() const override {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPositionNormalElementNormalsBinding, normals_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPositionNormalElementJacobiansBinding, jacobians_.id());
-  }
-  [[nodiscard]] std::uint64_t gpu_bytes() const override { return bytes_; }
-
- private:
-  gl::Buffer normals_, jacobians_;
-  std::uint64_t bytes_ = 0;
-};
-
 }  // namespace
 
 ResourceType position_normal_elements_resource() {
@@ -70,9 +44,7 @@ ResourceType position_normal_elements_resource() {
               h.value(k > 0 && has_elements(m));
               if (k > 0 && has_elements(m)) h.span(std::span<const glm::vec3>(m.normal_map->normals));
             }
-            char hex[17];
-            std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h.digest()));
-            return "k=" + std::to_string(k) + " maps=" + hex;
+            return "k=" + std::to_string(k) + " maps=" + h.hex();
           },
       .estimate_bytes =
           [](const ResourceContext& c) {
@@ -97,8 +69,12 @@ ResourceType position_normal_elements_resource() {
               }
               per_material.push_back(distributions.back().get());
             }
-            return std::make_unique<PositionNormalElementsResource>(
-                pack_position_normal_elements(per_material, kMaxMaterials));
+            const PositionNormalElementBuffers packed = pack_position_normal_elements(per_material, kMaxMaterials);
+            auto resource = std::make_unique<StorageBuffersResource>();
+            resource->add(kPositionNormalElementNormalsBinding, packed.normals)
+                .add(kPositionNormalElementJacobiansBinding, packed.jacobians);
+            check_gl("uploading normal-map elements");
+            return resource;
           },
   };
 }

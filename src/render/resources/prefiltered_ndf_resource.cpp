@@ -7,12 +7,10 @@
 
 #include "core/gpu_contract.hpp"
 #include "core/hash.hpp"
-#include "gl/context.hpp"
-#include "gl/objects.hpp"
 #include "prefilter/prefilter_cache.hpp"
 #include "prefilter/prefilter_params.hpp"
 #include "prefilter/prefiltered_ndf_layout.hpp"
-#include "render/resources/resource.hpp"
+#include "render/resources/storage_buffers_resource.hpp"
 
 namespace glintlab {
 
@@ -26,26 +24,6 @@ bool wants_box_prefix_tables(const ParamValues& params) {
   const auto it = params.find("box_queries");
   return it == params.end() || it->second == 0.0f;
 }
-
-class PrefilteredNdfBuffersResource : public GpuResource {
- public:
-  explicit PrefilteredNdfBuffersResource(const PrefilteredNdfBuffers& packed) {
-    records_ = gl::make_buffer(static_cast<GLsizeiptr>(packed.records.size() * sizeof(std::uint32_t)),
-                               packed.records.data());
-    values_ = gl::make_buffer(static_cast<GLsizeiptr>(packed.values.size() * sizeof(float)), packed.values.data());
-    bytes_ = packed.records.size() * sizeof(std::uint32_t) + packed.values.size() * sizeof(float);
-    check_gl("uploading prefiltered NDFs");
-  }
-  void bind() const override {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPrefilteredNdfRecordsBinding, records_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPrefilteredNdfValuesBinding, values_.id());
-  }
-  [[nodiscard]] std::uint64_t gpu_bytes() const override { return bytes_; }
-
- private:
-  gl::Buffer records_, values_;
-  std::uint64_t bytes_ = 0;
-};
 
 }  // namespace
 
@@ -64,10 +42,8 @@ ResourceType prefiltered_ndf_resource() {
               h.text(prefiltered_ndf_key(*m.normal_map, m.kind_param("intrinsic_roughness"),
                                          prefilter_settings_from(c.params)));
             }
-            char hex[17];
-            std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h.digest()));
             return prefilter_settings_from(c.params).describe() + " box_prefix_tables=" +
-                   std::to_string(wants_box_prefix_tables(c.params)) + " maps=" + hex;
+                   std::to_string(wants_box_prefix_tables(c.params)) + " maps=" + h.hex();
           },
       .estimate_bytes =
           [](const ResourceContext& c) {
@@ -90,10 +66,12 @@ ResourceType prefiltered_ndf_resource() {
                                                 : nullptr);
               per_material.push_back(pyramids.back().get());
             }
-            PrefilteredNdfBuffers packed =
+            const PrefilteredNdfBuffers packed =
                 pack_prefiltered_ndfs(per_material, kMaxMaterials, wants_box_prefix_tables(c.params));
-            if (packed.values.empty()) packed.values.push_back(0.0f);  // a buffer is never empty
-            return std::make_unique<PrefilteredNdfBuffersResource>(packed);
+            auto resource = std::make_unique<StorageBuffersResource>();
+            resource->add(kPrefilteredNdfRecordsBinding, packed.records).add(kPrefilteredNdfValuesBinding, packed.values);
+            check_gl("uploading prefiltered NDFs");
+            return resource;
           },
   };
 }

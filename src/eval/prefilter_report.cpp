@@ -145,7 +145,7 @@ void run_prefilter_report(const Scene& scene, const PrefilterReportOptions& opti
     if (options.accuracy_footprints > 0) entry["accuracy"] = accuracy(p, *m.normal_map, options.accuracy_footprints);
     out.push_back(entry);
   }
-  if (out.empty()) throw InputError("the scene has no normal-map-glints material to prefilter");
+  if (out.empty()) throw InputError(scene.source + ": the scene has no normal-map-glints material to prefilter; allowed: a scene with one");
   if (!options.json.empty()) write_text_file(options.json, out.dump(2) + "\n");
 }
 

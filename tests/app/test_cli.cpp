@@ -333,10 +333,12 @@ TEST_F(Cli, BadEnvironmentMapsExitWith2AndWriteNothing) {
 }
 
 TEST_F(Cli, EnvironmentFitWritesTheLobesAsAMapWithTheMapsPower) {
-  // `glintlab environment-fit`: a scene without an environment is bad input naming the scene; with
+  // `glintlab environment-fit` (and `prefilter`): a scene without what it reads is bad input naming
+  // the scene; with
   // one, -o writes the last count's fit as a map of the environment's size and power (the fit keeps it).
   const fs::path bare = write("bare.toml", TestScene().film(16, 16).material("m").sphere("m").point_light({0, 2, 0}).toml());
   expect_bad_input("environment-fit --scene '" + bare.string() + "'", {"bare.toml", "no environment"});
+  expect_bad_input("prefilter --scene '" + bare.string() + "'", {"bare.toml", "no normal-map-glints"});
   glintlab::Image map(64, 32);
   for (int y = 0; y < 32; ++y)
     for (int x = 0; x < 64; ++x) map.at(x, y) = glm::vec3(1.0f + 0.05f * x, 0.5f, y < 8 ? 4.0f : 0.25f);

@@ -30,13 +30,17 @@ vec2 environmentUv(LightData L, vec3 dir) {
   return vec2(fract(phi * (0.5 * INV_PI) + 0.5), theta * INV_PI);
 }
 
+// A direction of the map's space in the world's: the rotation by +turn about +y.
+vec3 environmentMapToWorld(LightData L, vec3 d) {
+  float c = L.position_radius.x, s = L.position_radius.y;
+  return vec3(c * d.x + s * d.z, d.y, -s * d.x + c * d.z);
+}
+
 // The map's (u, v) to a world direction (the inverse of environmentUv).
 vec3 environmentDirection(LightData L, vec2 uv) {
   float theta = PI * uv.y, phi = TWO_PI * (uv.x - 0.5);
   float sinT = sin(theta);
-  vec3 d = vec3(sinT * sin(phi), cos(theta), -sinT * cos(phi));
-  float c = L.position_radius.x, s = L.position_radius.y;
-  return vec3(c * d.x + s * d.z, d.y, -s * d.x + c * d.z);  // rotation by +turn about +y
+  return environmentMapToWorld(L, vec3(sinT * sin(phi), cos(theta), -sinT * cos(phi)));
 }
 
 ivec2 environmentTexel(LightData L, vec2 uv) {

@@ -45,10 +45,7 @@ void prepareSurface(inout Surface s) {
 
 Radiance shadeLight(Surface s, LightData L) {
 #if MATERIAL_KIND == MATERIAL_KIND_NORMAL_MAP_GLINTS
-  if (!lightIsCompact(L))  // an environment: by its lobes (as deng2022), or the smooth limit without them
-    return environmentLobeCount > 0 ? shadeNormalGlintsEnvironment(s, L, gMaskingAlpha, gDiffuseNormal)
-                                    : shadeLobeEnvironment(s, L, materialSmoothLobe(s));
-  return shadeNormalGlints(s, L, gMaskingAlpha, gDiffuseNormal);
+  return shadeNormalGlintsLight(s, L, gMaskingAlpha, gDiffuseNormal);
 #else
   return shadeLobe(s, L, materialSmoothLobe(s), AREA_LIGHTS_LTC);  // conventional's default
 #endif

@@ -305,9 +305,10 @@ int run_cli(int argc, char** argv) {
       ->check(CLI::Range(1, 1024))
       ->default_str("8,16,32,48");
   environment_fit->add_option("--rows", environment_fit_o.grid_height,
-                              "rows of the map the fit is made on (deng2022's: 64; at most the map's)")
+                              "rows of the map the fit is made on (the methods': " +
+                                  std::to_string(kSphericalGaussianFitRows) + "; at most the map's)")
       ->check(CLI::Range(2, 1024))
-      ->default_str("64");
+      ->default_str(std::to_string(kSphericalGaussianFitRows));
   environment_fit->add_option("-o,--out", environment_fit_out,
                               "also write the fit with the last lobe count as a lat-long EXR (a scene's environment "
                               "file: the truth of the lobes' shading without the fit's error)");

@@ -6,13 +6,14 @@
 #include <filesystem>
 #include <vector>
 
+#include "prefilter/environment_sg_fit.hpp"
 #include "scene/scene.hpp"
 
 namespace glintlab {
 
 struct EnvironmentFitOptions {
   std::vector<int> lobes = {8, 16, 32, 48};
-  int grid_height = 64;           ///< the rows the map is fitted on (deng2022's); at most the map's
+  int grid_height = kSphericalGaussianFitRows;  ///< the rows the map is fitted on (the methods'); at most the map's
   std::filesystem::path out_exr;  ///< the fit with the last lobe count, as a lat-long EXR (when set)
 };
 

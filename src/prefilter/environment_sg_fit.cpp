@@ -67,8 +67,11 @@ glm::dvec3 SphericalGaussian::value(const glm::dvec3& d) const {
   return amplitude * std::exp(sharpness * (glm::dot(axis, d) - 1.0));
 }
 
-glm::dvec3 SphericalGaussian::integral() const {
-  return amplitude * (2.0 * kPi * -std::expm1(-2.0 * sharpness) / sharpness);
+double SphericalGaussian::solid_angle() const { return 2.0 * kPi * -std::expm1(-2.0 * sharpness) / sharpness; }
+
+double SphericalGaussian::cone_half_angle_sine() const {
+  const double cos_half = std::max(1.0 - solid_angle() / (2.0 * kPi), -1.0);
+  return std::sqrt(1.0 - cos_half * cos_half);
 }
 
 double SphericalGaussian::support_angle(double epsilon) const {
@@ -154,8 +157,8 @@ SphericalGaussianFit fit_spherical_gaussians(const EnvironmentMap& map, int lobe
     for (int c = 0; c < 3; ++c) {
       amplitudes.col(c) = nonnegative_least_squares(normal, rhs.col(c));
       // Scaled so that the fit's power is the map's: the L2 fit is ruled by the brightest texels
-      // (the studio's sun, one texel of 64 rows, put 23% too much power into the lobes about it).
-      const double fit_power = amplitudes.col(c).sum() * (2.0 * kPi * -std::expm1(-2.0 * lambda) / lambda);
+      // (a small sun puts too much power into the lobes about it).
+      const double fit_power = amplitudes.col(c).sum() * SphericalGaussian{{0, 0, 1}, lambda, {}}.solid_angle();
       if (fit_power > 0.0) amplitudes.col(c) *= map_power[c] / fit_power;
     }
     const double residual2 = (basis * amplitudes - target).squaredNorm();

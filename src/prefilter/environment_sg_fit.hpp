@@ -16,6 +16,9 @@
 
 namespace glintlab {
 
+/// The rows of the map deng2022's and yan2016's lobes are fitted on (or all of a smaller map's).
+inline constexpr int kSphericalGaussianFitRows = 64;
+
 struct SphericalGaussian {
   glm::dvec3 axis{0.0, 0.0, 1.0};  ///< unit, in the map's space (environment_map.hpp's convention)
   double sharpness = 1.0;          ///< lambda
@@ -23,8 +26,13 @@ struct SphericalGaussian {
 
   /// a exp(lambda (axis . d - 1)) for a unit direction d.
   [[nodiscard]] glm::dvec3 value(const glm::dvec3& d) const;
-  /// The integral over the sphere: 2 pi a (1 - exp(-2 lambda)) / lambda.
-  [[nodiscard]] glm::dvec3 integral() const;
+  /// Its solid angle, the integral over the sphere of exp(lambda (axis . d - 1)): 2 pi (1 - exp(-2 lambda)) / lambda.
+  [[nodiscard]] double solid_angle() const;
+  /// The integral over the sphere: a times the solid angle.
+  [[nodiscard]] glm::dvec3 integral() const { return amplitude * solid_angle(); }
+  /// The sine of the half-angle of the cone of the same solid angle, 2 pi (1 - cos) = Omega: the
+  /// cone deng2022 and yan2016 shade the lobe as (shaders/glints/normal-map/environment_lobes.glsl).
+  [[nodiscard]] double cone_half_angle_sine() const;
   /// Deng et al.'s eq. 8 (Wang et al. 2009's compact-epsilon support): the angle from the axis
   /// within which the lobe's luminance exceeds epsilon, acos(1 + ln(epsilon / a) / lambda); 0 where
   /// a <= epsilon, pi where the whole sphere exceeds it.

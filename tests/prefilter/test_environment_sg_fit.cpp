@@ -48,6 +48,9 @@ TEST(SphericalGaussian, ClosedFormsAgreeWithQuadrature) {
     EXPECT_NEAR(lum * std::exp(g.sharpness * (std::cos(theta) - 1.0)), epsilon, 1e-9) << epsilon;
   }
   EXPECT_EQ(g.support_angle(5.0), 0.0);
+  // The cone of the lobe's solid angle: 2 pi (1 - cos) = Omega.
+  const double s = g.cone_half_angle_sine();
+  EXPECT_NEAR(2.0 * kPi * (1.0 - std::sqrt(1.0 - s * s)), g.solid_angle(), 1e-12);
   EXPECT_NEAR(SphericalGaussian({0, 1, 0}, 0.1, glm::dvec3(1.0)).support_angle(0.5), kPi, 1e-12);
 }
 

@@ -1,8 +1,9 @@
 // Resource `environment-lobes` (deng2022 under an environment; docs/methods.md#deng2022): the
 // scene's environment map fitted by the requesting method's `environment_lobes` spherical
 // Gaussians (src/prefilter/environment_sg_fit.hpp; Deng et al. 2022 sec. 5.4), in the storage
-// buffer shaders/glints/normal-map/environment_lobes.glsl reads: the count, then per lobe
-// (axis in map space, sharpness) and (RGB amplitude, 0). No environment or no lobes: a count of 0.
+// buffer shaders/glints/normal-map/environment_lobes.glsl reads: the count, then per lobe the
+// cone it is shaded as, (axis in map space, sine of the half-angle), and (RGB power, 0). No
+// environment or no lobes: a count of 0.
 #include <algorithm>
 #include <bit>
 #include <cstdint>
@@ -18,9 +19,6 @@
 namespace glintlab {
 
 namespace {
-
-/// The rows of the map the lobes are fitted on (or all of a smaller map's).
-constexpr int kFitRows = 64;
 
 const EnvironmentMap* environment_of(const Scene& scene) {
   for (const Light& l : scene.lights)
@@ -60,13 +58,15 @@ ResourceType environment_lobes_resource() {
             if (lobes > 0) {
               const EnvironmentMap& map = *environment_of(c.scene);
               const SphericalGaussianFit fit =
-                  fit_spherical_gaussians(map, lobes, std::min(kFitRows, map.radiance.height()));
+                  fit_spherical_gaussians(map, lobes, std::min(kSphericalGaussianFitRows, map.radiance.height()));
               packed[0] = std::bit_cast<float>(static_cast<std::int32_t>(fit.lobes.size()));
-              for (const SphericalGaussian& g : fit.lobes)
+              for (const SphericalGaussian& g : fit.lobes) {
+                const glm::dvec3 power = g.integral();
                 packed.insert(packed.end(), {static_cast<float>(g.axis.x), static_cast<float>(g.axis.y),
-                                             static_cast<float>(g.axis.z), static_cast<float>(g.sharpness),
-                                             static_cast<float>(g.amplitude.r), static_cast<float>(g.amplitude.g),
-                                             static_cast<float>(g.amplitude.b), 0.0f});
+                                             static_cast<float>(g.axis.z), static_cast<float>(g.cone_half_angle_sine()),
+                                             static_cast<float>(power.r), static_cast<float>(power.g),
+                                             static_cast<float>(power.b), 0.0f});
+              }
             }
             auto resource = std::make_unique<StorageBuffersResource>();
             resource->add(kEnvironmentLobesBinding, packed);

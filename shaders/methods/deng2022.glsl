@@ -38,6 +38,12 @@ vec3 gDiffuseNormal;  // the map's filtered normal in the macro frame, for Lambe
 const int FALLBACK_K = param_small_footprints == SMALL_FOOTPRINTS_YAN2016_K1 ? 1 : 2;
 bool gBelowPyramid;
 PositionNormalFootprint gElements;
+#ifdef METHOD_AS_FOOTPRINT_NDF
+#include "glints/normal-map/ndf_sampling.glsl"
+float gNdfMass;  // the footprint NDF's mass, the sampler's normaliser
+const uint NDF_PROBE_STAGE = 24u;  // the probe's choice: a stage of the sample's seed past pndfSample's (0 .. 17)
+float normalGlintsProbesMass();
+#endif
 
 float normalGlintsDensity(vec2 s) {
   if (gBelowPyramid) return positionNormalDensity(uNormalMap, gElements, FALLBACK_K, s);
@@ -57,11 +63,17 @@ float normalGlintsBoxMean(vec2 lo, vec2 hi) {
   return sum;
 }
 #include "glints/normal-map/shading.glsl"
+const int ENVIRONMENT_LOBE_CONES = param_environment_lobe_cones == ENVIRONMENT_LOBE_CONES_THREE ? 3 : 1;
 #include "glints/normal-map/environment_lobes.glsl"
+// The footprint NDF's queries per pixel beyond one per light, which share the element budget: the
+// environment's lobes (the path tracer's footprint material counts its samples instead).
+#ifndef NORMAL_GLINTS_EXTRA_QUERIES
+#define NORMAL_GLINTS_EXTRA_QUERIES environmentExtraQueries()
 #endif
 
-void prepareSurface(inout Surface s) {
-#if MATERIAL_KIND == MATERIAL_KIND_NORMAL_MAP_GLINTS
+// The pixel footprint's NDF at this point: the pyramid's probes, or the map's elements where the
+// footprint is finer than its first level.
+void normalGlintsPrepareFootprint(inout Surface s) {
   gDiffuseNormal = normalGlintsMacroFrame(s);
   ivec2 size = textureSize(uNormalMap, 0);
   mat2 sigmaP = footprintTexelCovariance(s.footprint, size, param_footprint_sigma);
@@ -80,11 +92,52 @@ void prepareSurface(inout Surface s) {
   // A box's side is at most 2 k r + 1 elements: every element of a footprint under sigma_0 a side.
   gElements = positionNormalFootprint(centre, sigmaP, size, FALLBACK_K, normalMapGlintsIntrinsicRoughness(m),
                                       positionNormalElementBudget((side + 1.0) * (side + 1.0),
-                                                                  max(environmentLobeCount - 1, 0)));
+                                                                  NORMAL_GLINTS_EXTRA_QUERIES));
   gBelowPyramid = param_small_footprints != SMALL_FOOTPRINTS_CLAMP &&
                   (largest < sigma0 * sigma0 || (smallest < sigma0 * sigma0 && gElements.boxElements <= budget));
   gElements.firstElement = positionNormalFirstElement[uMaterial];  // none stored with small_footprints = clamp
   if (!gBelowPyramid) gElements.cells = ivec2(0);
+#ifdef METHOD_AS_FOOTPRINT_NDF
+  gNdfMass = gBelowPyramid ? 1.0 : normalGlintsProbesMass();
+#endif
+}
+
+#ifdef METHOD_AS_FOOTPRINT_NDF
+// Importance sampling of the footprint's NDF (sec. 5.2), for the path tracer (`path:deng2022`):
+// a probe by its weight times its mass, then that probe's pyramid sampler
+// (glints/normal-map/ndf_sampling.glsl), so that the samples' density is the probes' blend that
+// normalGlintsDensity evaluates over the blend's mass; below the pyramid, the elements' mixture.
+float normalGlintsProbesMass() {
+  float sum = 0.0;
+  ProbeWeights w = gProbes.weights;
+  for (int j = 0; j < gProbes.count; ++j)
+    sum += nextProbeWeight(w) * pndfMass(gPyramid, probeCentre(gProbes, j), gProbes.sigma);
+  return sum;
+}
+
+float normalGlintsSamplePdf(vec2 s) { return gNdfMass > 0.0 ? normalGlintsDensity(s) / gNdfMass : 0.0; }
+
+NdfSample normalGlintsSampleNdf(uint seed, vec2 u) {
+  if (gBelowPyramid) return positionNormalSample(uNormalMap, gElements, FALLBACK_K, seed, u);
+  float total = 0.0;
+  int chosen = -1;
+  ProbeWeights w = gProbes.weights;
+  for (int j = 0; j < gProbes.count; ++j) {
+    const float m = nextProbeWeight(w) * pndfMass(gPyramid, probeCentre(gProbes, j), gProbes.sigma);
+    if (ndfReservoirTakes(m, total, ndfChoiceUniform(seed, NDF_PROBE_STAGE, uint(j)))) chosen = j;
+  }
+  if (chosen < 0) return NO_NDF_SAMPLE;
+  NdfSample x = pndfSample(gPyramid, probeCentre(gProbes, chosen), gProbes.sigma, seed, u);
+  if (x.pdf > 0.0) x.pdf = normalGlintsSamplePdf(x.s);
+  return x.pdf > 0.0 ? x : NO_NDF_SAMPLE;
+}
+#endif
+#endif
+
+#ifndef METHOD_AS_FOOTPRINT_NDF
+void prepareSurface(inout Surface s) {
+#if MATERIAL_KIND == MATERIAL_KIND_NORMAL_MAP_GLINTS
+  normalGlintsPrepareFootprint(s);
 #endif
 }
 
@@ -95,3 +148,4 @@ Radiance shadeLight(Surface s, LightData L) {
   return shadeLobe(s, L, materialSmoothLobe(s), AREA_LIGHTS_LTC);  // conventional's default
 #endif
 }
+#endif  // METHOD_AS_FOOTPRINT_NDF

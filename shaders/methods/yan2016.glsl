@@ -25,21 +25,43 @@ float normalGlintsBoxMean(vec2 lo, vec2 hi) {
   return positionNormalBoxMean(uNormalMap, gFootprint, ELEMENTS_PER_TEXEL, lo, hi);
 }
 #include "glints/normal-map/shading.glsl"
+const int ENVIRONMENT_LOBE_CONES = param_environment_lobe_cones == ENVIRONMENT_LOBE_CONES_THREE ? 3 : 1;
 #include "glints/normal-map/environment_lobes.glsl"
-
+// The footprint NDF's queries per pixel beyond one per light, which share the element budget: the
+// environment's lobes (the path tracer's footprint material counts its samples instead).
+#ifndef NORMAL_GLINTS_EXTRA_QUERIES
+#define NORMAL_GLINTS_EXTRA_QUERIES environmentExtraQueries()
 #endif
 
-void prepareSurface(inout Surface s) {
-#if MATERIAL_KIND == MATERIAL_KIND_NORMAL_MAP_GLINTS
+// The pixel footprint's P-NDF at this point: its elements (the budget's subset past max_elements).
+void normalGlintsPrepareFootprint(inout Surface s) {
   gDiffuseNormal = normalGlintsMacroFrame(s);
   ivec2 size = textureSize(uNormalMap, 0);
   mat2 sigmaP = footprintTexelCovariance(s.footprint, size, param_footprint_sigma);
   MaterialData m = materials[uMaterial];
   gFootprint = positionNormalFootprint(fract(s.uv) * vec2(size), sigmaP, size, ELEMENTS_PER_TEXEL,
                                        normalMapGlintsIntrinsicRoughness(m),
-                                       positionNormalElementBudget(param_max_elements, max(environmentLobeCount - 1, 0)));
+                                       positionNormalElementBudget(param_max_elements, NORMAL_GLINTS_EXTRA_QUERIES));
   gFootprint.firstElement = positionNormalFirstElement[uMaterial];
   gMaskingAlpha = normalMapGlintsMaskingAlpha(m);
+}
+
+#ifdef METHOD_AS_FOOTPRINT_NDF
+// Importance sampling of the footprint's P-NDF, for the path tracer (`path:yan2016`): an element by
+// its weight, then its Gaussian (glints/normal-map/ndf_sampling.glsl); the mixture is normalised.
+#include "glints/normal-map/ndf_sampling.glsl"
+float normalGlintsSamplePdf(vec2 s) { return normalGlintsDensity(s); }
+NdfSample normalGlintsSampleNdf(uint seed, vec2 u) {
+  return positionNormalSample(uNormalMap, gFootprint, ELEMENTS_PER_TEXEL, seed, u);
+}
+#endif
+
+#endif
+
+#ifndef METHOD_AS_FOOTPRINT_NDF
+void prepareSurface(inout Surface s) {
+#if MATERIAL_KIND == MATERIAL_KIND_NORMAL_MAP_GLINTS
+  normalGlintsPrepareFootprint(s);
 #endif
 }
 
@@ -50,3 +72,4 @@ Radiance shadeLight(Surface s, LightData L) {
   return shadeLobe(s, L, materialSmoothLobe(s), AREA_LIGHTS_LTC);  // conventional's default
 #endif
 }
+#endif  // METHOD_AS_FOOTPRINT_NDF

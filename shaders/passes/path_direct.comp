@@ -6,7 +6,8 @@
 // ray with its contribution, and the direction the path goes on in (a bounce) with its weight. The
 // host traces the rays, adds the contributions whose light is visible and follows the bounces. One
 // program per material variant ($MATERIAL and the forward pass's defines:
-// src/render/path_reference.cpp).
+// src/render/path_reference.cpp); the backends `path:<method>` put a method's footprint NDF in
+// normal-map-glints materials' $MATERIAL slot, whose environment lights are then shaded by lobes.
 layout(local_size_x = 64) in;
 
 #define METHOD_SHADES_ENVIRONMENT
@@ -80,6 +81,31 @@ float deltaLightDistance(LightData L, vec3 p) {
   return lightIsDistant(L) ? FAR_AWAY : length(L.position_radius.xyz - p);
 }
 
+#ifdef MATERIAL_ENVIRONMENT_LOBES
+// An environment on a method's footprint NDF (`path:<method>`, materials/normal-map-glints-footprint.glsl)
+// by the environment's spherical Gaussian lobes (Deng et al. 2022, sec. 5.4): each lobe one range
+// query of the footprint's NDF over its cone's half-vector box (glints/normal-map/environment_lobes.glsl)
+// and one shadow ray along its axis (visibility taken as constant over the lobe, as the paper's
+// angular prefiltering does); the diffuse term by the light's own samples.
+void emitEnvironmentByLobes(Surface s, LightData L, vec3 wo, ReferenceStream st) {
+  const float perSample = 1.0 / float(st.count);
+  for (uint j = 0u; j < st.count; ++j) {
+    vec3 dir;
+    float dist, pdf;
+    if (!sampleLightDirection(L, s.position, r2Point(st.first + j, st.rotLight), dir, dist, pdf) || !(pdf > 0.0))
+      continue;
+    const vec3 wi = toLocal(s, dir);
+    if (wi.z > 0.0)
+      emitShadowRay(dir, dist, materialDiffuseCos(s, wi) * lightRadianceFrom(L, dir) * (perSample / pdf), vec3(0.0));
+  }
+  vec3 axis;
+  for (int k = 0; k < environmentLobeCount; ++k) {
+    const vec3 specular = normalGlintsEnvironmentLobe(s, L, k, wo, gMaskingAlpha, axis);
+    if (max(specular.r, max(specular.g, specular.b)) > 0.0) emitShadowRay(axis, FAR_AWAY, vec3(0.0), specular);
+  }
+}
+#endif
+
 // Writes the light's samples as shadow rays; the radiance is the host's to sum.
 Radiance shadeLight(Surface s, LightData L) {
   uint lightIndex = gReferenceLightIndex++;
@@ -96,6 +122,12 @@ Radiance shadeLight(Surface s, LightData L) {
   }
   // Each vertex its own streams; the first the raster reference's.
   ReferenceStream st = referenceStream(gGlobal, lightIndex + uDepth * uint(MAX_LIGHTS));
+#ifdef MATERIAL_ENVIRONMENT_LOBES
+  if (!lightIsCompact(L) && environmentLobeCount > 0) {
+    emitEnvironmentByLobes(s, L, wo, st);
+    return none;
+  }
+#endif
   bool mirror = referenceMirror(s);
   float perSample = 1.0 / float(st.count);
   float specularScale = perSample * referenceSpecularFactor(s, L, wo, st);

@@ -27,16 +27,17 @@ inline constexpr int kPrefilteredNdfValuesBinding = 1;
 /// fallback; src/prefilter/position_normal_elements.hpp, shaders/glints/normal-map/position_normal.glsl).
 inline constexpr int kPositionNormalElementNormalsBinding = 2;
 inline constexpr int kPositionNormalElementJacobiansBinding = 3;
-/// Storage-buffer binding point of the environment's spherical Gaussian lobes in the forward pass
-/// (deng2022; shaders/glints/normal-map/environment_lobes.glsl). GL guarantees 8 binding points:
-/// the path tracer's compute pass binds its own buffers at 4 .. 7 before each dispatch.
+/// Storage-buffer binding point of the environment's spherical Gaussian lobes (deng2022, yan2016;
+/// shaders/glints/normal-map/environment_lobes.glsl).
 inline constexpr int kEnvironmentLobesBinding = 4;
 /// Storage-buffer binding points of the path tracer's shading pass (passes/path_direct.comp,
-/// src/render/path_reference.cpp): its hits in; their shadow rays, emission and bounces out.
-inline constexpr int kPathHitsBinding = 4;
-inline constexpr int kPathShadowRaysBinding = 5;
-inline constexpr int kPathEmissionBinding = 6;
-inline constexpr int kPathContinuationBinding = 7;
+/// src/render/path_reference.cpp): its hits in; their shadow rays, emission and bounces out. After
+/// the methods' own, which the backends path:<method> bind beside them: 9 storage blocks in one
+/// compute program, past GL's guaranteed 8 (llvmpipe and NVIDIA's drivers have 16 or more).
+inline constexpr int kPathHitsBinding = 5;
+inline constexpr int kPathShadowRaysBinding = 6;
+inline constexpr int kPathEmissionBinding = 7;
+inline constexpr int kPathContinuationBinding = 8;
 
 /// Texture units of a material's maps (shaders/core/fragment_inputs.glsl, slope_moments.glsl).
 inline constexpr int kNormalMapUnit = 0;

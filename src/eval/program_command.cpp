@@ -1,7 +1,7 @@
 #include "eval/program_command.hpp"
 
 #include "core/error.hpp"
-#include "eval/method_list.hpp"
+#include "shading/method_list.hpp"
 #include "render/program_text.hpp"
 #include "render/shader_contract.hpp"
 #include "scene/materials/material_kind.hpp"

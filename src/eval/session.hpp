@@ -11,7 +11,7 @@
 
 #include "gl/context.hpp"
 #include "eval/memory_budget.hpp"
-#include "eval/method_list.hpp"
+#include "shading/method_list.hpp"
 #include "gl/shader_library.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/reference_backend.hpp"

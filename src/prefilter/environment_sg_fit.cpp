@@ -46,8 +46,69 @@ struct Grid {
   std::vector<double> weights;  // solid angles
 };
 
-Grid grid_of(const EnvironmentMap& map, int height) {
-  const Image image = height == map.radiance.height() ? map.radiance : downsample_environment(map.radiance, height);
+// A map's compact sources far brighter than the rest (a sun), each as one lobe of its own sharpness
+// taken out of `image` (its texels zeroed) before the lattice's lobes fit what remains: the L2
+// fit of a sharp peak with lobes far wider than it puts power that belongs to the rest of the sky
+// into the lobes about the peak. At most `count` peaks, each brighter than kPeakContrast times the
+// map's mean luminance.
+constexpr double kPeakContrast = 64.0;
+// The fit's error is measured on the map's texels, at most this many rows (downsampled above).
+constexpr int kErrorRows = 256;
+
+std::vector<SphericalGaussian> extract_peaks(Image& image, int count, double lattice_lambda) {
+  const int w = image.width(), h = image.height();
+  std::vector<double> solid_angles(static_cast<std::size_t>(h));
+  double mean = 0.0;
+  for (int y = 0; y < h; ++y) {
+    solid_angles[static_cast<std::size_t>(y)] = environment_row_solid_angle(y, h);
+    for (int x = 0; x < w; ++x) mean += luminance_of(glm::dvec3(image.at(x, y))) * solid_angles[static_cast<std::size_t>(y)];
+  }
+  mean /= 4.0 * kPi;
+  // A peak's texels: those within the lattice's spacing of its brightest one and above 1/64 of it.
+  const double reach = std::cos(std::min(kPi, std::sqrt(4.0 * kPi / lattice_lambda)));
+  std::vector<SphericalGaussian> peaks;
+  for (int p = 0; p < count; ++p) {
+    int best_x = 0, best_y = 0;
+    double brightest = 0.0;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        if (const double l = luminance_of(glm::dvec3(image.at(x, y))); l > brightest) {
+          brightest = l;
+          best_x = x;
+          best_y = y;
+        }
+    if (!(brightest > kPeakContrast * mean)) break;
+    const glm::dvec3 centre = environment_direction_precise((best_x + 0.5) / w, (best_y + 0.5) / h);
+    glm::dvec3 power(0.0), moment(0.0);
+    double weight = 0.0;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const glm::dvec3 radiance(image.at(x, y));
+        const double l = luminance_of(radiance);
+        if (l < brightest / 64.0) continue;
+        const glm::dvec3 d = environment_direction_precise((x + 0.5) / w, (y + 0.5) / h);
+        if (glm::dot(d, centre) < reach) continue;
+        const double dw = solid_angles[static_cast<std::size_t>(y)];
+        power += radiance * dw;
+        moment += l * dw * d;
+        weight += l * dw;
+        image.at(x, y) = glm::vec3(0.0f);
+      }
+    // An SG's mean cosine about its axis is coth(lambda) - 1 / lambda ~ 1 - 1 / lambda: the
+    // sharpness of the source's own spread (at least the lattice's; a source within one texel
+    // gets the texel's).
+    const double mean_cosine = weight > 0.0 ? glm::length(moment) / weight : 1.0;
+    const glm::dvec3 axis = weight > 0.0 ? glm::normalize(moment) : centre;
+    const double lambda = std::clamp(1.0 / std::max(1.0 - mean_cosine, 1e-7), lattice_lambda, 1e6);
+    SphericalGaussian g{axis, lambda, {}};
+    g.amplitude = power / g.solid_angle();
+    peaks.push_back(g);
+  }
+  return peaks;
+}
+
+Grid grid_of(const Image& full, int height) {
+  const Image image = height == full.height() ? full : downsample_environment(full, height);
   Grid g;
   const int w = image.width(), h = image.height();
   for (int y = 0; y < h; ++y) {
@@ -74,6 +135,27 @@ double SphericalGaussian::cone_half_angle_sine() const {
   return std::sqrt(1.0 - cos_half * cos_half);
 }
 
+std::array<SphericalGaussian::Cone, 3> SphericalGaussian::nested_cones() const {
+  constexpr std::array<double, 3> quantiles = {1.0 / 3.0, 2.0 / 3.0, 0.95};
+  std::array<double, 3> omega{}, ring_mean{};
+  double previous_q = 0.0, previous_omega = 0.0;
+  for (std::size_t j = 0; j < 3; ++j) {
+    // 1 - cos theta = -ln(1 - q) / lambda, written so that a sharp lobe keeps its digits.
+    const double one_minus_cos = std::min(-std::log1p(-quantiles[j]) / sharpness, 2.0);
+    omega[j] = 2.0 * kPi * one_minus_cos;
+    ring_mean[j] = (quantiles[j] - previous_q) / (omega[j] - previous_omega);
+    previous_q = quantiles[j];
+    previous_omega = omega[j];
+  }
+  std::array<Cone, 3> cones{};
+  for (std::size_t j = 0; j < 3; ++j) {
+    const double height = ring_mean[j] - (j < 2 ? ring_mean[j + 1] : 0.0);
+    const double one_minus_cos = omega[j] / (2.0 * kPi);
+    cones[j] = {std::sqrt(std::max(one_minus_cos * (2.0 - one_minus_cos), 0.0)), height * omega[j] / quantiles[2]};
+  }
+  return cones;
+}
+
 double SphericalGaussian::support_angle(double epsilon) const {
   const double a = luminance_of(amplitude);
   if (!(a > epsilon)) return 0.0;
@@ -85,6 +167,13 @@ glm::dvec3 SphericalGaussianFit::radiance(const glm::dvec3& d) const {
   glm::dvec3 sum(0.0);
   for (const SphericalGaussian& g : lobes) sum += g.value(d);
   return sum;
+}
+
+SphericalGaussianFit SphericalGaussianFit::without_peaks() const {
+  SphericalGaussianFit lattice = *this;
+  lattice.lobes.erase(lattice.lobes.begin(), lattice.lobes.begin() + peaks);
+  lattice.peaks = 0;
+  return lattice;
 }
 
 std::vector<double> SphericalGaussianFit::lobe_probabilities() const {
@@ -118,15 +207,36 @@ std::vector<glm::dvec3> fibonacci_directions(int count) {
   return out;
 }
 
+namespace {
+
+// ||fit - map|| / ||map||, solid-angle weighted L2 over RGB, on the map's texels (at most 256 rows).
+double relative_error_of(const SphericalGaussianFit& fit, const EnvironmentMap& map) {
+  const Grid g = grid_of(map.radiance, std::min(map.radiance.height(), kErrorRows));
+  double residual2 = 0.0, norm2 = 0.0;
+  for (std::size_t i = 0; i < g.directions.size(); ++i) {
+    const glm::dvec3 d = fit.radiance(g.directions[i]) - g.radiance[i];
+    residual2 += g.weights[i] * glm::dot(d, d);
+    norm2 += g.weights[i] * glm::dot(g.radiance[i], g.radiance[i]);
+  }
+  return norm2 > 0.0 ? std::sqrt(residual2 / norm2) : 0.0;
+}
+
+}  // namespace
+
 SphericalGaussianFit fit_spherical_gaussians(const EnvironmentMap& map, int lobes, int grid_height) {
   if (lobes < 1 || lobes > 1024)
     throw InputError("spherical Gaussian lobes is " + std::to_string(lobes) + "; allowed: 1 .. 1024");
   if (grid_height < 2 || grid_height > map.radiance.height())
     throw InputError("the spherical Gaussian fit's grid height is " + std::to_string(grid_height) +
                      "; allowed: 2 .. the map's " + std::to_string(map.radiance.height()) + " rows");
-  const Grid g = grid_of(map, grid_height);
-  const std::vector<glm::dvec3> axes = fibonacci_directions(lobes);
-  const Eigen::Index n = static_cast<Eigen::Index>(g.directions.size()), k = lobes;
+  // The peaks first (up to an eighth of the lobes), then the lattice on what they leave.
+  Image residual = map.radiance;
+  const std::vector<SphericalGaussian> peaks =
+      extract_peaks(residual, lobes / 8, static_cast<double>(lobes) / kPi);
+  const int lattice = lobes - static_cast<int>(peaks.size());
+  const Grid g = grid_of(residual, grid_height);
+  const std::vector<glm::dvec3> axes = fibonacci_directions(lattice);
+  const Eigen::Index n = static_cast<Eigen::Index>(g.directions.size()), k = lattice;
   Eigen::MatrixXd cosines(n, k);
   for (Eigen::Index i = 0; i < n; ++i)
     for (Eigen::Index j = 0; j < k; ++j) cosines(i, j) = glm::dot(g.directions[i], axes[j]);
@@ -147,7 +257,7 @@ SphericalGaussianFit fit_spherical_gaussians(const EnvironmentMap& map, int lobe
   SphericalGaussianFit best;
   best.relative_error = HUGE_VAL;
   best.grid_height = grid_height;
-  const double lambda0 = static_cast<double>(lobes) / kPi;
+  const double lambda0 = static_cast<double>(lattice) / kPi;
   for (int step = 0; step <= 8; ++step) {
     const double lambda = lambda0 * std::pow(2.0, 0.5 * step);
     const Eigen::MatrixXd basis = sqrt_w.asDiagonal() * ((cosines.array() - 1.0) * lambda).exp().matrix();
@@ -165,11 +275,13 @@ SphericalGaussianFit fit_spherical_gaussians(const EnvironmentMap& map, int lobe
     const double error = norm2 > 0.0 ? std::sqrt(residual2 / norm2) : 0.0;
     if (error < best.relative_error) {
       best.relative_error = error;
-      best.lobes.clear();
+      best.lobes = peaks;
+      best.peaks = static_cast<int>(peaks.size());
       for (Eigen::Index j = 0; j < k; ++j)
         best.lobes.push_back({axes[j], lambda, glm::dvec3(amplitudes(j, 0), amplitudes(j, 1), amplitudes(j, 2))});
     }
   }
+  best.relative_error = relative_error_of(best, map);
   return best;
 }
 

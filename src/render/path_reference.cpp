@@ -15,6 +15,8 @@
 #include "render/gpu_scene.hpp"
 #include "render/pass_tiles.hpp"
 #include "render/render_target.hpp"
+#include "render/resources/resource.hpp"
+#include "render/shader_contract.hpp"
 #include "render/subpixel_filter.hpp"
 #include "tables/registry.hpp"
 
@@ -88,14 +90,49 @@ void set_uint(GLuint program, const char* name, unsigned v) {
 PathReference::PathReference(const ReferenceBackendContext& context, bool shadows)
     : shaders_(context.shaders), scene_(context.scene), rays_(context.scene.resource_context().scene), shadows_(shadows) {}
 
+PathReference::PathReference(const ReferenceBackendContext& context, MethodChoice method)
+    : PathReference(context, true) {
+  method_module_ = method_program_module(shaders_, *method.method, method.params);
+  method_resources_ = method_resources(*method.method, method.params);
+  scene_.resources().require(method_resources_, scene_.resource_context(method.params));
+  method_ = std::move(method);
+}
+
+std::string PathReference::id() const {
+  if (method_) return kPathMethodPrefix + method_->display_name();
+  return shadows_ ? "path" : "path-unshadowed";
+}
+
+bool PathReference::by_method(int material) const {
+  return method_ && scene_.kind(material).id == "normal-map-glints";
+}
+
+ShaderDefines PathReference::program_defines(int material) const {
+  ShaderDefines defines = forward_variant(kReferenceModule, scene_.light_ranges(), material_variant(scene_, material));
+  if (by_method(material))
+    for (auto& [name, value] : defines) {
+      if (name == "$METHOD") value = method_module_;
+      if (name == "$MATERIAL") value = kFootprintNdfMaterialModule;
+    }
+  return defines;
+}
+
 std::uint64_t PathReference::estimator_hash() const {
   if (estimator_hash_ != 0) return estimator_hash_;
   Hasher h;
   h.text(shadows_ ? "glintlab-path-v1 shadow rays of the scene's shapes" : "glintlab-path-v1 no shadows");
-  std::set<MaterialVariant> variants;
-  for (const auto& mesh : scene_.meshes()) variants.insert(material_variant(scene_, mesh.material));
-  for (const MaterialVariant& v : variants)
-    h.text(shaders_.expand("passes/path_direct.comp", forward_variant(kReferenceModule, scene_.light_ranges(), v)));
+  std::set<std::string> programs;
+  for (const auto& mesh : scene_.meshes())
+    programs.insert(shaders_.expand("passes/path_direct.comp", program_defines(mesh.material)));
+  for (const std::string& text : programs) h.text(text);
+  if (method_) {
+    // Its run-time parameters are uniforms, not text; its resources follow its parameters.
+    h.text(id());
+    for (const auto& [name, value] : method_->params) {
+      h.text(name);
+      h.value(value);
+    }
+  }
   h.text(shaders_.expand("passes/path_background.comp", {}));
   hash_pass_inputs(h, shaders_, scene_);
   estimator_hash_ = h.digest();
@@ -103,9 +140,16 @@ std::uint64_t PathReference::estimator_hash() const {
 }
 
 std::size_t PathReference::shadow_rays_per_hit(const ReferencePass& pass) const {
-  // Each light may write 2 n + 1 shadow rays per hit (n light samples; passes/path_direct.comp).
-  return std::max<std::size_t>(1, scene_.resource_context().scene.lights.size() *
-                                      (2 * static_cast<std::size_t>(pass.light_samples) + 1));
+  // Each light may write 2 n + 1 shadow rays per hit (n light samples; passes/path_direct.comp);
+  // an environment on a method's footprint NDF n + its lobes (at most environment_lobes).
+  const std::size_t n = static_cast<std::size_t>(pass.light_samples);
+  const std::size_t lobes = method_ && method_->params.contains("environment_lobes")
+                                ? static_cast<std::size_t>(method_->params.at("environment_lobes"))
+                                : 0;
+  std::size_t rays = 0;
+  for (const Light& light : scene_.resource_context().scene.lights)
+    rays += std::max(2 * n + 1, light.environment ? n + lobes : 0);
+  return std::max<std::size_t>(1, rays);
 }
 
 GLuint PathReference::DeviceBuffer::hold(std::size_t bytes) {
@@ -119,8 +163,8 @@ GLuint PathReference::DeviceBuffer::hold(std::size_t bytes) {
 GLuint PathReference::shading_program(int material) {
   GLuint& program = programs_[material];
   if (!program)
-    program = shaders_.compute("passes/path_direct.comp",
-                               forward_variant(kReferenceModule, scene_.light_ranges(), material_variant(scene_, material)));
+    program = shaders_.compute("passes/path_direct.comp", program_defines(material));
+  if (by_method(material)) set_param_uniforms(program, method_->params);
   return program;
 }
 
@@ -269,6 +313,7 @@ void PathReference::shade_tile(const Camera& camera, int width, int height, cons
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frame_ubo.id());
     scene_.bind_buffers();
     scene_.resources().bind(scene_.scene_resource_ids(), scene_.resource_context());
+    if (method_) scene_.resources().bind(method_resources_, scene_.resource_context(method_->params));
     const std::size_t shadow_count = records.size() * rays_per_hit;
     const GLuint hit_buffer = hits_.hold(records.size() * sizeof(PathHit));
     glNamedBufferSubData(hit_buffer, 0, static_cast<GLsizeiptr>(records.size() * sizeof(PathHit)), records.data());

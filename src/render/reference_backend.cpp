@@ -1,10 +1,13 @@
 #include "render/reference_backend.hpp"
 
 #include <algorithm>
+#include <map>
 
 #include "core/error.hpp"
 #include "render/path_reference.hpp"
 #include "render/raster_reference.hpp"
+#include "shading/method_list.hpp"
+#include "shading/registry.hpp"
 
 namespace glintlab {
 
@@ -111,13 +114,53 @@ const std::vector<ReferenceBackendEntry>& reference_backends() {
   return entries;
 }
 
-const ReferenceBackendEntry& find_reference_backend(const std::string& id) {
+namespace {
+
+/// The methods whose footprint NDF the path tracer can render (MethodDescriptor::path_footprint_ndf),
+/// as backend ids: "path:yan2016, path:deng2022".
+std::string path_method_backends() {
+  std::string ids;
+  for (const MethodDescriptor& m : all_methods())
+    if (m.path_footprint_ndf) ids += (ids.empty() ? "" : ", ") + std::string(kPathMethodPrefix) + m.id;
+  return ids;
+}
+
+/// "path:<method variant>": the path tracer with normal-map-glints materials as the variant's
+/// footprint NDF; the variant's settings are the method's parameters (its defaults elsewhere).
+ReferenceBackendEntry path_method_backend(const std::string& id) {
+  const std::string spec = id.substr(std::string(kPathMethodPrefix).size());
+  const std::string origin = "--reference-backend " + id;
+  std::vector<MethodVariant> variants;
+  try {
+    variants = parse_method_variants(spec);
+  } catch (const InputError& e) {
+    // The parser speaks of --methods; the variant is this option's.
+    std::string message = e.what();
+    const std::string prefix = "--methods '" + spec + "': ";
+    if (message.starts_with(prefix)) message = message.substr(prefix.size());
+    throw InputError(origin + ": " + message);
+  }
+  if (variants.size() != 1 || !variants.front().method->path_footprint_ndf)
+    throw InputError(origin + ": the path tracer renders the footprint NDF of one method; allowed: " +
+                     path_method_backends() + " (each with settings id{name=value,...})");
+  const MethodVariant& v = variants.front();
+  std::map<std::string, std::string> settings(v.settings.begin(), v.settings.end());
+  MethodChoice choice{v.method, resolve_params(*v.method, settings, origin), v.name, v.file_name};
+  return {kPathMethodPrefix + v.name,
+          "path, with normal-map-glints materials as " + v.method->id + "'s footprint NDF",
+          [choice](const ReferenceBackendContext& c) { return std::make_unique<PathReference>(c, choice); }};
+}
+
+}  // namespace
+
+ReferenceBackendEntry find_reference_backend(const std::string& id) {
+  if (id.starts_with(kPathMethodPrefix)) return path_method_backend(id);
   std::string known;
   for (const auto& e : reference_backends()) {
     if (e.id == id) return e;
     known += (known.empty() ? "" : ", ") + e.id;
   }
-  throw InputError("--reference-backend " + id + ": unknown backend; allowed: " + known);
+  throw InputError("--reference-backend " + id + ": unknown backend; allowed: " + known + ", " + path_method_backends());
 }
 
 std::unique_ptr<ReferenceBackend> make_reference_backend(const std::string& id, const ReferenceBackendContext& context) {

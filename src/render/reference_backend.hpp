@@ -113,8 +113,14 @@ struct ReferenceBackendEntry {
   std::function<std::unique_ptr<ReferenceBackend>(const ReferenceBackendContext&)> create;
 };
 const std::vector<ReferenceBackendEntry>& reference_backends();
-/// The entry of backend `id`; throws InputError naming the id and the registered ones.
-const ReferenceBackendEntry& find_reference_backend(const std::string& id);
+/// Backends made from a method: "path:<method>" or "path:<method>{name=value,...}" is the path
+/// tracer with normal-map-glints materials as that method's footprint NDF, for the methods that
+/// give one (MethodDescriptor::path_footprint_ndf: yan2016, deng2022): their appearance rendered
+/// offline, as Deng et al. 2022 render theirs (docs/methods.md, "Methods in the path tracer").
+inline constexpr const char* kPathMethodPrefix = "path:";
+/// The entry of backend `id` (registered, or made from a method); throws InputError naming the id
+/// and what is allowed.
+ReferenceBackendEntry find_reference_backend(const std::string& id);
 /// find_reference_backend(id).create(context).
 std::unique_ptr<ReferenceBackend> make_reference_backend(const std::string& id, const ReferenceBackendContext& context);
 

@@ -26,6 +26,32 @@ RenderTarget& Renderer::target(int width, int height) {
   return *target_;
 }
 
+namespace {
+/// The GL type of an active uniform of `program` (GL_FLOAT, GL_INT, ...).
+GLint uniform_type(GLuint program, const std::string& name) {
+  const GLuint index = glGetProgramResourceIndex(program, GL_UNIFORM, name.c_str());
+  const GLenum property = GL_TYPE;
+  GLint type = 0;
+  if (index != GL_INVALID_INDEX) glGetProgramResourceiv(program, GL_UNIFORM, index, 1, &property, 1, nullptr, &type);
+  return type;
+}
+}  // namespace
+
+void set_param_uniforms(GLuint program, const ParamValues& params) {
+  for (const auto& [name, value] : params) {
+    // Every parameter is read by the module (method_program_module checked), but a variant may
+    // not use it (a glint parameter on a material without glints): then it has no location.
+    const std::string uniform = "param_" + name;
+    const GLint loc = glGetUniformLocation(program, uniform.c_str());
+    if (loc < 0) continue;
+    // An enumeration is a `uniform int`, the choice's index (shading/method_module.hpp).
+    if (uniform_type(program, uniform) == GL_INT)
+      glProgramUniform1i(program, loc, static_cast<GLint>(std::lround(value)));
+    else
+      glProgramUniform1f(program, loc, value);
+  }
+}
+
 ShaderDefines forward_variant(const std::string& module, const LightRanges& light_ranges, MaterialVariant material) {
   std::string ranges = "ivec2[](";
   for (std::size_t k = 0; k < light_ranges.size(); ++k)
@@ -59,17 +85,6 @@ std::string method_program_module(ShaderLibrary& shaders, const MethodDescriptor
   return path;
 }
 
-namespace {
-/// The GL type of an active uniform of `program` (GL_FLOAT, GL_INT, ...).
-GLint uniform_type(GLuint program, const std::string& name) {
-  const GLuint index = glGetProgramResourceIndex(program, GL_UNIFORM, name.c_str());
-  const GLenum property = GL_TYPE;
-  GLint type = 0;
-  if (index != GL_INVALID_INDEX) glGetProgramResourceiv(program, GL_UNIFORM, index, 1, &property, 1, nullptr, &type);
-  return type;
-}
-}  // namespace
-
 GLuint Renderer::forward_program(const std::string& module, int material) {
   const MaterialVariant variant = material_variant(scene_, material);
   GLuint& program = forward_programs_[{module, variant}];
@@ -98,18 +113,7 @@ void Renderer::draw_scene(const std::string& module, const ParamValues& params, 
     if (variant != program) {
       program = variant;
       glUseProgram(program);
-      for (const auto& [name, value] : params) {
-        // Every parameter is read by the module (method_program_module checked), but a variant
-        // may not use it (a glint parameter on a material without glints): then it has no location.
-        const std::string uniform = "param_" + name;
-        const GLint loc = glGetUniformLocation(program, uniform.c_str());
-        if (loc < 0) continue;
-        // An enumeration is a `uniform int`, the choice's index (shading/method_module.hpp).
-        if (uniform_type(program, uniform) == GL_INT)
-          glProgramUniform1i(program, loc, static_cast<GLint>(std::lround(value)));
-        else
-          glProgramUniform1f(program, loc, value);
-      }
+      set_param_uniforms(program, params);
     }
     const glm::mat3 normal_matrix = glm::inverseTranspose(glm::mat3(mesh.transform));
     glProgramUniformMatrix4fv(program, glGetUniformLocation(program, "uModel"), 1, GL_FALSE, &mesh.transform[0][0]);

@@ -61,6 +61,9 @@ ShaderDefines forward_variant(const std::string& module, const LightRanges& ligh
 /// RuntimeFailure naming the method, the parameter and the module's file.
 /// `params` choose the module's compile-time parameters (their defaults where absent).
 std::string method_program_module(ShaderLibrary& shaders, const MethodDescriptor& method, const ParamValues& params = {});
+/// Sets a method's run-time parameters (the uniforms param_<name>) in `program`, which a module of
+/// method_program_module() was compiled into; the parameters it does not read are skipped.
+void set_param_uniforms(GLuint program, const ParamValues& params);
 
 class Renderer {
  public:

@@ -228,18 +228,22 @@ std::string material_params_glsl() {
   return out;
 }
 
-/// A kind's module in the forward pass's $MATERIAL slot: its file, then the material interface
-/// forwarded to its functions.
-std::string material_kind_glsl(const MaterialKind& k) {
+/// A module in the forward pass's $MATERIAL slot: `file`, then the material interface forwarded to
+/// its functions, named <prefix>Material<Function>.
+std::string material_interface_glsl(const std::string& title, const std::string& file, const std::string& prefix) {
   std::string out = kHeader;
-  out += "// Material kind '" + k.id + "' (src/scene/materials/) behind the material interface.\n";
-  out += "#include \"" + k.glsl_file() + "\"\n\n";
+  out += "// " + title + " behind the material interface.\n";
+  out += "#include \"" + file + "\"\n\n";
   for (const MaterialFunction& f : material_interface()) {
-    const std::string call = k.glsl_prefix() + "Material" + f.name + "(" + f.arguments + ")";
+    const std::string call = prefix + "Material" + f.name + "(" + f.arguments + ")";
     out += f.returns + " material" + f.name + "(" + f.parameters + ") { " + (f.returns == "void" ? "" : "return ") +
            call + "; }\n";
   }
   return out;
+}
+
+std::string material_kind_glsl(const MaterialKind& k) {
+  return material_interface_glsl("Material kind '" + k.id + "' (src/scene/materials/)", k.glsl_file(), k.glsl_prefix());
 }
 
 /// The std140 records of src/core/gpu_contract.hpp as GLSL structs, from the same field lists.
@@ -342,6 +346,9 @@ std::vector<std::pair<std::string, std::string>> generated_shader_sources() {
       {"generated/shade_all_lights.glsl", shade_all_lights_glsl()},
       {"generated/material_params.glsl", material_params_glsl()}};
   for (const MaterialKind& k : all_material_kinds()) sources.emplace_back(material_kind_module(k), material_kind_glsl(k));
+  sources.emplace_back(kFootprintNdfMaterialModule,
+                       material_interface_glsl("normal-map-glints as a method's footprint NDF (path:<method>)",
+                                               "materials/normal-map-glints-footprint.glsl", "normalMapGlintsFootprint"));
   return sources;
 }
 

@@ -38,5 +38,9 @@ struct MaterialKind;
 /// The generated module of a material kind for the forward pass's $MATERIAL slot: the kind's
 /// shaders/materials/<id>.glsl behind the material interface (materialSpecularCos, ...).
 std::string material_kind_module(const MaterialKind& kind);
+/// The $MATERIAL module of normal-map-glints materials in the path tracer's backends `path:<method>`:
+/// the method's footprint NDF in the $METHOD slot behind the material interface
+/// (shaders/materials/normal-map-glints-footprint.glsl).
+inline constexpr const char* kFootprintNdfMaterialModule = "generated/materials/normal-map-glints-footprint.glsl";
 
 }  // namespace glintlab

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <thread>
 
-#include "eval/method_list.hpp"
+#include "shading/method_list.hpp"
 #include "scene/lights/light_kind.hpp"
 #include "scene/materials/material_kind.hpp"
 #include "shading/registry.hpp"

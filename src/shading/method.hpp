@@ -65,6 +65,10 @@ struct MethodDescriptor {
   /// MATERIAL_KIND_<ID>`: deliot2023's binomial-glints); every other kind it shades through the
   /// material interface (its smooth lobe, as conventional). Empty: it treats every kind alike.
   std::vector<std::string> material_kinds = {};
+  /// Whether its module gives a normal-map-glints material's footprint NDF to the path tracer
+  /// (compiled with METHOD_AS_FOOTPRINT_NDF: shaders/materials/normal-map-glints-footprint.glsl),
+  /// which then renders the method's appearance offline: the reference backend `path:<id>`.
+  bool path_footprint_ndf = false;
 
   [[nodiscard]] std::string module_path() const { return "methods/" + id + ".glsl"; }
   [[nodiscard]] const ParamDecl* find_param(const std::string& name) const;

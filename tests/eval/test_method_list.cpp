@@ -1,4 +1,4 @@
-// --methods with configured variants (eval/method_list.hpp): names, file names, parameter
+// --methods with configured variants (shading/method_list.hpp): names, file names, parameter
 // precedence, and every class of bad entry with a message naming it.
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <set>
 
 #include "core/error.hpp"
-#include "eval/method_list.hpp"
+#include "shading/method_list.hpp"
 #include "shading/registry.hpp"
 
 using namespace glintlab;

@@ -110,12 +110,43 @@ TEST(SphericalGaussianFit, TheErrorFallsAsLobesAreAdded) {
       for (int x = 0; x < studio.radiance.width(); ++x)
         map_power += glm::dvec3(studio.radiance.at(x, y)) * environment_row_solid_angle(y, studio.radiance.height());
     std::printf("studio, %d lobes: relative error %.3f, lambda %.1f, power %.3f of the map's\n", k, fit.relative_error,
-                fit.lobes[0].sharpness, power.y / map_power.y);
+                fit.lobes.back().sharpness, power.y / map_power.y);
     EXPECT_LT(fit.relative_error, previous) << k << " lobes";
     EXPECT_NEAR(power.y / map_power.y, 1.0, 1e-4) << k << " lobes: the fit keeps the map's power";
     EXPECT_LT(fit.relative_error, 1.0);
     previous = fit.relative_error;
   }
+}
+
+TEST(SphericalGaussianFit, ASunIsALobeOfItsOwnAndTheSkyKeepsItsLight) {
+  // A uniform sky of radiance 1 and a sun of half a degree holding 20 times the sky's power: the
+  // sun's lobe takes the sun's power at the sun's direction, and the other lobes the sky's, which
+  // they give back in every direction (the sharp map's L2 fit alone put the power the sun's
+  // lobes overshoot by into them and took it from the sky: near 0 far from the sun).
+  const glm::dvec3 sun = glm::normalize(glm::dvec3(0.4, 0.6, -0.7));
+  const double sun_cos = std::cos(0.5 * kPi / 180.0), sun_solid_angle = 2.0 * kPi * (1.0 - sun_cos);
+  const double sun_radiance = 20.0 * 4.0 * kPi / sun_solid_angle;
+  const int height = 512;
+  EnvironmentMap map = map_of(height, [](const glm::dvec3&) { return glm::dvec3(1.0); });
+  double sun_power = 0.0;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < 2 * height; ++x)
+      if (glm::dot(environment_direction_precise((x + 0.5) / (2 * height), (y + 0.5) / height), sun) > sun_cos) {
+        map.radiance.at(x, y) = glm::vec3(static_cast<float>(sun_radiance));
+        sun_power += (sun_radiance - 1.0) * environment_row_solid_angle(y, height);
+      }
+  const SphericalGaussianFit fit = fit_spherical_gaussians(map, 32, 64);
+  ASSERT_EQ(fit.peaks, 1);
+  const SphericalGaussian& peak = fit.lobes.front();
+  std::printf("a sun: its lobe %.4f of its power, %.3f degrees off, sharpness %.0f; the sky's lobes give %.3f .. %.3f, "
+              "relative error %.3f\n",
+              peak.integral().x / (sun_power + sun_solid_angle), std::acos(std::min(glm::dot(peak.axis, sun), 1.0)) * 180 / kPi,
+              peak.sharpness, fit.without_peaks().radiance(-sun).x, fit.without_peaks().radiance(glm::dvec3(0, -1, 0)).x,
+              fit.relative_error);
+  EXPECT_NEAR(peak.integral().x / (sun_power + sun_solid_angle), 1.0, 0.02);  // the sun's texels, sky and all
+  EXPECT_GT(glm::dot(peak.axis, sun), std::cos(0.2 * kPi / 180.0));
+  for (const glm::dvec3& d : {-sun, glm::dvec3(0, 1, 0), glm::dvec3(0, -1, 0), glm::dvec3(1, 0, 0)})
+    EXPECT_NEAR(fit.without_peaks().radiance(d).x, 1.0, 0.1) << d.x << ", " << d.y << ", " << d.z;
 }
 
 TEST(SphericalGaussianFit, RefusesCountsAndGridsOutOfRange) {

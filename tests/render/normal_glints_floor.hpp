@@ -9,18 +9,20 @@ namespace glintlab::test {
 /// The methods' default footprint_sigma, and the reference's Gaussian pixel filter.
 inline constexpr float kNormalGlintsFootprint = 0.5f;
 
+/// The floor's material: `tiling` repeats of the map over a plane's uv.
+inline TomlKeys normal_glints_steel(double tiling) {
+  return {{"type", "normal-map-glints"},
+          {"intrinsic_roughness", 0.02},
+          {"f0", 0.9},
+          {"normal_map", TomlKeys{{"generator", "bumps"}, {"resolution", 64}, {"alpha", 0.25},
+                                  {"waves", 48}, {"max_frequency", 8}, {"seed", 3}}},
+          {"normal_map_tiling", tiling}};
+}
+
 /// The floor alone, without lights.
 inline TestScene normal_glints_floor_unlit(double tiling, int width = 48, int height = 32) {
   TestScene s;
-  s.film(width, height)
-      .camera({0, 0.6, 1.6}, {0, 0, -0.8}, 40)
-      .material("steel", {{"type", "normal-map-glints"},
-                          {"intrinsic_roughness", 0.02},
-                          {"f0", 0.9},
-                          {"normal_map", TomlKeys{{"generator", "bumps"}, {"resolution", 64}, {"alpha", 0.25},
-                                                  {"waves", 48}, {"max_frequency", 8}, {"seed", 3}}},
-                          {"normal_map_tiling", tiling}})
-      .plane("steel", {{"size", 4}});
+  s.film(width, height).camera({0, 0.6, 1.6}, {0, 0, -0.8}, 40).material("steel", normal_glints_steel(tiling)).plane("steel", {{"size", 4}});
   return s;
 }
 

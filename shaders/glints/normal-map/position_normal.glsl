@@ -223,12 +223,19 @@ float gaussianBoxMean(vec2 mean, mat2 cov, vec2 lo, vec2 hi) {
 // by the lights). Applied on every driver, so that images agree. Needs the forward pass's
 // LIGHT_RANGES (a method module's context; absent in the tests' compute harness).
 #ifdef LIGHT_RANGES
-// `extraQueries`: sums beyond one per light (an environment's lobes past the first).
+// `extraQueries`: sums beyond one per light (an environment's lobes past the first). With
+// POSITION_NORMAL_BUDGET_PER_QUERY (the path tracer's footprint material) `budget` is each sum's
+// and only llvmpipe's iterations are shared.
 float positionNormalElementBudget(float budget, int extraQueries) {
   const ivec2 ranges[LIGHT_KIND_COUNT] = LIGHT_RANGES;
   int lights = 0;
   for (int i = 0; i < LIGHT_KIND_COUNT; ++i) lights += ranges[i].y - ranges[i].x;
-  return floor(min(budget, 60000.0) / float(max(lights + extraQueries, 1)));
+  const float queries = float(max(lights + extraQueries, 1));
+#ifdef POSITION_NORMAL_BUDGET_PER_QUERY
+  return floor(min(budget, 60000.0 / queries));
+#else
+  return floor(min(budget, 60000.0) / queries);
+#endif
 }
 float positionNormalElementBudget(float budget) { return positionNormalElementBudget(budget, 0); }
 #endif

@@ -40,12 +40,13 @@ MethodDescriptor deng2022_method() {
                   "isotropic pyramid queries along an anisotropic footprint's major axis, at most (1: one query of "
                   "the footprint's area, blurred along the minor axis and cut along the major one)",
                   {}, false, {}, false, true},
-                 environment_lobes_param()},
+                 environment_lobes_param(), environment_lobe_cones_param()},
       .tables = {"ltc-ggx"},  // other materials' lights with extent, as conventional
       // The normal-map-glints materials' pyramids of its precompute settings, and their elements
       // for the fallback (none with small_footprints = clamp).
       .resources = {"prefiltered-ndf", "position-normal-elements", "environment-lobes"},
       .material_kinds = {"normal-map-glints"},
+      .path_footprint_ndf = true,
   };
   // The precompute's settings, declared with PrefilterSettings (src/prefilter/prefilter_params.hpp).
   for (ParamDecl& p : prefilter_params()) method.params.push_back(std::move(p));

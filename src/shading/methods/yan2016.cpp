@@ -34,11 +34,12 @@ MethodDescriptor yan2016_method() {
                   "field more closely at 4x the cost",
                   {"1", "2"},
                   /*compile_time=*/true},
-                 environment_lobes_param()},
+                 environment_lobes_param(), environment_lobe_cones_param()},
       .tables = {"ltc-ggx"},  // other materials' lights with extent, as conventional
       // The normal-map-glints materials' elements (k per texel) and the environment's lobes.
       .resources = {"position-normal-elements", "environment-lobes"},
       .material_kinds = {"normal-map-glints"},
+      .path_footprint_ndf = true,
   };
 }
 

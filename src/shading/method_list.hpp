@@ -1,5 +1,6 @@
 #pragma once
-// --methods: registered methods and configured variants of them, one parser for every command.
+// --methods: registered methods and configured variants of them, one parser for every command (and
+// for the path tracer's backends `path:<method>`, src/render/reference_backend.hpp).
 //   conventional,podee,podee{area=lens},podee{area=lens,glossy=off}
 // A variant is a method with some of its parameters set; it is rendered, measured and written as a
 // method of its own, so variants of one method share one run (one reference). Its names:

@@ -1,4 +1,4 @@
-#include "eval/method_list.hpp"
+#include "shading/method_list.hpp"
 
 #include <algorithm>
 #include <cctype>

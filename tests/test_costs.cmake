@@ -8,6 +8,8 @@ set(glintlab_test_costs
   "^Images/EveryMethodOnBuiltinScene\\.IsFinite/every_family( |$)" 60
   "^Images/EveryMethodOnBuiltinScene\\.IsFinite/glint_area_lights(_glinty)?( |$)" 40
   "^Images/EveryMethodOnBuiltinScene\\.IsFinite/gltf_showcase( |$)" 30
+  "^PathMethods\\.AnEnvironmentByLobesIsTheSampledIntegralWithLessNoise$" 50
+  "^PathMethods\\.SamplingTheFootprintNdfIntegratesWhatTheMethodEvaluates$" 30
   "^DriverProfiles\\." 30
   "^Chermain\\.GeometricGlintAntiAliasing" 25
   "^Kneiphof\\.FiniteForRandomLightsAcrossTheHorizon" 25

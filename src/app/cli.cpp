@@ -9,6 +9,7 @@
 #include "core/file_access.hpp"
 #include "core/pixel_filter_width.hpp"
 #include "eval/commands.hpp"
+#include "eval/convergence.hpp"
 #include "eval/outputs.hpp"
 #include "eval/environment_fit_report.hpp"
 #include "eval/prefilter_report.hpp"
@@ -244,6 +245,21 @@ int run_cli(int argc, char** argv) {
   bench->add_flag("--floor-breakdown", floor_breakdown,
                   "also time the unshaded floor into two RGBA16F targets, one RGBA32F target and depth only");
 
+  CommonOptions converge_o;
+  ConvergeOptions converge_options;
+  auto* converge = app.add_subcommand(
+      "converge", "how fast backends approach a truth: each at rising samples per pixel, RMSE against the truth "
+                  "(--reference-backend at --spp) against samples and seconds; table, convergence.json/.csv/.svg");
+  add_common(converge, converge_o, false);
+  converge->add_option("--backends", converge_options.backends,
+                       "the backends timed, separated by commas: ids 'glintlab info' lists, or path:<method>{...}")
+      ->required();
+  converge->add_option("--steps", converge_options.steps, "samples per pixel of each point, rising")
+      ->delimiter(',')
+      ->default_str("1,4,16,64");
+  converge->add_option("--frame", converge_options.frame, "frame of the camera path")->default_str("0");
+  converge->add_option("-o,--out", converge_o.out, "output directory (default out/converge/SCENE)");
+
   CommonOptions view_o;
   ViewOptions view_options;
   auto* view = app.add_subcommand("view", "open a window: methods switched live, split/flip against another method or the "
@@ -369,6 +385,7 @@ int run_cli(int argc, char** argv) {
     } else if (app.got_subcommand("compare")) {
       const auto methods = resolve_methods(compare_o.methods, compare_o.params);
       if (!compare_o.out.empty()) check_output_directory(compare_o.out);
+      require_ground_truth_backend(compare_o.reference_backend, "compare");
       Session session(compare_o);
       if (compare_frame < 0 || compare_frame >= session.frames())
         throw InputError("--frame " + std::to_string(compare_frame) + ": allowed: 0 .. " + std::to_string(session.frames() - 1));
@@ -376,6 +393,7 @@ int run_cli(int argc, char** argv) {
     } else if (app.got_subcommand("animate")) {
       const auto methods = resolve_methods(animate_o.methods, animate_o.params);
       if (!animate_o.out.empty()) check_output_directory(animate_o.out);
+      require_ground_truth_backend(animate_o.reference_backend, "animate");
       // Kept from frame to frame: each method's last error, and the reference halves' last difference.
       Session session(animate_o, Workload{.methods = static_cast<int>(methods.size()), .reference = true,
                                           .outputs = true, .kept_images = static_cast<int>(methods.size()) + 1});
@@ -395,6 +413,17 @@ int run_cli(int argc, char** argv) {
       return run_view(view_o, view_options);
     } else if (app.got_subcommand("program")) {
       std::cout << program_source(program_o);
+    } else if (app.got_subcommand("converge")) {
+      if (converge_options.steps.empty()) converge_options.steps = {1, 4, 16, 64};
+      converge_options.light_samples = std::max(1, converge_o.light_samples);
+      check_converge_options(converge_options);
+      if (!converge_o.out.empty()) check_output_directory(converge_o.out);
+      Session session(converge_o, Workload{.methods = 1, .reference = true, .outputs = true});
+      if (converge_options.frame < 0 || converge_options.frame >= session.frames())
+        throw InputError("--frame " + std::to_string(converge_options.frame) + ": allowed: 0 .. " +
+                         std::to_string(session.frames() - 1));
+      run_converge(session, converge_options,
+                   converge_o.out.empty() ? default_out("converge", converge_o) : converge_o.out);
     } else if (app.got_subcommand("report")) {
       run_report({report_inputs.begin(), report_inputs.end()}, report_out);
     } else if (app.got_subcommand("bench")) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <utility>
 
 namespace glintlab {
 
@@ -181,6 +182,91 @@ std::string bar_chart_svg(const std::string& title, const std::string& unit, con
     s << "<text x=\"" << num(px(m.value)) << "\" y=\"" << num(bottom + 16)
       << "\" class=\"tick\" text-anchor=\"middle\">" << xml_escaped(m.label) << " " << value_text(m.value)
       << "</text>\n";
+  }
+  s << "</svg>";
+  return s.str();
+}
+
+namespace {
+
+/// Whole decades around [lo, hi] (lo, hi > 0): 10^floor(log10 lo) .. 10^ceil(log10 hi), at least one decade.
+std::pair<double, double> decade_span(double lo, double hi) {
+  const double a = std::floor(std::log10(lo) + 1e-9), b = std::ceil(std::log10(hi) - 1e-9);
+  return {a, std::max(b, a + 1)};
+}
+
+bool plottable(const PlotPoint& p) { return std::isfinite(p.x) && std::isfinite(p.y) && p.x > 0 && p.y > 0; }
+
+}  // namespace
+
+std::string log_log_plot_svg(const std::string& title, const std::string& x_label, const std::string& y_label,
+                             const std::vector<PointSeries>& series, const std::vector<PlotMark>& marks) {
+  const double left = 64, top = 34, plot_w = 520, plot_h = 300, legend_x = left + plot_w + 24;
+  const double width = legend_x + 260, height = top + plot_h + 46;
+  double x_lo = INFINITY, x_hi = 0, y_lo = INFINITY, y_hi = 0;
+  for (const auto& p : series)
+    for (const PlotPoint& q : p.points)
+      if (plottable(q)) x_lo = std::min(x_lo, q.x), x_hi = std::max(x_hi, q.x), y_lo = std::min(y_lo, q.y), y_hi = std::max(y_hi, q.y);
+  for (const auto& m : marks)
+    if (m.value > 0 && std::isfinite(m.value)) y_lo = std::min(y_lo, m.value), y_hi = std::max(y_hi, m.value);
+  if (!(x_hi > 0)) x_lo = 1, x_hi = 10;
+  if (!(y_hi > 0)) y_lo = 1, y_hi = 10;
+  const auto [x0, x1] = decade_span(x_lo, x_hi);
+  const auto [y0, y1] = decade_span(y_lo, y_hi);
+  auto px = [&](double x) { return left + plot_w * (std::log10(x) - x0) / (x1 - x0); };
+  auto py = [&](double y) { return top + plot_h * (1.0 - (std::log10(y) - y0) / (y1 - y0)); };
+  const std::string text_style = " font-family=\"sans-serif\" font-size=\"12\"";
+
+  std::ostringstream s;
+  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"plot\" viewBox=\"0 0 " << num(width) << " " << num(height)
+    << "\" role=\"img\" aria-label=\"" << xml_escaped(title) << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"#fff\"/>"
+    << "<text x=\"" << num(left) << "\" y=\"20\" class=\"title\" font-family=\"sans-serif\" font-size=\"14\">"
+    << xml_escaped(title) << "</text>\n";
+  for (double d = y0; d <= y1 + 1e-9; d += 1)
+    s << "<line x1=\"" << num(left) << "\" x2=\"" << num(left + plot_w) << "\" y1=\"" << num(py(std::pow(10.0, d)))
+      << "\" y2=\"" << num(py(std::pow(10.0, d))) << "\" class=\"grid\" stroke=\"#e6e8ec\"/><text x=\"" << num(left - 6)
+      << "\" y=\"" << num(py(std::pow(10.0, d)) + 4) << "\" class=\"tick\" text-anchor=\"end\"" << text_style << ">"
+      << value_text(std::pow(10.0, d)) << "</text>\n";
+  for (double d = x0; d <= x1 + 1e-9; d += 1)
+    s << "<line x1=\"" << num(px(std::pow(10.0, d))) << "\" x2=\"" << num(px(std::pow(10.0, d))) << "\" y1=\"" << num(top)
+      << "\" y2=\"" << num(top + plot_h) << "\" class=\"grid\" stroke=\"#e6e8ec\"/><text x=\"" << num(px(std::pow(10.0, d)))
+      << "\" y=\"" << num(top + plot_h + 16) << "\" class=\"tick\" text-anchor=\"middle\"" << text_style << ">"
+      << value_text(std::pow(10.0, d)) << "</text>\n";
+  s << "<text x=\"" << num(left + plot_w / 2) << "\" y=\"" << num(top + plot_h + 36) << "\" class=\"axis\" text-anchor=\"middle\""
+    << text_style << ">" << xml_escaped(x_label) << "</text>\n<text x=\"14\" y=\"" << num(top + plot_h / 2)
+    << "\" class=\"axis\" text-anchor=\"middle\" transform=\"rotate(-90 14 " << num(top + plot_h / 2) << ")\"" << text_style
+    << ">" << xml_escaped(y_label) << "</text>\n";
+  for (const auto& m : marks)
+    if (m.value > 0 && std::isfinite(m.value)) dashed_mark(s, left, py(m.value), left + plot_w, py(m.value), m.label, m.value);
+
+  double legend_y = top + 4;
+  for (std::size_t i = 0; i < series.size(); ++i) {
+    const std::string colour = series_colour(i);
+    s << "<g class=\"series\"><title>" << xml_escaped(series[i].name) << "</title><polyline fill=\"none\" stroke=\""
+      << colour << "\" stroke-width=\"2\" points=\"";
+    bool first = true;
+    for (const PlotPoint& q : series[i].points) {
+      if (!plottable(q)) continue;
+      s << (first ? "" : " ") << num(px(q.x)) << "," << num(py(q.y));
+      first = false;
+    }
+    s << "\"/>";
+    for (const PlotPoint& q : series[i].points)
+      if (plottable(q))
+        s << "<circle cx=\"" << num(px(q.x)) << "\" cy=\"" << num(py(q.y)) << "\" r=\"3\" fill=\"" << colour << "\"><title>"
+          << xml_escaped(series[i].name) << (q.note.empty() ? "" : ", ") << xml_escaped(q.note) << ": "
+          << value_text(q.x) << ", " << value_text(q.y) << "</title></circle>";
+    s << "</g>\n<rect x=\"" << num(legend_x) << "\" y=\"" << num(legend_y - 9) << "\" width=\"14\" height=\"4\" fill=\""
+      << colour << "\"/><text x=\"" << num(legend_x + 20) << "\" y=\"" << num(legend_y - 4) << "\" class=\"legend\""
+      << text_style << ">" << xml_escaped(series[i].name) << "</text>\n";
+    legend_y += 18;
+  }
+  for (const auto& m : marks) {
+    s << "<line x1=\"" << num(legend_x) << "\" x2=\"" << num(legend_x + 14) << "\" y1=\"" << num(legend_y - 7)
+      << "\" y2=\"" << num(legend_y - 7) << "\" stroke=\"#444\" stroke-dasharray=\"4 2\"/><text x=\""
+      << num(legend_x + 20) << "\" y=\"" << num(legend_y - 4) << "\" class=\"legend\"" << text_style << ">"
+      << xml_escaped(m.label) << "</text>\n";
+    legend_y += 18;
   }
   s << "</svg>";
   return s.str();

@@ -30,6 +30,23 @@ struct PlotMark {
 std::string line_plot_svg(const std::string& title, const std::string& y_label, const std::vector<PlotSeries>& series,
                           const std::vector<PlotMark>& marks);
 
+/// A point of a curve on two measured axes, e.g. (seconds, error).
+struct PlotPoint {
+  double x = 0, y = 0;
+  std::string note;  ///< shown on hover, e.g. "64 spp"
+};
+struct PointSeries {
+  std::string name;
+  std::vector<PlotPoint> points;
+};
+
+/// x and y on log10 axes spanning the positive points and marks, decades ticked: convergence
+/// curves (error against samples or seconds), whose slopes are their rates. One polyline with
+/// dots per series in series_colour order (points not both positive and finite left out), a
+/// legend, each mark a dashed horizontal line. Styled inline, so it reads alone as a file too.
+std::string log_log_plot_svg(const std::string& title, const std::string& x_label, const std::string& y_label,
+                             const std::vector<PointSeries>& series, const std::vector<PlotMark>& marks);
+
 struct PlotBar {
   std::string label;
   double value = 0;

@@ -64,6 +64,8 @@ class Session {
   GpuScene& gpu_scene() { return *gpu_scene_; }
   ReferenceBackend& reference_backend() { return *reference_backend_; }
   GlContext& context() { return *context_; }
+  /// What another backend than the session's own is made from (`converge` times several).
+  ReferenceBackendContext backend_context() { return {shaders_, *gpu_scene_, *renderer_}; }
 
   /// Renders a method's frame; throws RuntimeFailure if it holds NaN or Inf.
   Frame render(const MethodChoice& choice, int frame);

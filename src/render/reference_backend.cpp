@@ -148,7 +148,8 @@ ReferenceBackendEntry path_method_backend(const std::string& id) {
   MethodChoice choice{v.method, resolve_params(*v.method, settings, origin), v.name, v.file_name};
   return {kPathMethodPrefix + v.name,
           "path, with normal-map-glints materials as " + v.method->id + "'s footprint NDF",
-          [choice](const ReferenceBackendContext& c) { return std::make_unique<PathReference>(c, choice); }};
+          [choice](const ReferenceBackendContext& c) { return std::make_unique<PathReference>(c, choice); },
+          /*ground_truth=*/false};
 }
 
 }  // namespace
@@ -161,6 +162,15 @@ ReferenceBackendEntry find_reference_backend(const std::string& id) {
     known += (known.empty() ? "" : ", ") + e.id;
   }
   throw InputError("--reference-backend " + id + ": unknown backend; allowed: " + known + ", " + path_method_backends());
+}
+
+void require_ground_truth_backend(const std::string& id, const std::string& command) {
+  if (find_reference_backend(id).ground_truth) return;
+  std::string truths;
+  for (const auto& e : reference_backends()) truths += (truths.empty() ? "" : ", ") + e.id;
+  throw InputError("--reference-backend " + id + ": renders a method's approximation, which cannot be the ground truth " +
+                   command + " judges methods by; allowed: " + truths +
+                   " (render --reference and converge take " + id + ")");
 }
 
 std::unique_ptr<ReferenceBackend> make_reference_backend(const std::string& id, const ReferenceBackendContext& context) {

@@ -111,6 +111,9 @@ struct ReferenceBackendEntry {
   std::string id;
   std::string description;
   std::function<std::unique_ptr<ReferenceBackend>(const ReferenceBackendContext&)> create;
+  /// Whether it evaluates the surface itself (every registered backend), so that it may judge
+  /// methods; a backend made from a method renders that method's approximation and may not.
+  bool ground_truth = true;
 };
 const std::vector<ReferenceBackendEntry>& reference_backends();
 /// Backends made from a method: "path:<method>" or "path:<method>{name=value,...}" is the path
@@ -121,6 +124,9 @@ inline constexpr const char* kPathMethodPrefix = "path:";
 /// The entry of backend `id` (registered, or made from a method); throws InputError naming the id
 /// and what is allowed.
 ReferenceBackendEntry find_reference_backend(const std::string& id);
+/// Throws InputError unless backend `id` is a ground truth: `command` (compare, animate, view)
+/// judges methods against it, and a method's own approximation cannot judge one.
+void require_ground_truth_backend(const std::string& id, const std::string& command);
 /// find_reference_backend(id).create(context).
 std::unique_ptr<ReferenceBackend> make_reference_backend(const std::string& id, const ReferenceBackendContext& context);
 

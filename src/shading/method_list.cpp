@@ -19,25 +19,6 @@ const char* const kAllowedEntries =
   throw InputError("--methods '" + list + "': " + what);
 }
 
-/// The entries of `list`: split at the commas outside braces, the braces checked on the way.
-std::vector<std::string> split_entries(const std::string& list) {
-  std::vector<std::string> entries(1);
-  bool inside = false;
-  for (const char c : list) {
-    std::string& entry = entries.back();
-    if (c == ',' && !inside) {
-      entries.emplace_back();
-      continue;
-    }
-    entry += c;
-    if (c == '{' && inside) fail(list, "braces inside braces in '" + entry + "'; allowed: id{name=value,...}");
-    if (c == '}' && !inside) fail(list, "a '}' without its '{' in '" + entry + "'; allowed: id{name=value,...}");
-    if (c == '{' || c == '}') inside = c == '{';
-  }
-  if (inside) fail(list, "a '{' without its '}' in '" + entries.back() + "'; allowed: id{name=value,...}");
-  return entries;
-}
-
 /// A value goes into file names: letters, digits and what numbers and choice names are made of.
 bool file_safe(const std::string& value) {
   return std::all_of(value.begin(), value.end(),
@@ -97,6 +78,25 @@ MethodVariant parse_variant(const std::string& list, const std::string& entry) {
 
 }  // namespace
 
+std::vector<std::string> split_outside_braces(const std::string& list, const std::string& flag) {
+  auto fail_at = [&](const std::string& what) { throw InputError(flag + " '" + list + "': " + what); };
+  std::vector<std::string> entries(1);
+  bool inside = false;
+  for (const char c : list) {
+    std::string& entry = entries.back();
+    if (c == ',' && !inside) {
+      entries.emplace_back();
+      continue;
+    }
+    entry += c;
+    if (c == '{' && inside) fail_at("braces inside braces in '" + entry + "'; allowed: id{name=value,...}");
+    if (c == '}' && !inside) fail_at("a '}' without its '{' in '" + entry + "'; allowed: id{name=value,...}");
+    if (c == '{' || c == '}') inside = c == '{';
+  }
+  if (inside) fail_at("a '{' without its '}' in '" + entries.back() + "'; allowed: id{name=value,...}");
+  return entries;
+}
+
 std::vector<MethodVariant> parse_method_variants(const std::string& list) {
   std::vector<MethodVariant> variants;
   std::map<std::string, bool> names;  // name -> listed by 'all'
@@ -107,7 +107,7 @@ std::vector<MethodVariant> parse_method_variants(const std::string& list) {
                      "; allowed: each name once");
     variants.push_back(std::move(v));
   };
-  for (const std::string& entry : split_entries(list)) {
+  for (const std::string& entry : split_outside_braces(list, "--methods")) {
     if (entry.empty()) fail(list, std::string("an empty entry; allowed: ") + kAllowedEntries);
     if (entry == "all") {
       for (const auto& m : all_methods()) add({&m, {}, m.id, m.id}, true);

@@ -25,6 +25,10 @@ struct MethodVariant {
   std::string file_name;                                      ///< file-name-safe form
 };
 
+/// The entries of a list such as --methods: split at the commas outside braces, so that a variant's
+/// settings stay with it. Throws InputError naming `flag` and `list` for nested or unbalanced braces.
+std::vector<std::string> split_outside_braces(const std::string& list, const std::string& flag);
+
 /// Splits --methods into methods and variants, in order; "all" (alone or as an entry) is every
 /// registered method. Throws InputError naming the entry for an empty entry, unbalanced or nested
 /// braces, text after '}', an unknown method, an empty or malformed setting, a parameter the

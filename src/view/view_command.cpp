@@ -23,6 +23,7 @@ int run_view(const CommonOptions& options, const ViewOptions& view) {
     throw InputError("--mode " + view.mode + ": allowed: single, split, flip");
   const std::vector<ScriptCommand> script = view.script.empty() ? std::vector<ScriptCommand>{} : read_view_script(view.script);
 
+  require_ground_truth_backend(options.reference_backend, "view");
   ViewWindow window(view.window_width, view.window_height, "glintlab view");
   // The renderer draws in the window's context: one renderer, one code path.
   Session session(options, Workload{.methods = 2, .reference = true},

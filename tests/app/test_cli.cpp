@@ -71,6 +71,9 @@ TEST_F(Cli, BadInputClassesExitWith2AndWriteNothing) {
   expect_bad_input("animate --frames -3", {"--frames", "-3"});
   expect_bad_input("animate --frames 100001", {"--frames", "100001", "1 to 100000"});
   expect_bad_input("render --reference-backend nope", {"nope", "raster"});
+  expect_bad_input("compare --spp 4 --reference-backend path:deng2022", {"path:deng2022", "ground truth", "allowed: raster"});
+  expect_bad_input("converge --backends raster --steps 4,1", {"--steps", "rising"});
+  expect_bad_input("converge --backends 'raster,path:lean'", {"path:lean", "path:deng2022"});
   expect_bad_input("compare --spp 4 --methods 'conventional,podee{area=square}'",
                    {"'podee{area=square}'", "area=square", "exact|circle|lens"});
   for (const char* filter : {"gaussian:0", "gaussian:abc", "tent"})

@@ -395,7 +395,7 @@ vec4 evaluate(vec4 a, vec4 b) {
     double expected_outside = kSamples, wrong_outside = kSamples;
     Footprint wide = footprint;
     wide.covariance *= 4.0;
-    for (int c = 0; c < grid.pixel_count(); ++c) {
+    for (std::size_t c = 0; c < grid.pixel_count(); ++c) {
       const glm::dvec2 lo(qa[c].x, qa[c].y), hi(qa[c].z, qa[c].w);
       const double mean = subset ? device_means[c].x : cpu.range_mean(footprint, lo, hi);
       expected[c] = mean * grid.pixel_area() * kSamples;
@@ -407,7 +407,9 @@ vec4 evaluate(vec4 a, vec4 b) {
     wrong.back() = std::max(wrong_outside, 0.0);
     for (const glm::vec4& x : out) {
       ASSERT_GT(x.z, 0.0f) << "a sample";
-      if (!subset) ASSERT_NEAR(x.z, cpu.density(footprint, glm::dvec2(x.x, x.y)), 1e-4 * x.z + 1e-3) << "the CPU's density";
+      if (!subset) {
+        ASSERT_NEAR(x.z, cpu.density(footprint, glm::dvec2(x.x, x.y)), 1e-4 * x.z + 1e-3) << "the CPU's density";
+      }
       const glm::dvec2 g = grid.to_pixels(glm::dvec2(x.x, x.y));
       const int i = static_cast<int>(std::floor(g.x)), j = static_cast<int>(std::floor(g.y));
       const bool inside = i >= 0 && j >= 0 && i < grid.resolution && j < grid.resolution;

@@ -125,7 +125,9 @@ TEST(Deng2022, AnEnvironmentByItsLobes) {
     // ...and far, where a pixel's footprint holds many glints, the image is nearer the truth (0.072
     // against 0.115; near, 0.178 against 0.174: the footprint's NDF is a few sharp glints there,
     // and a lobe's cones spread each one's light evenly over a ring).
-    if (tiling > 4.0) EXPECT_LT(lobes_err, 0.85 * smooth_err);
+    if (tiling > 4.0) {
+      EXPECT_LT(lobes_err, 0.85 * smooth_err);
+    }
   }
 }
 

@@ -133,6 +133,17 @@ TEST(PathMethods, OnlyMethodsWithAFootprintNdf) {
     }
   }
   EXPECT_EQ(find_reference_backend("path:deng2022{environment_lobes=0}").id, "path:deng2022{environment_lobes=0}");
+  // A method's approximation judges no method; the registered backends may.
+  EXPECT_FALSE(find_reference_backend("path:deng2022").ground_truth);
+  EXPECT_NO_THROW(require_ground_truth_backend("path", "compare"));
+  try {
+    require_ground_truth_backend("path:yan2016", "compare");
+    ADD_FAILURE() << "path:yan2016 accepted as compare's ground truth";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    for (const char* part : {"--reference-backend path:yan2016", "compare", "allowed: raster"})
+      EXPECT_NE(message.find(part), std::string::npos) << message;
+  }
 }
 
 }  // namespace

@@ -10,6 +10,7 @@ set(glintlab_test_costs
   "^Images/EveryMethodOnBuiltinScene\\.IsFinite/gltf_showcase( |$)" 30
   "^PathMethods\\.AnEnvironmentByLobesIsTheSampledIntegralWithLessNoise$" 50
   "^PathMethods\\.SamplingTheFootprintNdfIntegratesWhatTheMethodEvaluates$" 30
+  "^PathMethods\\.GlintyInterreflectionAgreesWithTheBruteForceFootprints$" 40
   "^DriverProfiles\\." 30
   "^Chermain\\.GeometricGlintAntiAliasing" 25
   "^Kneiphof\\.FiniteForRandomLightsAcrossTheHorizon" 25
@@ -36,7 +37,9 @@ set(glintlab_test_locks
   "^(Images/EveryMethodOnBuiltinScene\\.IsFinite/gltf_showcase|GltfMaterials\\.(TexturedMaterialEqualsTheMaterialOfItsTexels|EmissionAddsToTheTotal).*|SpotLight\\..*)( |$)" programs_showcase
   # a quad, a disk and a sphere light, a plain binomial-glints material (QuadLight's dark disk
   # and sphere light in tests/glsl/test_sampling.cpp).
-  "^(Images/EveryMethodOnBuiltinScene\\.IsFinite/glint_area_lights(_glinty)?|QuadLight\\.EveryMethodRendersItFinite)( |$)" programs_area_lights)
+  "^(Images/EveryMethodOnBuiltinScene\\.IsFinite/glint_area_lights(_glinty)?|QuadLight\\.EveryMethodRendersItFinite)( |$)" programs_area_lights
+  # path:deng2022's programs of the steel floor under a sphere light (tests/render/test_path_methods.cpp).
+  "^PathMethods\\.(SamplingTheFootprintNdfIntegratesWhatTheMethodEvaluates|GlintyInterreflectionAgreesWithTheBruteForceFootprints)$" programs_path_steel)
 
 get_cmake_property(glintlab_variables VARIABLES)
 foreach(list IN LISTS glintlab_variables)

@@ -42,9 +42,11 @@ struct PathShadowRay {
 layout(std430, binding = PATH_HITS_BINDING) readonly buffer PathHits { PathHit hits[]; };
 layout(std430, binding = PATH_SHADOW_RAYS_BINDING) writeonly buffer PathShadowRays { PathShadowRay shadowRays[]; };
 layout(std430, binding = PATH_EMISSION_BINDING) writeonly buffer PathEmission { vec4 emission[]; };
-// Where the path goes on: dir_lobe.xyz (world space; w 0: it ends), and the bounce's weights f cos / pdf
-// of the diffuse and the specular lobe (diffuse.rgb, specular.rgb). Off a mirror, the reflected
-// ray's direction differentials (dDdx.w = 1; Igehy 1999): its origin's are the hit's dP.
+// Where the path goes on: dir_lobe.xyz (world space; w 0: it ends, 1 the diffuse lobe, 2 the
+// specular one), and the bounce's weights f cos / pdf of the diffuse and the specular lobe
+// (diffuse.rgb, specular.rgb). Off a mirror, the reflected ray's direction differentials (dDdx.w =
+// 1; Igehy 1999): its origin's are the hit's dP. Off anything else, dDdy.w is the roughness of the
+// material's smooth lobe, which widens later footprints (path/ray_cone.hpp).
 struct PathBounce {
   vec4 dir_lobe;
   vec4 diffuse;
@@ -180,7 +182,7 @@ PathBounce pathBounce(Surface s, vec3 normal) {
     vec3 dNdy = (s.footprint.dNdy - N * dot(N, s.footprint.dNdy)) / length_n;
     return PathBounce(vec4(toWorld(s, wi), 2.0), vec4(0.0), vec4(fresnelSchlick(s.f0, wo.z) / (1.0 - pDiffuse), 0.0),
                       vec4(reflectionDerivative(D, N, -s.footprint.dVdx, dNdx), 1.0),
-                      vec4(reflectionDerivative(D, N, -s.footprint.dVdy, dNdy), 1.0));
+                      vec4(reflectionDerivative(D, N, -s.footprint.dVdy, dNdy), 0.0));
   }
   vec3 wi;
   if (pick < pDiffuse) {
@@ -191,8 +193,10 @@ PathBounce pathBounce(Surface s, vec3 normal) {
   if (wi.z <= 0.0) return none;
   float pdf = pDiffuse * wi.z / PI + (1.0 - pDiffuse) * materialSamplePdf(s, wo, wi);
   if (!(pdf > 0.0)) return none;
+  Lobe smoothLobe = materialSmoothLobe(s);
+  float alpha = sqrt(max(smoothLobe.A[0][0], smoothLobe.A[1][1]));
   return PathBounce(vec4(toWorld(s, wi), pick < pDiffuse ? 1.0 : 2.0), vec4(materialDiffuseCos(s, wi) / pdf, 0.0),
-                    vec4(materialLightIntegrand(s, wo, wi) / pdf, 0.0), vec4(0.0), vec4(0.0));
+                    vec4(materialLightIntegrand(s, wo, wi) / pdf, 0.0), vec4(0.0), vec4(0.0, 0.0, 0.0, alpha));
 }
 
 void main() {

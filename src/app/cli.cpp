@@ -347,7 +347,7 @@ int run_cli(int argc, char** argv) {
   program->add_option("--driver-profile", program_o.driver_profile,
                       "software or hardware (docs/methods.md, \"Driver profiles\")")->default_str(program_o.driver_profile);
 
-  auto* report = app.add_subcommand("report", "a static HTML page (index.html, assets/) of compare, animate and bench "
+  auto* report = app.add_subcommand("report", "a static HTML page (index.html, assets/) of compare, animate, bench and converge "
                                                "outputs: sortable metrics, a reference/method slider, videos, plots");
   std::vector<std::string> report_inputs;
   std::string report_out;

@@ -15,7 +15,6 @@
 #include "core/output_stage.hpp"
 #include "eval/outputs.hpp"
 #include "eval/progress.hpp"
-#include "eval/report_svg.hpp"
 #include "shading/method_list.hpp"
 
 namespace glintlab {
@@ -51,19 +50,6 @@ std::string table(const Convergence& c) {
 }
 
 }  // namespace
-
-double seconds_to_error(const std::vector<ConvergencePoint>& points, double rmse) {
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (points[i].rmse > rmse) continue;
-    if (i == 0) return points[0].seconds;
-    const ConvergencePoint& a = points[i - 1];
-    const ConvergencePoint& b = points[i];
-    // Between two points error and time follow a power law: a line in log-log.
-    const double t = (std::log(a.rmse) - std::log(rmse)) / (std::log(a.rmse) - std::log(b.rmse));
-    return std::exp(std::log(a.seconds) + t * (std::log(b.seconds) - std::log(a.seconds)));
-  }
-  return std::numeric_limits<double>::quiet_NaN();
-}
 
 std::vector<std::string> check_converge_options(const ConvergeOptions& options) {
   const std::vector<std::string> ids = split_outside_braces(options.backends, "--backends");
@@ -135,35 +121,28 @@ Convergence run_converge(Session& session, const ConvergeOptions& options, const
   json["truth_mean"] = result.truth_mean;
   json["light_samples"] = options.light_samples;
   json["target_rmse"] = result.target_rmse;
+  json["truth_backend"] = session.reference_backend().id();
   std::ostringstream csv;
   csv << "backend,spp,seconds,rmse,relative_rmse\n";
-  std::vector<PointSeries> by_time, by_samples;
   for (const auto& curve : result.curves) {
     nlohmann::json points = nlohmann::json::array();
-    PointSeries t{curve.backend, {}}, n{curve.backend, {}};
     for (const auto& p : curve.points) {
       points.push_back({{"spp", p.spp}, {"seconds", p.seconds}, {"rmse", p.rmse}, {"relative_rmse", p.relative_rmse}});
       csv << curve.backend << "," << p.spp << "," << p.seconds << "," << p.rmse << "," << p.relative_rmse << "\n";
-      t.points.push_back({p.seconds, p.rmse, std::to_string(p.spp) + " spp"});
-      n.points.push_back({static_cast<double>(p.spp), p.rmse, fixed(p.seconds, "%.3g") + " s"});
     }
     json["curves"].push_back({{"backend", curve.backend},
                               {"points", points},
                               {"seconds_to_target", std::isfinite(curve.seconds_to_target)
                                                         ? nlohmann::json(curve.seconds_to_target)
                                                         : nlohmann::json(nullptr)}});
-    by_time.push_back(std::move(t));
-    by_samples.push_back(std::move(n));
   }
-  const std::vector<PlotMark> floor = {{"the truth's noise", result.truth_noise_rmse}};
   const std::string truth_name = session.reference_backend().id() + " at " + std::to_string(truth.spp) + " spp";
+  const ConvergencePlots plots =
+      convergence_plots(result.curves, result.truth_noise_rmse, session.scene().source + " (truth: " + truth_name + ")");
   OutputStage stage(out);
   write_reference(stage.path(), "truth", truth, session.scene().film);
-  const std::string of = session.scene().source + " (truth: " + truth_name + ")";
-  write_text_file(stage.path() / "convergence.svg",
-                  log_log_plot_svg("error against time, " + of, "seconds", "RMSE", by_time, floor));
-  write_text_file(stage.path() / "convergence-spp.svg",
-                  log_log_plot_svg("error against samples, " + of, "samples per pixel", "RMSE", by_samples, floor));
+  write_text_file(stage.path() / "convergence.svg", plots.by_time);
+  write_text_file(stage.path() / "convergence-spp.svg", plots.by_samples);
   write_text_file(stage.path() / "convergence.csv", csv.str());
   write_text_file(stage.path() / "convergence.json", json.dump(2) + "\n");
   stage.publish({"convergence.csv", "convergence.json"});

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "eval/convergence_curve.hpp"
 #include "eval/session.hpp"
 
 namespace glintlab {
@@ -22,29 +23,12 @@ struct ConvergeOptions {
   int frame = 0;
 };
 
-struct ConvergencePoint {
-  int spp = 0;
-  double seconds = 0;        ///< wall clock of the render, programs compiled beforehand
-  double rmse = 0;           ///< of total radiance against the truth
-  double relative_rmse = 0;  ///< rmse over the truth's mean
-};
-
-struct ConvergenceCurve {
-  std::string backend;
-  std::vector<ConvergencePoint> points;
-  double seconds_to_target = 0;  ///< time to the target error (log-log interpolated); NaN if not reached
-};
-
 struct Convergence {
   std::vector<ConvergenceCurve> curves;
   double truth_noise_rmse = 0;  ///< the truth's own noise: errors near it are not resolved
   double truth_mean = 0;
   double target_rmse = 0;       ///< the lowest error every curve reaches: the largest of their smallest
 };
-
-/// Seconds for a curve to reach `rmse`: interpolated in log-log between the points around its
-/// first crossing, the first point's seconds if that one is already below; NaN if never reached.
-double seconds_to_error(const std::vector<ConvergencePoint>& points, double rmse);
 
 /// Renders every backend's steps against the session's reference (its --reference-backend at its
 /// --spp: the truth), prints the table and writes convergence.json, convergence.csv and

@@ -1,5 +1,5 @@
 #pragma once
-// `glintlab report`: one static HTML page of the outputs of compare, animate and bench, with copies
+// `glintlab report`: one static HTML page of the outputs of compare, animate, bench and converge, with copies
 // of the images and videos it shows, opened from disk without a network (docs/report.md).
 #include <cstdint>
 #include <filesystem>

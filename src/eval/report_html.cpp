@@ -1,5 +1,6 @@
 #include "eval/report_html.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <map>
@@ -171,6 +172,28 @@ json bench_data(const BenchRun& b) {
   return {{"table", table}, {"plots", plots}, {"frames", b.frames}};
 }
 
+json converge_data(const ConvergeRun& c, const std::string& scene) {
+  // A row per backend: its time to the error every curve reaches, and its last point.
+  json table = {{"sort", "seconds_to_target"},
+                {"columns",
+                 {column("method", "backend", "", 0), column("seconds_to_target", "seconds to the target RMSE", "lower", 3),
+                  column("spp", "last spp", "", 0), column("seconds", "its seconds", "lower", 3),
+                  with_noise(column("rmse", "its RMSE", "lower", 4), c.truth_noise_rmse, "the truth's noise RMSE")}},
+                {"floors", json::array()}};
+  for (const ConvergenceCurve& curve : c.curves) {
+    const ConvergencePoint& last = curve.points.back();
+    table["rows"].push_back({{"method", curve.backend},
+                             {"seconds_to_target", std::isfinite(curve.seconds_to_target) ? json(curve.seconds_to_target)
+                                                                                          : json(nullptr)},
+                             {"spp", last.spp},
+                             {"seconds", last.seconds},
+                             {"rmse", last.rmse}});
+  }
+  const std::string truth = c.truth_backend + " at " + std::to_string(c.truth_spp) + " spp";
+  const ConvergencePlots plots = convergence_plots(c.curves, c.truth_noise_rmse, scene + " (truth: " + truth + ")");
+  return {{"table", table}, {"plots", {plots.by_time, plots.by_samples}}, {"truth", truth}, {"target_rmse", c.target_rmse}};
+}
+
 /// The page's script, one concept a file, concatenated in this order into one <script>: each part
 /// uses the helpers of those before it.
 constexpr const char* kScriptParts[] = {"common.js",     "table.js",    "viewer.js", "sections.js",
@@ -205,8 +228,10 @@ std::string report_page(const ReportInputs& inputs) {
       r.update(compare_data(*c, assets));
     else if (const auto* a = std::get_if<AnimateRun>(&run.data))
       r.update(animate_data(*a, assets));
+    else if (const auto* b = std::get_if<BenchRun>(&run.data))
+      r.update(bench_data(*b));
     else
-      r.update(bench_data(std::get<BenchRun>(run.data)));
+      r.update(converge_data(std::get<ConvergeRun>(run.data), run.scene));
     runs.push_back(r);
   }
   // JSON inside <script>: '<' only occurs in strings there, where \u003c means the same and no

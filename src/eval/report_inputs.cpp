@@ -28,10 +28,11 @@ class Field {
   Field(const json& value, const fs::path& file, std::string key) : value_(value), file_(file), key_(std::move(key)) {}
 
   [[nodiscard]] bool has(const std::string& name) const { return value_.is_object() && value_.contains(name); }
+  [[nodiscard]] bool is_null() const { return value_.is_null(); }
   [[nodiscard]] Field operator[](const std::string& name) const {
     const std::string key = key_.empty() ? name : key_ + "." + name;
     if (!value_.is_object() || !value_.contains(name))
-      fail(key, "is missing", "the key, as glintlab's compare, animate and bench write it");
+      fail(key, "is missing", "the key, as glintlab's compare, animate, bench and converge write it");
     return {value_.at(name), file_, key};
   }
   [[nodiscard]] std::vector<Field> elements() const {
@@ -250,6 +251,25 @@ BenchRun read_bench(const Field& root) {
   return run;
 }
 
+ConvergeRun read_converge(const Field& root) {
+  ConvergeRun run;
+  run.truth_backend = root["truth_backend"].text();
+  run.truth_spp = root["truth_spp"].integer(1);
+  run.truth_noise_rmse = root["truth_noise_rmse"].measure();
+  run.target_rmse = root["target_rmse"].measure();
+  for (const Field& c : root["curves"].some_elements()) {
+    ConvergenceCurve& curve = run.curves.emplace_back();
+    curve.backend = c["backend"].text();
+    for (const Field& p : c["points"].some_elements())
+      curve.points.push_back({p["spp"].integer(1), p["seconds"].measure(), p["rmse"].measure(),
+                              p["relative_rmse"].measure()});
+    // null: the curve never reached the target.
+    curve.seconds_to_target = c["seconds_to_target"].is_null() ? std::numeric_limits<double>::quiet_NaN()
+                                                                : c["seconds_to_target"].measure();
+  }
+  return run;
+}
+
 json parse_json_file(const fs::path& file) {
   const std::string text = read_regular_file(file, "", kMaxTextFileBytes);
   try {
@@ -264,6 +284,7 @@ std::string kind_of(const json& j) {
   if (!j.is_object()) return "";
   if (j.contains("crops")) return "compare";
   if (j.contains("flicker_floor")) return "animate";
+  if (j.contains("curves") && j.contains("truth_spp")) return "converge";
   if (j.contains("methods") && j["methods"].is_array() && !j["methods"].empty() && j["methods"][0].is_object() &&
       j["methods"][0].contains("wall_ms_median"))
     return "bench";
@@ -294,18 +315,18 @@ fs::path common_folder(const std::vector<fs::path>& inputs) {
 }  // namespace
 
 const char* ReportRun::kind() const {
-  static constexpr const char* names[] = {"compare", "animate", "bench"};
+  static constexpr const char* names[] = {"compare", "animate", "bench", "converge"};
   return names[data.index()];
 }
 
 ReportInputs read_report_inputs(const std::vector<fs::path>& inputs) {
   if (inputs.empty())
-    throw InputError("report: no INPUT given; allowed: output directories of compare, animate, bench");
+    throw InputError("report: no INPUT given; allowed: output directories of compare, animate, bench, converge");
   for (const fs::path& input : inputs) {
     std::error_code ec;
     if (!fs::is_directory(input, ec))
       throw InputError(input.string() + ": " + (fs::exists(input, ec) ? "not a directory" : "no such directory") +
-                       "; allowed: an output directory of compare, animate or bench, or a folder above them");
+                       "; allowed: an output directory of compare, animate, bench or converge, or a folder above them");
   }
   const fs::path base = common_folder(inputs);
   ReportInputs result;
@@ -321,7 +342,7 @@ ReportInputs read_report_inputs(const std::vector<fs::path>& inputs) {
         if (it->is_directory(ec)) it.disable_recursion_pending();
         continue;
       }
-      if ((name == "metrics.json" || name == "bench.json") && it->is_regular_file(ec)) {
+      if ((name == "metrics.json" || name == "bench.json" || name == "convergence.json") && it->is_regular_file(ec)) {
         if (it->is_symlink(ec))
           throw InputError(it->path().string() + ": is a symbolic link; allowed: a run's own metrics file (a report reads no links)");
         files.push_back(it->path());
@@ -333,8 +354,8 @@ ReportInputs read_report_inputs(const std::vector<fs::path>& inputs) {
       const std::string kind = kind_of(j);
       if (kind.empty()) {
         result.warnings.push_back(file.string() +
-                                  ": not a compare, animate or bench output (no 'crops', no "
-                                  "'flicker_floor', no methods[].wall_ms_median); skipped");
+                                  ": not a compare, animate, bench or converge output (no 'crops', no "
+                                  "'flicker_floor', no methods[].wall_ms_median, no 'curves'); skipped");
         continue;
       }
       const Field root(j, file, "");
@@ -353,8 +374,10 @@ ReportInputs read_report_inputs(const std::vector<fs::path>& inputs) {
         run.data = read_compare(root, run.dir);
       else if (kind == "animate")
         run.data = read_animate(root, run.dir);
-      else
+      else if (kind == "bench")
         run.data = read_bench(root);
+      else
+        run.data = read_converge(root);
       for (const auto& asset : report_assets(run)) require_file(run.dir / asset, root);
       result.runs.push_back(std::move(run));
     }
@@ -362,7 +385,7 @@ ReportInputs read_report_inputs(const std::vector<fs::path>& inputs) {
   if (result.runs.empty()) {
     std::string list;
     for (const auto& i : inputs) list += (list.empty() ? "" : ", ") + i.string();
-    throw InputError(list + ": no compare, animate or bench output (metrics.json, bench.json) found");
+    throw InputError(list + ": no compare, animate, bench or converge output (metrics.json, bench.json, convergence.json) found");
   }
   return result;
 }

@@ -1,6 +1,7 @@
 #pragma once
-// What `glintlab report` reads: the output directories of compare, animate and bench, found by
-// searching the inputs for metrics.json and bench.json and told apart by their keys. Everything
+// What `glintlab report` reads: the output directories of compare, animate, bench and converge,
+// found by searching the inputs for metrics.json, bench.json and convergence.json and told apart by
+// their keys. Everything
 // is checked before the report writes a byte: a missing key, a broken file or a missing image
 // throws InputError naming the file and the key.
 #include <filesystem>
@@ -8,6 +9,8 @@
 #include <utility>
 #include <variant>
 #include <vector>
+
+#include "eval/convergence_curve.hpp"
 
 namespace glintlab {
 
@@ -67,6 +70,13 @@ struct BenchRun {
   int frames = 0;
 };
 
+struct ConvergeRun {
+  std::vector<ConvergenceCurve> curves;
+  std::string truth_backend;
+  int truth_spp = 0;
+  double truth_noise_rmse = 0, target_rmse = 0;
+};
+
 /// One output directory's run.
 struct ReportRun {
   std::string id;                 ///< unique in the report, path-like: "spheres", "area-lights/disk-0.1/ltc"
@@ -76,7 +86,7 @@ struct ReportRun {
   int width = 0, height = 0;
   /// Label and value of what describes the run (device, reference samples, ...), in display order.
   std::vector<std::pair<std::string, std::string>> facts;
-  std::variant<CompareRun, AnimateRun, BenchRun> data;
+  std::variant<CompareRun, AnimateRun, BenchRun, ConvergeRun> data;
 
   [[nodiscard]] const char* kind() const;
 };
@@ -86,8 +96,8 @@ struct ReportInputs {
   std::vector<std::string> warnings;  ///< files skipped: metrics of no known kind
 };
 
-/// Searches each input directory recursively (hidden folders skipped) for metrics.json and
-/// bench.json, in path order. Throws InputError for an input that is not a directory, a file that
+/// Searches each input directory recursively (hidden folders skipped) for metrics.json,
+/// bench.json and convergence.json, in path order. Throws InputError for an input that is not a directory, a file that
 /// is not JSON or misses a key of its kind, a file it names that is missing, or no run at all.
 ReportInputs read_report_inputs(const std::vector<std::filesystem::path>& inputs);
 

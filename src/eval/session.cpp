@@ -128,9 +128,11 @@ Session::Session(const CommonOptions& options, std::optional<Workload> workload,
   }
   if (options.max_depth < 1 || options.max_depth > kMaxPathDepth)
     throw InputError("--max-depth " + std::to_string(options.max_depth) + ": allowed: 1 .. " + std::to_string(kMaxPathDepth));
-  if (options.max_depth != 1 && options.reference_backend != "path")
+  if (options.max_depth != 1 && options.reference_backend != "path" &&
+      !options.reference_backend.starts_with(kPathMethodPrefix))
     throw InputError("--max-depth " + std::to_string(options.max_depth) + " with --reference-backend " +
-                     options.reference_backend + ": that backend draws direct light only; allowed: --reference-backend path");
+                     options.reference_backend +
+                     ": that backend draws direct light only; allowed: --reference-backend path or path:<method>");
   reference_.max_depth = options.max_depth;
   reference_.spp = options_.spp_auto ? kProgressivePassSpp * 4 : options_.spp;
   reference_.light_samples = options_.light_samples;

@@ -126,9 +126,16 @@ SurfaceDerivatives RayScene::derivatives(const RayHit& hit, glm::vec3 direction,
     const glm::vec3 moved = dO + t * dD;
     return dn != 0.0f ? moved - direction * (glm::dot(moved, n) / dn) : moved;
   };
+  return derivatives_along(hit, transfer(dOdx, dDdx), transfer(dOdy, dDdy));
+}
+
+SurfaceDerivatives RayScene::derivatives_along(const RayHit& hit, glm::vec3 dPdx, glm::vec3 dPdy) const {
+  const WorldShape& shape = shapes_.at(static_cast<std::size_t>(hit.shape));
+  const std::uint32_t* v = &shape.indices[3 * hit.triangle];
+  const glm::vec3 e1 = shape.positions[v[1]] - shape.positions[v[0]], e2 = shape.positions[v[2]] - shape.positions[v[0]];
   SurfaceDerivatives d;
-  d.dPdx = transfer(dOdx, dDdx);
-  d.dPdy = transfer(dOdy, dDdy);
+  d.dPdx = dPdx;
+  d.dPdy = dPdy;
   // The barycentric steps that move the point by dP: dP = db1 e1 + db2 e2 (least squares on the plane).
   const float a = glm::dot(e1, e1), b = glm::dot(e1, e2), c = glm::dot(e2, e2), det = a * c - b * b;
   auto barycentric = [&](glm::vec3 dP) {

@@ -83,6 +83,9 @@ class RayScene {
   /// differentials dOdx .. dDdy per step x and y.
   [[nodiscard]] SurfaceDerivatives derivatives(const RayHit& hit, glm::vec3 direction, glm::vec3 dOdx, glm::vec3 dOdy,
                                                glm::vec3 dDdx, glm::vec3 dDdy) const;
+  /// Its derivatives along two steps dPdx, dPdy of the point on the hit triangle's plane (the
+  /// attributes' changes the barycentric steps that move the point by them imply).
+  [[nodiscard]] SurfaceDerivatives derivatives_along(const RayHit& hit, glm::vec3 dPdx, glm::vec3 dPdy) const;
   /// The emitter a hit is on (a visible light with extent: LightKind::emitter), or null for a shape.
   [[nodiscard]] const LightEmitter* emitter(const RayHit& hit) const;
 

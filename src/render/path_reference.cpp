@@ -12,6 +12,7 @@
 #include "gl/context.hpp"
 #include "gl/shader_library.hpp"
 #include "path/camera_rays.hpp"
+#include "path/ray_cone.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/pass_tiles.hpp"
 #include "render/render_target.hpp"
@@ -51,6 +52,7 @@ struct PathState {
   glm::vec3 specular_weight{1.0f};
   bool mirrored = false;        ///< every bounce so far off a mirror: `differential` is the ray's own
   RayDifferential differential;  ///< per sub-pixel, GL's screen axes
+  RayCone cone;                  ///< the widening of rough bounces so far, at the ray's origin (path:<method>)
 };
 
 // A float in [0, 1) from a sample's sub-pixel, the path vertex and the pass's seed (Russian roulette).
@@ -95,6 +97,7 @@ PathReference::PathReference(const ReferenceBackendContext& context, MethodChoic
   method_module_ = method_program_module(shaders_, *method.method, method.params);
   method_resources_ = method_resources(*method.method, method.params);
   scene_.resources().require(method_resources_, scene_.resource_context(method.params));
+  if (const auto sigma = method.params.find("footprint_sigma"); sigma != method.params.end()) footprint_sigma_ = sigma->second;
   method_ = std::move(method);
 }
 
@@ -127,6 +130,7 @@ std::uint64_t PathReference::estimator_hash() const {
   for (const std::string& text : programs) h.text(text);
   if (method_) {
     // Its run-time parameters are uniforms, not text; its resources follow its parameters.
+    h.text("ray cones widened by each rough lobe's sqrt(2) alpha (path/ray_cone.hpp) v1");
     h.text(id());
     for (const auto& [name, value] : method_->params) {
       h.text(name);
@@ -288,7 +292,15 @@ void PathReference::shade_tile(const Camera& camera, int width, int height, cons
         r.dDdy *= -per_subpixel;
         at.t = glm::dot(point.position - r.origin, r.direction);
       }
-      const SurfaceDerivatives d = rays_.derivatives(at, r.direction, r.dOdx, r.dOdy, r.dDdx, r.dDdy);
+      SurfaceDerivatives d = rays_.derivatives(at, r.direction, r.dOdx, r.dOdy, r.dDdx, r.dDdy);
+      if (depth > 0 && !paths[p].mirrored && method_) {
+        // path:<method>: the camera's footprint at the point widened by the rough lobes bounced off
+        // on the way (Deng et al. 2022 sec. 5.3; path/ray_cone.hpp).
+        const RayCone cone = paths[p].cone.travelled(hits[p].t);
+        const auto [x, y] = widen_footprint(d.dPdx, d.dPdy, rays[p].direction, glm::normalize(point.geometric_normal),
+                                            cone.width, footprint_sigma_);
+        d = rays_.derivatives_along(hits[p], x, y);
+      }
       records[h] = PathHit{
           .position = glm::vec4(point.position, 0.0f),
           .normal = glm::vec4(point.normal, 0.0f),
@@ -406,6 +418,8 @@ void PathReference::shade_tile(const Camera& camera, int width, int height, cons
       path.ray = Ray{.origin = offset_origin(glm::vec3(records[h].position), glm::vec3(records[h].face_normal), dir),
                      .direction = dir};
       path.mirrored = b.dDdx.w > 0.5f && (depth == 0 || path.mirrored);
+      if (!path.mirrored)
+        path.cone = path.cone.travelled(hits[path_of[h]].t).bounced(b.dDdx.w > 0.5f ? 0.0f : lobe_spread(b.dDdy.w, b.dir_lobe.w < 1.5f));
       if (path.mirrored)
         path.differential = RayDifferential{.origin = glm::vec3(records[h].position),
                                             .direction = dir,

@@ -17,6 +17,7 @@
 #include "path/ray_scene.hpp"
 #include "render/reference_backend.hpp"
 #include "render/renderer.hpp"
+#include "core/pixel_filter_width.hpp"
 #include "shading/method_list.hpp"
 
 namespace glintlab {
@@ -74,6 +75,7 @@ class PathReference final : public ReferenceBackend {
   std::optional<MethodChoice> method_;  ///< path:<method>
   std::string method_module_;           ///< its generated module (method_program_module)
   std::vector<std::string> method_resources_;
+  float footprint_sigma_ = kPixelFilterSigma;  ///< the method's: a footprint step's deviation (ray cones)
   DeviceBuffer hits_, shadow_rays_, emission_, bounces_;
   std::vector<glm::vec4> shadow_host_;  // the shadow rays read back, three vec4 each (grown, never shrunk)
   std::map<int, GLuint> programs_;  // by material

@@ -253,7 +253,7 @@ TEST(Report, BadInputExitsTwoNamingTheFileAndKeyAndLeavesTheOldReport) {
   EXPECT_NE(skipped.err.find((runs / "other" / "metrics.json").string()), std::string::npos) << skipped.err;
   EXPECT_NE(skipped.err.find("skipped"), std::string::npos) << skipped.err;
   fs::remove_all(out);
-  expect_refused(quoted(runs / "other"), {(runs / "other").string(), "no compare, animate or bench output"});
+  expect_refused(quoted(runs / "other"), {(runs / "other").string(), "no compare, animate, bench or converge output"});
 }
 
 TEST(Report, EachCropCellShowsTheMethodItIsLabelledWith) {
@@ -349,4 +349,34 @@ TEST(ReportSvg, LinesAndBarsAreProportionalToTheirValuesAndFloorsAtTheirHeight) 
     widths.push_back(std::stod((*it)[1].str()));
   ASSERT_EQ(widths.size(), 2u);
   EXPECT_NEAR(widths[0] / widths[1], 2.0 / 5.0, 1e-3);
+}
+
+TEST(ReportSvg, LogLogPointsSitAtTheirLogarithms) {
+  // A power law is a straight line: error 1, 0.1, 0.01 at 1, 10, 100 seconds, evenly spaced on both axes.
+  const std::string plot =
+      glintlab::log_log_plot_svg("t", "seconds", "RMSE", {{"a", {{1.0, 1.0, ""}, {10.0, 0.1, ""}, {100.0, 0.01, ""}}}},
+                                 {{"floor", 0.1}});
+  const std::vector<double> p = numbers_in(first_match(plot, "points=\"([^\"]*)\""));
+  ASSERT_EQ(p.size(), 6u);
+  EXPECT_NEAR(p[2] - p[0], p[4] - p[2], 0.11);
+  EXPECT_NEAR(p[3] - p[1], p[5] - p[3], 0.11);
+  EXPECT_GT(p[3], p[1]);  // lower error, lower on the page (y grows downward)
+  const std::string floor_y = first_match(plot, "<g class=\"mark\">.*?y1=\"([^\"]*)\"");
+  ASSERT_FALSE(floor_y.empty()) << plot;
+  EXPECT_NEAR(std::stod(floor_y), p[3], 0.11);  // the floor of 0.1 at the second point's height
+}
+
+TEST(Report, AConvergeRunShowsItsCurvesAndTheirTimeToTheTarget) {
+  const ScratchDirectory scratch;
+  const fs::path home = scratch / "home";
+  Ran r = run_glintlab("converge -q --scene builtin:spheres --width 24 --height 16 --spp 64 --backends "
+                       "raster,path-unshadowed --steps 1,4 -o " + quoted(scratch / "runs" / "converge"),
+                       home);
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = run_glintlab("report -o " + quoted(scratch / "report") + " " + quoted(scratch / "runs"), home);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string page = read_text(scratch / "report" / "index.html");
+  for (const char* part : {"\"kind\":\"converge\"", "\"seconds_to_target\"", "path-unshadowed",
+                           "error against time, builtin:spheres", "error against samples, builtin:spheres"})
+    EXPECT_NE(page.find(part), std::string::npos) << part;
 }

@@ -6,7 +6,9 @@
 // sampled integral's value with far less noise.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "core/error.hpp"
 #include "gl_fixture.hpp"
@@ -26,10 +28,11 @@ std::unique_ptr<ReferenceBackend> backend(SceneFixture& f, const std::string& id
   return make_reference_backend(id, {shaders(), *f.gpu, *f.renderer});
 }
 
-ReferenceFrame render_with(SceneFixture& f, const std::string& id, int spp, int light_samples = 0) {
+ReferenceFrame render_with(SceneFixture& f, const std::string& id, int spp, int light_samples = 0, int max_depth = 1) {
   ReferenceSettings s;
   s.spp = spp;
   s.light_samples = light_samples;
+  s.max_depth = max_depth;
   return render_reference(*backend(f, id), f.scene.camera, f.scene.film.width, f.scene.film.height, s);
 }
 
@@ -91,6 +94,44 @@ TEST(PathMethods, SamplingTheFootprintNdfIntegratesWhatTheMethodEvaluates) {
   std::printf("deng2022 under a sphere light: path/raster energy %.4f, relative rmse %.4f\n", ratio,
               relative_rmse(path.mean.specular, raster));
   EXPECT_NEAR(ratio, 1.0, 0.05);
+}
+
+// Glinty interreflection (sec. 5.3): a glinty sphere on a glinty floor, each seen in the other.
+// What a second path vertex adds is light by one rough bounce, where footprints are the camera's
+// widened by the bounce's lobe (path/ray_cone.hpp): large, so deng2022 answers them from its
+// pyramid. Against yan2016's brute-force sums over the same footprints and the surface itself
+// (`path`, no footprint), deng2022's indirect light keeps their energy; with the same seeds, the
+// first vertex's light is the same with or without the bounce.
+TEST(PathMethods, GlintyInterreflectionAgreesWithTheBruteForceFootprints) {
+  TestScene s = normal_glints_floor_unlit(2.0, 24, 16);
+  SceneFixture f(s.sphere("steel", {{"radius", 0.35}, {"translate", {0.0, 0.35, -1.0}}, {"segments", 32}})
+                     .sphere_light({0.4, 0.5, -1.2}, 0.4, {10, 10, 10}, {{"visible", false}}));
+  std::map<std::string, double> indirect;
+  std::map<std::string, Image> indirect_image;
+  for (const std::string id : {"path:deng2022", "path:yan2016", "path"}) {
+    const ReferenceFrame direct = render_with(f, id, 1024, 2, 1);
+    const ReferenceFrame bounced = render_with(f, id, 1024, 2, 2);
+    ASSERT_EQ(bounced.mean.total.count_non_finite(), 0u) << id;
+    Image added = bounced.mean.total;
+    double below = 0;  // the first vertex's light, drawn from the same streams, is not lost
+    for (std::size_t i = 0; i < added.pixels().size(); ++i) {
+      added.pixels()[i] -= direct.mean.total.pixels()[i];
+      below = std::min<double>(below, std::min({added.pixels()[i].r, added.pixels()[i].g, added.pixels()[i].b}));
+    }
+    EXPECT_GT(below, -1e-4 * mean_of(direct.mean.total)) << id;
+    indirect[id] = mean_of(added);
+    indirect_image[id] = added;
+    std::printf("%s: direct %.4f, indirect %.4f (%.1f%%)\n", id.c_str(), mean_of(direct.mean.total), indirect[id],
+                100.0 * indirect[id] / mean_of(direct.mean.total));
+  }
+  EXPECT_GT(indirect["path"], 0.0);
+  const double against_yan = indirect["path:deng2022"] / indirect["path:yan2016"];
+  const double against_surface = indirect["path:deng2022"] / indirect["path"];
+  const double image_error = relative_rmse(indirect_image["path:deng2022"], indirect_image["path:yan2016"]);
+  std::printf("deng2022's indirect light: energy %.4f of yan2016's, %.4f of the surface's; relative rmse to yan2016's "
+              "%.3f\n", against_yan, against_surface, image_error);
+  EXPECT_NEAR(against_yan, 1.0, 0.1);
+  EXPECT_NEAR(against_surface, 1.0, 0.15);
 }
 
 // Under an environment made of spherical Gaussians (the studio map's lattice lobes, written out as a map),

@@ -1,4 +1,4 @@
-// One run's section: its description, then what its kind (compare, animate, bench) shows.
+// One run's section: its description, then what its kind (compare, animate, bench, converge) shows.
 
 function facts(run) {
   const items = [['scene', run.scene], ['size', run.width + ' x ' + run.height]].concat(run.facts);
@@ -65,6 +65,20 @@ function benchSection(run, section) {
   }
 }
 
+function convergeSection(run, section) {
+  section.append(el('h3', {text: 'Error against samples and seconds'}), metricsTable(run), el('p', {
+                   class: 'legend-note',
+                   text: 'Each backend at rising samples per pixel against ' + run.truth +
+                       '; the target is the lowest RMSE every curve reaches (' + run.target_rmse.toPrecision(4) +
+                       '), its time interpolated as a power law between the points around it.'
+                 }));
+  for (const svg of run.plots) {
+    const box = el('div', {class: 'plot-box'});
+    box.innerHTML = svg;
+    section.append(box);
+  }
+}
+
 function draw(run) {
   const section =
       el('section', {id: 'run/' + run.id},
@@ -73,6 +87,8 @@ function draw(run) {
     compareSection(run, section);
   else if (run.kind === 'animate')
     animateSection(run, section);
+  else if (run.kind === 'converge')
+    convergeSection(run, section);
   else
     benchSection(run, section);
   return section;

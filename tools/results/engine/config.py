@@ -15,9 +15,10 @@ RUN_KEYS = {
     "spp": (int, str), "width": (int, str), "height": (int, str), "frames": (int, str), "frame": (int, str),
     "bench_frames": (int, str), "warmup": (int, str), "reference": (int, str), "reference_backend": str,
     "reference_filter": str, "accuracy": (int, str), "no_cache": bool, "args": list, "program": str,
-    "quick_args": list,
+    "quick_args": list, "max_depth": (int, str), "light_samples": (int, str), "backends": (str, list),
+    "steps": list,
 }
-COMMANDS = ("compare", "animate", "bench", "render", "prefilter", "glintlab", "tool")
+COMMANDS = ("compare", "animate", "bench", "render", "prefilter", "converge", "glintlab", "tool")
 SCENE_KEYS = {"template": (str, list), "builtin": str, "replace": list, "transform": str, "file": str}
 SPLICE_KEYS = {"file": str, "marker": str, "template": str}
 SECTION_KEYS = {"template": str, "vars": dict, "scenes": dict, "run": list, "splice": list}

@@ -39,7 +39,8 @@ class Helpers:
             "printed_table": self.printed_table, "lines": lines,
             # Sentences and pictures.
             "ranking_note": self.ranking_note, "gap_note": self.gap_note,
-            "thumbnails": self.thumbnails, "image": self.image,
+            "thumbnails": self.thumbnails, "image": self.image, "plot": self.plot,
+            "curves": lambda run: o.field(run, "curves"),
             **PURE,
             # The machine.
             "device": self.device, "cores": lambda: len(os.sched_getaffinity(0)),
@@ -99,6 +100,12 @@ class Helpers:
         source = self.o.out_dir / run / f"{file}.png"
         self.copies.append((source, self.images_dir / f"{name}.png"))
         return f"{self.images_link}/{name}.png"
+
+    def plot(self, run, file, name):
+        """Copies a file a run wrote (converge's convergence.svg) to docs/images/NAME; the link to it."""
+        source = self.o.out_dir / run / file
+        self.copies.append((source, self.images_dir / name))
+        return f"{self.images_link}/{name}"
 
     def thumbnails(self, prefix, run, methods):
         """A row of pictures: the reference, then `methods`, of a compare run, copied to

@@ -1,5 +1,5 @@
-"""Reading what runs wrote: compare's and animate's metrics.json, bench's bench.json, prefilter's
-JSON, and each run's record (its standard output and seconds). Methods are found by the name
+"""Reading what runs wrote: compare's and animate's metrics.json, bench's bench.json, converge's
+convergence.json, prefilter's JSON, and each run's record (its standard output and seconds). Methods are found by the name
 glintlab gives them: an id, or a variant's name ("podee{area=lens}")."""
 
 import json
@@ -24,7 +24,8 @@ class Outputs:
     def metrics(self, run_id):
         """The JSON a run wrote: metrics.json, bench.json or prefilter's file."""
         run = self.run(run_id)
-        files = {"compare": "metrics.json", "animate": "metrics.json", "bench": "bench.json"}
+        files = {"compare": "metrics.json", "animate": "metrics.json", "bench": "bench.json",
+                 "converge": "convergence.json"}
         if run.command in files:
             path = self.out_dir / run_id / files[run.command]
         elif run.command == "prefilter":

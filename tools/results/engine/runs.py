@@ -3,6 +3,7 @@ template, the glintlab flags built from the keys, and the quick mode's reduction
 
 A run's outputs live under the output folder (out/results) by its id:
     compare, animate, render   <out>/<id>/            (metrics.json, images, videos)
+    converge                   <out>/<id>/            (convergence.json, .csv, .svg, the truth)
     bench                      <out>/<id>/bench.json
     prefilter                  <out>/<id>.json
     glintlab, tool             their standard output only
@@ -18,8 +19,9 @@ from .template import render
 _FLAGS = [("spp", "--spp"), ("width", "--width"), ("height", "--height"), ("frames", "--frames"),
           ("frame", "--frame"), ("bench_frames", "--bench-frames"), ("warmup", "--warmup"),
           ("reference_backend", "--reference-backend"), ("reference_filter", "--reference-filter"),
-          ("accuracy", "--accuracy")]
-_INTEGER_KEYS = {"spp", "width", "height", "frames", "frame", "bench_frames", "warmup", "reference", "accuracy"}
+          ("accuracy", "--accuracy"), ("max_depth", "--max-depth"), ("light_samples", "--light-samples")]
+_INTEGER_KEYS = {"spp", "width", "height", "frames", "frame", "bench_frames", "warmup", "reference", "accuracy",
+                 "max_depth", "light_samples"}
 # Which keys each command takes (besides id, for, command).
 _COMMAND_KEYS = {
     "compare": {"scene", "methods", "params", "spp", "width", "height", "frames", "frame", "reference_backend",
@@ -29,6 +31,8 @@ _COMMAND_KEYS = {
     "bench": {"scene", "methods", "params", "width", "height", "frames", "bench_frames", "warmup", "args"},
     "render": {"scene", "methods", "params", "width", "height", "frame", "reference", "no_cache", "args"},
     "prefilter": {"scene", "params", "accuracy", "no_cache", "args"},
+    "converge": {"scene", "params", "spp", "width", "height", "frame", "reference_backend", "max_depth",
+                 "light_samples", "backends", "steps", "no_cache", "args"},
     "glintlab": {"args"},
     "tool": {"program", "args", "quick_args"},
 }
@@ -120,6 +124,8 @@ def quick(values, command):
         v["frames"] = 3
     if "bench_frames" in v:
         v["bench_frames"] = min(v["bench_frames"], 2)
+    if "steps" in v:
+        v["steps"] = v["steps"][:2]
     if "accuracy" in v:
         v["accuracy"] = min(v["accuracy"], 1)
     if command == "tool" and "quick_args" in v:
@@ -151,6 +157,10 @@ def command_line(run, scene_path, output, glintlab, is_quick):
             argv += [flag, str(v[key])]
     if "reference" in v:
         argv.append(f"--reference={v['reference']}")
+    if "backends" in v:
+        argv += ["--backends", v["backends"] if isinstance(v["backends"], str) else ",".join(v["backends"])]
+    if "steps" in v:
+        argv += ["--steps", ",".join(str(n) for n in v["steps"])]
     if v.get("no_cache"):
         argv.append("--no-cache")
     argv += v.get("args", [])
@@ -159,7 +169,7 @@ def command_line(run, scene_path, output, glintlab, is_quick):
 
 def output_of(run, out_dir):
     """Where a run's outputs go (None: it has only its standard output)."""
-    if run.command in ("compare", "animate", "bench", "render"):
+    if run.command in ("compare", "animate", "bench", "render", "converge"):
         return out_dir / run.id
     if run.command == "prefilter":
         return out_dir / f"{run.id}.json"

@@ -126,6 +126,17 @@ class Runs(unittest.TestCase):
                           "gaussian:0.5", "-o", "out/x"])
 
 
+    def test_converge_takes_its_backends_and_steps(self):
+        run = Run("x", "converge", "t", "", {"backends": ["path:deng2022", "path:deng2022{environment_lobes=0}"],
+                                              "steps": [1, 4, 16], "reference_backend": "path", "spp": 1024,
+                                              "max_depth": 2})
+        self.assertEqual(command_line(run, "builtin:s", "out/x", "g", False),
+                         ["g", "converge", "-q", "--scene", "builtin:s", "--spp", "1024", "--reference-backend", "path",
+                          "--max-depth", "2", "--backends", "path:deng2022,path:deng2022{environment_lobes=0}",
+                          "--steps", "1,4,16", "-o", "out/x"])
+        self.assertEqual(quick(run.values, "converge")["steps"], [1, 4])
+
+
 class Scenes(unittest.TestCase):
     def test_glinty_keeps_the_density_and_maps_alpha_to_sigma(self):
         text = 'name = "g"\ntype = "binomial-glints"\nalpha = 0.35\nlog_density = 12\nmicrofacet_roughness = 0.01\n'

@@ -64,11 +64,12 @@ void add_common(CLI::App* cmd, CommonOptions& o, bool many_methods) {
                   "reference light samples per sub-pixel and area light (0: max(1, 256/spp))")->default_str("0");
   std::string backends;
   for (const auto& b : reference_backends()) backends += (backends.empty() ? "" : "|") + b.id;
+  backends += "|path:<method>";
   cmd->add_option("--reference-backend", o.reference_backend,
                   "how the ground truth is computed (" + backends + "; see 'glintlab info')")
       ->default_str(o.reference_backend);
   cmd->add_option("--max-depth", o.max_depth,
-                  "path vertices lit by the path backend (--reference-backend path): 1 direct light, more bounces")
+                  "path vertices lit by the path backends (--reference-backend path or path:<method>): 1 direct light, more bounces")
       ->default_str("1");
   cmd->add_option("--reference-filter", o.reference_filter,
                   "the reference's pixel filter: box (each pixel's own samples), or gaussian[:S] (every sample "
@@ -142,6 +143,12 @@ void print_info() {
             << "reference cache: " << ReferenceCache::default_directory().string() << "\n"
             << "reference backends (--reference-backend; the first is the default):\n";
   for (const auto& b : reference_backends()) std::cout << "  " << b.id << ": " << b.description << "\n";
+  std::string made_from_methods;
+  for (const auto& m : all_methods())
+    if (m.path_footprint_ndf) made_from_methods += (made_from_methods.empty() ? "" : ", ") + std::string(kPathMethodPrefix) + m.id;
+  std::cout << "  " << made_from_methods
+            << " (with settings, path:deng2022{environment_lobes=0}): path with normal-map-glints materials as the "
+               "method's footprint NDF; a renderer, not a ground truth (render --reference and converge take it)\n";
   // Every precomputed table, loaded from the cache or generated (and cached) now.
   std::cout << "precomputed tables (cache: " << default_table_cache_directory().string() << "):\n";
   for (const TableReport& r : build_every_table(TableCache(default_table_cache_directory(), terminal_table_observer(true)))) {

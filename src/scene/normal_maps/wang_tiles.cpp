@@ -1,0 +1,195 @@
+#include "scene/normal_maps/wang_tiles.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+#include <glm/geometric.hpp>
+
+namespace glintlab {
+
+namespace {
+
+/// A 32-bit integer hash with full avalanche (Wellons' "lowbias32"): a few multiplies and shifts,
+/// the same in GLSL, so that the renderer's shaders can place tiles as this code does.
+std::uint32_t mix32(std::uint32_t x) {
+  x ^= x >> 16;
+  x *= 0x7feb352dU;
+  x ^= x >> 15;
+  x *= 0x846ca68bU;
+  x ^= x >> 16;
+  return x;
+}
+
+/// a mod n in [0, n) for any sign of a.
+std::int64_t wrapped(std::int64_t a, std::int64_t n) { return ((a % n) + n) % n; }
+
+/// floor(a / n) for n > 0.
+std::int64_t floor_div(std::int64_t a, std::int64_t n) { return (a - wrapped(a, n)) / n; }
+
+}  // namespace
+
+std::uint32_t WangLattice::corner_bits(std::int32_t i, std::int32_t j) const {
+  const std::uint32_t h = mix32(mix32(static_cast<std::uint32_t>(i) ^ mix32(seed_)) + static_cast<std::uint32_t>(j));
+  return h >> 30;  // the two highest bits, the most mixed
+}
+
+int WangLattice::edge_along_u(std::int32_t i, std::int32_t j) const { return static_cast<int>(corner_bits(i, j) & 1U); }
+
+int WangLattice::edge_along_v(std::int32_t i, std::int32_t j) const { return static_cast<int>(corner_bits(i, j) >> 1); }
+
+WangEdges WangLattice::cell(std::int32_t i, std::int32_t j) const {
+  return {.north = edge_along_u(i, j + 1), .east = edge_along_v(i + 1, j), .south = edge_along_u(i, j),
+          .west = edge_along_v(i, j)};
+}
+
+namespace {
+
+/// Edges of a tile, as labels of its texels: each texel copies the diamond of one of its edges.
+enum Edge { kSouth, kNorth, kWest, kEast };
+
+/// One quarter of a tile, seen from its corner: local (x', y') in [0, half)^2 maps to the tile's
+/// texel, and `along_u` and `along_v` are the edges that meet at the corner (S or N, W or E).
+struct Quarter {
+  bool mirror_x, mirror_y;
+  Edge along_u, along_v;
+};
+constexpr std::array<Quarter, 4> kQuarters = {{{false, false, kSouth, kWest},
+                                               {true, false, kSouth, kEast},
+                                               {false, true, kNorth, kWest},
+                                               {true, true, kNorth, kEast}}};
+
+/// The minimum-error cut between the two diamonds of a quarter (Cohen et al. 2003; Efros & Freeman
+/// 2001's dynamic programming): on each anti-diagonal k = x' + y' the texels with x' - y' > tau_k
+/// take the edge along u, the others the edge along v. tau_k has the parity of k + 1 (it falls
+/// between texels) and moves by one from k to k + 1 (the cut is connected); the boundary row and
+/// column keep their own edge (tau_k in [1 - k, k - 1]), so that tiles still meet without a seam.
+/// `mismatch(x', y')` is the cost of a texel whose two candidates differ; returns tau by k.
+template <typename Mismatch>
+std::vector<int> minimum_error_cut(int half, const Mismatch& mismatch) {
+  const int last = 2 * (half - 1);
+  // tau is stored shifted by `span` so that it indexes an array; INFINITY marks what is not allowed.
+  const int span = last + 2;
+  std::vector<std::vector<double>> best(last + 1, std::vector<double>(2 * span + 1, INFINITY));
+  std::vector<std::vector<int>> from(last + 1, std::vector<int>(2 * span + 1, 0));
+  auto allowed = [&](int k, int tau) {
+    if (((tau + k + 1) & 1) != 0) return false;
+    const int lo = 2 * std::max(0, k - (half - 1)) - k, hi = k - 2 * std::max(0, k - (half - 1));  // x' - y' on it
+    return tau >= lo - 1 && tau <= hi + 1 && (k == 0 || (tau >= 1 - k && tau <= k - 1));
+  };
+  auto cost = [&](int k, int tau) {
+    double c = 0;
+    for (const int d : {tau - 1, tau + 1}) {
+      if (((d + k) & 1) != 0) continue;
+      const int x = (k + d) / 2, y = (k - d) / 2;
+      if (x >= 0 && y >= 0 && x < half && y < half) c += mismatch(x, y);
+    }
+    return c;
+  };
+  for (int k = 0; k <= last; ++k)
+    for (int tau = -span; tau <= span; ++tau) {
+      if (!allowed(k, tau)) continue;
+      double previous = 0;
+      if (k > 0) {
+        previous = INFINITY;
+        for (const int p : {tau - 1, tau + 1})
+          if (p >= -span && p <= span && best[k - 1][p + span] < previous) {
+            previous = best[k - 1][p + span];
+            from[k][tau + span] = p;
+          }
+      }
+      if (previous < INFINITY) best[k][tau + span] = previous + cost(k, tau);
+    }
+  std::vector<int> tau(last + 1);
+  int at = -span;
+  for (int t = -span; t <= span; ++t)
+    if (best[last][t + span] < best[last][at + span]) at = t;
+  for (int k = last; k >= 0; --k) {
+    tau[k] = at;
+    if (k > 0) at = from[k][at + span];
+  }
+  return tau;
+}
+
+}  // namespace
+
+WangTileSet::WangTileSet(const NormalMap& input, int tile_size, std::uint32_t seed, bool cut) : tile_size_(tile_size) {
+  if (input.width < 1 || input.height < 1 || input.normals.size() != static_cast<std::size_t>(input.width) * input.height)
+    throw std::invalid_argument("Wang tiles: an empty or inconsistent input map");
+  if (tile_size < 2 || tile_size > std::min(input.width, input.height))
+    throw std::invalid_argument("Wang tiles: tile size " + std::to_string(tile_size) + "; allowed: 2 .. " +
+                                std::to_string(std::min(input.width, input.height)));
+  // Where in the input each edge colour's diamond is centred: [0, 1] for the edges along u, [2, 3]
+  // for those along v.
+  std::mt19937 random(seed);
+  std::array<std::array<int, 2>, 4> centre{};
+  for (auto& c : centre)
+    c = {std::uniform_int_distribution<int>(0, input.width - 1)(random),
+         std::uniform_int_distribution<int>(0, input.height - 1)(random)};
+
+  const int t = tile_size, half = tile_size / 2;
+  normals_.resize(16 * static_cast<std::size_t>(t) * t);
+  sources_.resize(normals_.size());
+  for (int tile = 0; tile < 16; ++tile) {
+    const std::array<int, 4> colour = {(tile >> 2) & 1, tile & 1, (tile >> 3) & 1, (tile >> 1) & 1};  // S, N, W, E
+    // The texel (x, y) of edge e's diamond: offsets from the edge's midpoint into the input.
+    auto source_of = [&](Edge e, int x, int y) -> std::array<int, 2> {
+      const std::array<int, 2> c = centre[(e == kSouth || e == kNorth ? 0 : 2) + colour[e]];
+      const std::array<int, 2> offset = e == kSouth   ? std::array<int, 2>{x - half, y}
+                                        : e == kNorth ? std::array<int, 2>{x - half, y - t}
+                                        : e == kWest  ? std::array<int, 2>{x, y - half}
+                                                      : std::array<int, 2>{x - t, y - half};
+      return {static_cast<int>(wrapped(c[0] + offset[0], input.width)), static_cast<int>(wrapped(c[1] + offset[1], input.height))};
+    };
+    auto normal_of = [&](Edge e, int x, int y) -> const glm::vec3& {
+      const auto s = source_of(e, x, y);
+      return input.normals[static_cast<std::size_t>(s[1]) * input.width + s[0]];
+    };
+    // Each texel's edge: the triangle between the diagonals its centre lies in (its nearest edge;
+    // ties, on a diagonal, to the edge along u), then in each quarter the minimum-error cut.
+    std::vector<Edge> label(static_cast<std::size_t>(t) * t);
+    for (int y = 0; y < t; ++y)
+      for (int x = 0; x < t; ++x) {
+        const int to_south = 2 * y + 1, to_north = 2 * (t - y) - 1, to_west = 2 * x + 1, to_east = 2 * (t - x) - 1;
+        label[static_cast<std::size_t>(y) * t + x] = std::min(to_south, to_north) <= std::min(to_west, to_east)
+                                                         ? (to_south <= to_north ? kSouth : kNorth)
+                                                         : (to_west <= to_east ? kWest : kEast);
+      }
+    if (cut && half >= 2)
+      for (const Quarter& q : kQuarters) {
+        auto tile_x = [&](int lx) { return q.mirror_x ? t - 1 - lx : lx; };
+        auto tile_y = [&](int ly) { return q.mirror_y ? t - 1 - ly : ly; };
+        const std::vector<int> tau = minimum_error_cut(half, [&](int lx, int ly) {
+          const glm::vec3 d = normal_of(q.along_u, tile_x(lx), tile_y(ly)) - normal_of(q.along_v, tile_x(lx), tile_y(ly));
+          return static_cast<double>(glm::dot(d, d));
+        });
+        for (int ly = 0; ly < half; ++ly)
+          for (int lx = 0; lx < half; ++lx)
+            label[static_cast<std::size_t>(tile_y(ly)) * t + tile_x(lx)] = lx - ly > tau[lx + ly] ? q.along_u : q.along_v;
+      }
+    for (int y = 0; y < t; ++y)
+      for (int x = 0; x < t; ++x) {
+        const auto s = source_of(label[static_cast<std::size_t>(y) * t + x], x, y);
+        const std::size_t at = (static_cast<std::size_t>(tile) * t + y) * t + x;
+        normals_[at] = input.normals[static_cast<std::size_t>(s[1]) * input.width + s[0]];
+        sources_[at] = s;
+      }
+  }
+}
+
+const glm::vec3& WangTileSet::texel(int t, int x, int y) const {
+  return normals_[(static_cast<std::size_t>(t) * tile_size_ + y) * tile_size_ + x];
+}
+
+std::array<int, 2> WangTileSet::source(int t, int x, int y) const {
+  return sources_[(static_cast<std::size_t>(t) * tile_size_ + y) * tile_size_ + x];
+}
+
+const glm::vec3& WangTileSet::surface_texel(const WangLattice& lattice, std::int64_t x, std::int64_t y) const {
+  const auto i = static_cast<std::int32_t>(floor_div(x, tile_size_)), j = static_cast<std::int32_t>(floor_div(y, tile_size_));
+  return texel(lattice.cell(i, j).tile(), static_cast<int>(wrapped(x, tile_size_)), static_cast<int>(wrapped(y, tile_size_)));
+}
+
+}  // namespace glintlab

@@ -192,4 +192,15 @@ const glm::vec3& WangTileSet::surface_texel(const WangLattice& lattice, std::int
   return texel(lattice.cell(i, j).tile(), static_cast<int>(wrapped(x, tile_size_)), static_cast<int>(wrapped(y, tile_size_)));
 }
 
+NormalMap WangTileSet::atlas() const {
+  const int t = tile_size_;
+  NormalMap map{.width = 4 * t, .height = 4 * t, .normals = {}, .description = "16 Wang tiles of " + std::to_string(t) + "^2"};
+  map.normals.resize(static_cast<std::size_t>(map.width) * map.height);
+  for (int tile = 0; tile < 16; ++tile)
+    for (int y = 0; y < t; ++y)
+      for (int x = 0; x < t; ++x)
+        map.normals[static_cast<std::size_t>((tile >> 2) * t + y) * map.width + (tile & 3) * t + x] = texel(tile, x, y);
+  return map;
+}
+
 }  // namespace glintlab

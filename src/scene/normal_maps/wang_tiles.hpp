@@ -66,6 +66,9 @@ class WangTileSet {
   /// Texel (x, y) of the unbounded tiled surface, any integers: cell (x / T, y / T) of `lattice`
   /// (rounded down), its tile's texel (x mod T, y mod T).
   [[nodiscard]] const glm::vec3& surface_texel(const WangLattice& lattice, std::int64_t x, std::int64_t y) const;
+  /// The 16 tiles as one map of 4 x 4 tiles, tile t at column t mod 4 and row t / 4 (what the GPU
+  /// reads: shaders/glints/normal-map/wang_tiles.glsl).
+  [[nodiscard]] NormalMap atlas() const;
   /// Bytes the tiles hold: constant in the size of the surface they cover.
   [[nodiscard]] std::size_t bytes() const { return normals_.size() * sizeof(glm::vec3); }
 

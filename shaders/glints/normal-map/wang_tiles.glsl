@@ -1,0 +1,35 @@
+// Wang tiles' placement on the GPU, the twin of src/scene/normal_maps/wang_tiles.hpp (tested equal:
+// WangTilesGlsl.*): the plane's lattice of tile corners hashed, each corner's two bits the colours of
+// the edges leaving it along +u and +v; a cell's tile is north + 2 east + 4 south + 8 west, and the
+// 16 tiles lie in an atlas of 4 x 4 tiles (tile t at column t mod 4, row t / 4).
+#ifndef WANG_TILES_GLSL
+#define WANG_TILES_GLSL
+
+// Wellons' lowbias32: full avalanche in a few multiplies and shifts.
+uint wangMix32(uint x) {
+  x ^= x >> 16;
+  x *= 0x7feb352du;
+  x ^= x >> 15;
+  x *= 0x846ca68bu;
+  x ^= x >> 16;
+  return x;
+}
+
+// Bit 0: the colour of corner c's edge along u; bit 1: of its edge along v.
+uint wangCornerBits(ivec2 c, uint seed) { return wangMix32(wangMix32(uint(c.x) ^ wangMix32(seed)) + uint(c.y)) >> 30; }
+
+int wangTile(ivec2 cell, uint seed) {
+  uint here = wangCornerBits(cell, seed);
+  uint north = wangCornerBits(cell + ivec2(0, 1), seed) & 1u;
+  uint east = wangCornerBits(cell + ivec2(1, 0), seed) >> 1;
+  return int(north + 2u * east + 4u * (here & 1u) + 8u * (here >> 1));
+}
+
+// The atlas texel holding texel t of the tiled surface (|t| below 2^23: exact in float).
+ivec2 wangAtlasTexel(ivec2 t, int tileSize, uint seed) {
+  ivec2 cell = ivec2(floor((vec2(t) + 0.5) / float(tileSize)));
+  int tile = wangTile(cell, seed);
+  return ivec2(tile & 3, tile >> 2) * tileSize + (t - cell * tileSize);
+}
+
+#endif

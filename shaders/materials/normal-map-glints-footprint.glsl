@@ -23,9 +23,7 @@ int footprintExtraQueries();
 #define POSITION_NORMAL_BUDGET_PER_QUERY
 #include "$METHOD"
 int footprintExtraQueries() {
-  const ivec2 ranges[LIGHT_KIND_COUNT] = LIGHT_RANGES;
-  int lights = 0;
-  for (int i = 0; i < LIGHT_KIND_COUNT; ++i) lights += ranges[i].y - ranges[i].x;
+  const int lights = positionNormalLightCount();
   return lights * 6 * max(frame.tile.z, 1) + environmentLobeCount * ENVIRONMENT_LOBE_CONES + 4 - lights;
 }
 // The path tracer shades environments by the method's lobes where it fitted any (passes/path_direct.comp).

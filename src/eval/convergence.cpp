@@ -52,7 +52,7 @@ std::string table(const Convergence& c) {
 }  // namespace
 
 std::vector<std::string> check_converge_options(const ConvergeOptions& options) {
-  const std::vector<std::string> ids = split_outside_braces(options.backends, "--backends");
+  const std::vector<std::string> ids = split_outside_braces(options.backends, "--backends '" + options.backends + "'");
   for (const std::string& id : ids) {
     if (id.empty()) throw InputError("--backends '" + options.backends + "': an empty entry; allowed: backend ids separated by commas (see 'glintlab info')");
     find_reference_backend(id);

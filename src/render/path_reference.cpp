@@ -166,9 +166,11 @@ GLuint PathReference::DeviceBuffer::hold(std::size_t bytes) {
 
 GLuint PathReference::shading_program(int material) {
   GLuint& program = programs_[material];
-  if (!program)
+  if (!program) {
     program = shaders_.compute("passes/path_direct.comp", program_defines(material));
-  if (by_method(material)) set_param_uniforms(program, method_->params);
+    // The method's parameters are the program's own uniforms: set once, kept with it.
+    if (by_method(material)) set_param_uniforms(program, method_->params);
+  }
   return program;
 }
 

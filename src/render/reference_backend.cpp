@@ -130,22 +130,13 @@ std::string path_method_backends() {
 ReferenceBackendEntry path_method_backend(const std::string& id) {
   const std::string spec = id.substr(std::string(kPathMethodPrefix).size());
   const std::string origin = "--reference-backend " + id;
-  std::vector<MethodVariant> variants;
-  try {
-    variants = parse_method_variants(spec);
-  } catch (const InputError& e) {
-    // The parser speaks of --methods; the variant is this option's.
-    std::string message = e.what();
-    const std::string prefix = "--methods '" + spec + "': ";
-    if (message.starts_with(prefix)) message = message.substr(prefix.size());
-    throw InputError(origin + ": " + message);
-  }
+  const std::vector<MethodVariant> variants = parse_method_variants(spec, origin);
   if (variants.size() != 1 || !variants.front().method->path_footprint_ndf)
     throw InputError(origin + ": the path tracer renders the footprint NDF of one method; allowed: " +
                      path_method_backends() + " (each with settings id{name=value,...})");
   const MethodVariant& v = variants.front();
   std::map<std::string, std::string> settings(v.settings.begin(), v.settings.end());
-  MethodChoice choice{v.method, resolve_params(*v.method, settings, origin), v.name, v.file_name};
+  MethodChoice choice{v.method, resolve_params(*v.method, settings, origin + ":"), v.name, v.file_name};
   return {kPathMethodPrefix + v.name,
           "path, with normal-map-glints materials as " + v.method->id + "'s footprint NDF",
           [choice](const ReferenceBackendContext& c) { return std::make_unique<PathReference>(c, choice); },

@@ -15,9 +15,8 @@ namespace {
 const char* const kAllowedEntries =
     "method ids separated by commas, 'all', or variants id{name=value,...} (see 'glintlab methods')";
 
-[[noreturn]] void fail(const std::string& list, const std::string& what) {
-  throw InputError("--methods '" + list + "': " + what);
-}
+/// `where`: what the message names first ("--methods 'a,b'").
+[[noreturn]] void fail(const std::string& where, const std::string& what) { throw InputError(where + ": " + what); }
 
 /// A value goes into file names: letters, digits and what numbers and choice names are made of.
 bool file_safe(const std::string& value) {
@@ -32,23 +31,24 @@ std::string parameter_names(const MethodDescriptor& m) {
 }
 
 /// id{name=value,...}: the method, its settings checked against its parameters, and its names.
-MethodVariant parse_variant(const std::string& list, const std::string& entry) {
+/// `origin`: as parse_method_variants'; `where`: what its messages name first.
+MethodVariant parse_variant(const std::string& where, const std::string& entry, const std::string& origin) {
   const auto open = entry.find('{');
   const std::string id = entry.substr(0, open);
-  if (id.empty()) fail(list, "no method before '{' in '" + entry + "'; allowed: " + kAllowedEntries);
+  if (id.empty()) fail(where, "no method before '{' in '" + entry + "'; allowed: " + kAllowedEntries);
   MethodVariant v;
   try {
     v.method = &find_method(id);
   } catch (const InputError& e) {
-    fail(list, e.what());
+    fail(where, e.what());
   }
   v.name = v.file_name = id;
   if (open == std::string::npos) return v;
   if (entry.back() != '}')
-    fail(list, "text after '}' in '" + entry + "'; allowed: " + id + "{name=value,...} then ',' or the end");
+    fail(where, "text after '}' in '" + entry + "'; allowed: " + id + "{name=value,...} then ',' or the end");
   const std::string inside = entry.substr(open + 1, entry.size() - open - 2);
   const std::string allowed = "; allowed: name=value of " + id + "'s parameters (" + parameter_names(*v.method) + ")";
-  if (inside.empty()) fail(list, "nothing between the braces of '" + entry + "'" + allowed);
+  if (inside.empty()) fail(where, "nothing between the braces of '" + entry + "'" + allowed);
   std::map<std::string, std::string> settings;
   std::size_t start = 0;
   for (;;) {
@@ -56,19 +56,19 @@ MethodVariant parse_variant(const std::string& list, const std::string& entry) {
     const std::string setting = inside.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     const auto eq = setting.find('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == setting.size())
-      fail(list, "'" + setting + "' in '" + entry + "' is not name=value" + allowed);
+      fail(where, "'" + setting + "' in '" + entry + "' is not name=value" + allowed);
     const std::string name = setting.substr(0, eq), value = setting.substr(eq + 1);
     if (!settings.emplace(name, value).second)
-      fail(list, "parameter '" + name + "' is set twice in '" + entry + "'; allowed: each parameter once");
+      fail(where, "parameter '" + name + "' is set twice in '" + entry + "'; allowed: each parameter once");
     v.settings.emplace_back(name, value);
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
   // Unknown parameters and bad values, with the message --param gets, naming the variant.
-  resolve_params(*v.method, settings, "--methods '" + entry + "':");
+  resolve_params(*v.method, settings, origin.empty() ? "--methods '" + entry + "':" : origin + ":");
   for (const auto& [name, value] : v.settings)
     if (!file_safe(value))  // " 1" is a number to std::stof
-      fail(list,
+      fail(where,
            "value '" + value + "' of '" + name + "' in '" + entry +
                "' holds other characters than a number or a choice; allowed: " + v.method->find_param(name)->allowed());
   v.name = entry;
@@ -78,8 +78,8 @@ MethodVariant parse_variant(const std::string& list, const std::string& entry) {
 
 }  // namespace
 
-std::vector<std::string> split_outside_braces(const std::string& list, const std::string& flag) {
-  auto fail_at = [&](const std::string& what) { throw InputError(flag + " '" + list + "': " + what); };
+std::vector<std::string> split_outside_braces(const std::string& list, const std::string& where) {
+  auto fail_at = [&](const std::string& what) { fail(where, what); };
   std::vector<std::string> entries(1);
   bool inside = false;
   for (const char c : list) {
@@ -97,23 +97,24 @@ std::vector<std::string> split_outside_braces(const std::string& list, const std
   return entries;
 }
 
-std::vector<MethodVariant> parse_method_variants(const std::string& list) {
+std::vector<MethodVariant> parse_method_variants(const std::string& list, const std::string& origin) {
+  const std::string where = origin.empty() ? "--methods '" + list + "'" : origin;
   std::vector<MethodVariant> variants;
   std::map<std::string, bool> names;  // name -> listed by 'all'
   const auto add = [&](MethodVariant v, bool by_all) {
     // Distinct names have distinct file names: a setting's name holds no '.' and its value no '='.
     if (const auto [it, added] = names.emplace(v.name, by_all); !added)
-      fail(list, "'" + v.name + "' is listed twice" + (by_all || it->second ? " ('all' holds every method)" : "") +
+      fail(where, "'" + v.name + "' is listed twice" + (by_all || it->second ? " ('all' holds every method)" : "") +
                      "; allowed: each name once");
     variants.push_back(std::move(v));
   };
-  for (const std::string& entry : split_outside_braces(list, "--methods")) {
-    if (entry.empty()) fail(list, std::string("an empty entry; allowed: ") + kAllowedEntries);
+  for (const std::string& entry : split_outside_braces(list, where)) {
+    if (entry.empty()) fail(where, std::string("an empty entry; allowed: ") + kAllowedEntries);
     if (entry == "all") {
       for (const auto& m : all_methods()) add({&m, {}, m.id, m.id}, true);
       continue;
     }
-    add(parse_variant(list, entry), false);
+    add(parse_variant(where, entry, origin), false);
   }
   return variants;
 }

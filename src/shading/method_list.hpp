@@ -26,14 +26,17 @@ struct MethodVariant {
 };
 
 /// The entries of a list such as --methods: split at the commas outside braces, so that a variant's
-/// settings stay with it. Throws InputError naming `flag` and `list` for nested or unbalanced braces.
-std::vector<std::string> split_outside_braces(const std::string& list, const std::string& flag);
+/// settings stay with it. Throws InputError beginning with `where` (e.g. "--backends 'a,b'") for
+/// nested or unbalanced braces.
+std::vector<std::string> split_outside_braces(const std::string& list, const std::string& where);
 
 /// Splits --methods into methods and variants, in order; "all" (alone or as an entry) is every
 /// registered method. Throws InputError naming the entry for an empty entry, unbalanced or nested
 /// braces, text after '}', an unknown method, an empty or malformed setting, a parameter the
-/// method does not have or given twice, a value it does not allow, and a name listed twice.
-std::vector<MethodVariant> parse_method_variants(const std::string& list);
+/// method does not have or given twice, a value it does not allow, and a name listed twice. The
+/// messages begin with "--methods 'LIST':", or with `origin` where another option holds the list
+/// (`--reference-backend path:deng2022{rank=0}`).
+std::vector<MethodVariant> parse_method_variants(const std::string& list, const std::string& origin = "");
 
 /// A method chosen on the command line with its resolved parameter values and its names.
 struct MethodChoice {

@@ -226,11 +226,15 @@ float gaussianBoxMean(vec2 mean, mat2 cov, vec2 lo, vec2 hi) {
 // `extraQueries`: sums beyond one per light (an environment's lobes past the first). With
 // POSITION_NORMAL_BUDGET_PER_QUERY (the path tracer's footprint material) `budget` is each sum's
 // and only llvmpipe's iterations are shared.
-float positionNormalElementBudget(float budget, int extraQueries) {
+// The lights of the program's light layout (LIGHT_RANGES), of every kind.
+int positionNormalLightCount() {
   const ivec2 ranges[LIGHT_KIND_COUNT] = LIGHT_RANGES;
   int lights = 0;
   for (int i = 0; i < LIGHT_KIND_COUNT; ++i) lights += ranges[i].y - ranges[i].x;
-  const float queries = float(max(lights + extraQueries, 1));
+  return lights;
+}
+float positionNormalElementBudget(float budget, int extraQueries) {
+  const float queries = float(max(positionNormalLightCount() + extraQueries, 1));
 #ifdef POSITION_NORMAL_BUDGET_PER_QUERY
   return floor(min(budget, 60000.0 / queries));
 #else

@@ -5,18 +5,10 @@
 #ifndef WANG_TILES_GLSL
 #define WANG_TILES_GLSL
 
-// Wellons' lowbias32: full avalanche in a few multiplies and shifts.
-uint wangMix32(uint x) {
-  x ^= x >> 16;
-  x *= 0x7feb352du;
-  x ^= x >> 15;
-  x *= 0x846ca68bu;
-  x ^= x >> 16;
-  return x;
-}
+#include "core/sampling.glsl"  // hash3
 
 // Bit 0: the colour of corner c's edge along u; bit 1: of its edge along v.
-uint wangCornerBits(ivec2 c, uint seed) { return wangMix32(wangMix32(uint(c.x) ^ wangMix32(seed)) + uint(c.y)) >> 30; }
+uint wangCornerBits(ivec2 c, uint seed) { return hash3(uvec3(uvec2(c), seed)) >> 30; }
 
 int wangTile(ivec2 cell, uint seed) {
   uint here = wangCornerBits(cell, seed);

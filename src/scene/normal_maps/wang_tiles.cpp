@@ -8,20 +8,11 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/shader_hash.hpp"
+
 namespace glintlab {
 
 namespace {
-
-/// A 32-bit integer hash with full avalanche (Wellons' "lowbias32"): a few multiplies and shifts,
-/// the same in GLSL, so that the renderer's shaders can place tiles as this code does.
-std::uint32_t mix32(std::uint32_t x) {
-  x ^= x >> 16;
-  x *= 0x7feb352dU;
-  x ^= x >> 15;
-  x *= 0x846ca68bU;
-  x ^= x >> 16;
-  return x;
-}
 
 /// a mod n in [0, n) for any sign of a.
 std::int64_t wrapped(std::int64_t a, std::int64_t n) { return ((a % n) + n) % n; }
@@ -32,8 +23,8 @@ std::int64_t floor_div(std::int64_t a, std::int64_t n) { return (a - wrapped(a, 
 }  // namespace
 
 std::uint32_t WangLattice::corner_bits(std::int32_t i, std::int32_t j) const {
-  const std::uint32_t h = mix32(mix32(static_cast<std::uint32_t>(i) ^ mix32(seed_)) + static_cast<std::uint32_t>(j));
-  return h >> 30;  // the two highest bits, the most mixed
+  // The shaders' hash3 (wang_tiles.glsl draws the same bits); its two highest bits, the most mixed.
+  return hash3(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j), seed_) >> 30;
 }
 
 int WangLattice::edge_along_u(std::int32_t i, std::int32_t j) const { return static_cast<int>(corner_bits(i, j) & 1U); }

@@ -4,8 +4,8 @@
 // edges (Cohen et al. 2003). Where each tile goes is not stored: the plane's lattice of tile
 // corners is hashed, and each corner sets the colours of the two edges that leave it (towards +u
 // and towards +v; the paper's "right and bottom" edges, its image rows running down), a variant of
-// Lagae & Dutre 2005's corner hashing that needs two random bits a corner. Any cell's tile is
-// then four hashes away, at any position.
+// Lagae & Dutre 2005's corner hashing that needs two random bits a corner, drawn by the shaders'
+// own hash (core/shader_hash.hpp). Any cell's tile is then three hashes away, at any position.
 //
 // Each tile is cut from the input map as Cohen et al. do: one diamond (a square turned 45 degrees)
 // per edge colour, taken from the input at its own offset, centred on the edge; a tile is the four

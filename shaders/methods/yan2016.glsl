@@ -58,18 +58,4 @@ NdfSample normalGlintsSampleNdf(uint seed, vec2 u) {
 
 #endif
 
-#ifndef METHOD_AS_FOOTPRINT_NDF
-void prepareSurface(inout Surface s) {
-#if MATERIAL_KIND == MATERIAL_KIND_NORMAL_MAP_GLINTS
-  normalGlintsPrepareFootprint(s);
-#endif
-}
-
-Radiance shadeLight(Surface s, LightData L) {
-#if MATERIAL_KIND == MATERIAL_KIND_NORMAL_MAP_GLINTS
-  return shadeNormalGlintsLight(s, L, gMaskingAlpha, gDiffuseNormal);
-#else
-  return shadeLobe(s, L, materialSmoothLobe(s), AREA_LIGHTS_LTC);  // conventional's default
-#endif
-}
-#endif  // METHOD_AS_FOOTPRINT_NDF
+#include "glints/normal-map/method_entry_points.glsl"

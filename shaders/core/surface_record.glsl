@@ -15,9 +15,10 @@
 // footprint's uv derivatives.
 vec3 normalMapValue(vec2 uv, vec2 dUVdx, vec2 dUVdy) {
 #if MATERIAL_NORMAL_MAP && REFERENCE_PASS
-  return textureLod(uNormalMap, uv, 0.0).xyz;
+  return normalMapAtPoint(uv);
 #elif MATERIAL_NORMAL_MAP
-  return textureGrad(uNormalMap, uv, dUVdx, dUVdy).xyz;
+  vec2 st = normalMapFilterCoordinates(uv, dUVdx, dUVdy);
+  return textureGrad(uNormalMap, st, dUVdx, dUVdy).xyz;
 #else
   return vec3(0.0, 0.0, 1.0);
 #endif

@@ -13,10 +13,12 @@ layout(binding = SLOPE_CROSS_MOMENT_UNIT) uniform sampler2D uSlopeCrossMoment;
 // the pixel (magnifiedSpreadShare). Call in uniform control flow (textureGrad with the surface's uv
 // derivatives is safe anywhere, but callers take it with their other per-pixel work).
 mat2 footprintSlopeCovariance(Surface s, out vec2 meanSlope) {
-  vec4 m = textureGrad(uSlopeMoments, s.uv, s.footprint.dUVdx, s.footprint.dUVdy);
-  float mxy = textureGrad(uSlopeCrossMoment, s.uv, s.footprint.dUVdx, s.footprint.dUVdy).r;
+  vec2 dx = s.footprint.dUVdx, dy = s.footprint.dUVdy;
+  vec2 st = normalMapFilterCoordinates(s.uv, dx, dy);
+  vec4 m = textureGrad(uSlopeMoments, st, dx, dy);
+  float mxy = textureGrad(uSlopeCrossMoment, st, dx, dy).r;
   meanSlope = m.xy;
-  float share = magnifiedSpreadShare(s.footprint.dUVdx, s.footprint.dUVdy, vec2(textureSize(uSlopeMoments, 0)));
+  float share = magnifiedSpreadShare(s.footprint.dUVdx, s.footprint.dUVdy, vec2(normalMapSize()));
   return share * leanSlopeCovariance(m.xy, vec3(m.zw, mxy));
 }
 

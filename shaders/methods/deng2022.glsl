@@ -22,7 +22,9 @@
 const int PNDF_FIXED_N = param_ndf_resolution;
 const int PNDF_FIXED_B = param_block_size > 0 ? param_block_size : param_ndf_resolution / 4;
 const int PNDF_FIXED_RANK = param_rank;
+#if !MATERIAL_WANG_TILES  // a Wang-tiled surface's elements are made from its texels (no storage per texel)
 #define POSITION_NORMAL_STORED_ELEMENTS  // the fallback's elements, computed once (resource position-normal-elements)
+#endif
 #include "glints/normal-map/position_normal.glsl"
 #include "glints/normal-map/prefiltered_ndf.glsl"
 #include "glints/normal-map/footprint_probes.glsl"
@@ -75,7 +77,7 @@ const int ENVIRONMENT_LOBE_CONES = param_environment_lobe_cones == ENVIRONMENT_L
 // footprint is finer than its first level.
 void normalGlintsPrepareFootprint(inout Surface s) {
   gDiffuseNormal = normalGlintsMacroFrame(s);
-  ivec2 size = textureSize(uNormalMap, 0);
+  ivec2 size = normalMapSize();
   mat2 sigmaP = footprintTexelCovariance(s.footprint, size, param_footprint_sigma);
   vec2 centre = fract(s.uv) * vec2(size);
   MaterialData m = materials[uMaterial];
@@ -95,7 +97,9 @@ void normalGlintsPrepareFootprint(inout Surface s) {
                                                                   NORMAL_GLINTS_EXTRA_QUERIES));
   gBelowPyramid = param_small_footprints != SMALL_FOOTPRINTS_CLAMP &&
                   (largest < sigma0 * sigma0 || (smallest < sigma0 * sigma0 && gElements.boxElements <= budget));
+#ifdef POSITION_NORMAL_STORED_ELEMENTS
   gElements.firstElement = positionNormalFirstElement[uMaterial];  // none stored with small_footprints = clamp
+#endif
   if (!gBelowPyramid) gElements.cells = ivec2(0);
 #ifdef METHOD_AS_FOOTPRINT_NDF
   gNdfMass = gBelowPyramid ? 1.0 : normalGlintsProbesMass();

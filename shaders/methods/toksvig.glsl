@@ -8,7 +8,7 @@
 
 void prepareSurface(inout Surface s) {
   // Without a normal map the filtered normal has length 1 and alpha is unchanged.
-  float share = magnifiedSpreadShare(s.footprint.dUVdx, s.footprint.dUVdy, vec2(textureSize(uNormalMap, 0)));
+  float share = magnifiedSpreadShare(s.footprint.dUVdx, s.footprint.dUVdy, vec2(normalMapSize()));
   s.alpha = toksvigAlpha(s.alpha, length(s.mappedNormal), share);
 }
 

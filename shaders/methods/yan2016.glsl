@@ -13,7 +13,9 @@
 
 #if MATERIAL_KIND == MATERIAL_KIND_NORMAL_MAP_GLINTS
 const int ELEMENTS_PER_TEXEL = param_elements_per_texel == ELEMENTS_PER_TEXEL_2 ? 2 : 1;
+#if !MATERIAL_WANG_TILES  // a Wang-tiled surface's elements are made from its texels (no storage per texel)
 #define POSITION_NORMAL_STORED_ELEMENTS  // the material's elements, computed once (resource position-normal-elements)
+#endif
 #include "glints/normal-map/position_normal.glsl"
 
 PositionNormalFootprint gFootprint;
@@ -36,13 +38,15 @@ const int ENVIRONMENT_LOBE_CONES = param_environment_lobe_cones == ENVIRONMENT_L
 // The pixel footprint's P-NDF at this point: its elements (the budget's subset past max_elements).
 void normalGlintsPrepareFootprint(inout Surface s) {
   gDiffuseNormal = normalGlintsMacroFrame(s);
-  ivec2 size = textureSize(uNormalMap, 0);
+  ivec2 size = normalMapSize();
   mat2 sigmaP = footprintTexelCovariance(s.footprint, size, param_footprint_sigma);
   MaterialData m = materials[uMaterial];
   gFootprint = positionNormalFootprint(fract(s.uv) * vec2(size), sigmaP, size, ELEMENTS_PER_TEXEL,
                                        normalMapGlintsIntrinsicRoughness(m),
                                        positionNormalElementBudget(param_max_elements, NORMAL_GLINTS_EXTRA_QUERIES));
+#ifdef POSITION_NORMAL_STORED_ELEMENTS
   gFootprint.firstElement = positionNormalFirstElement[uMaterial];
+#endif
   gMaskingAlpha = normalMapGlintsMaskingAlpha(m);
 }
 

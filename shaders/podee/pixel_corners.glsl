@@ -17,7 +17,9 @@ const vec2 PIXEL_CORNERS[4] = vec2[](vec2(-0.5, -0.5), vec2(0.5, -0.5), vec2(0.5
 // effect the base level, bilinear). docs/methods.md#podee, parameter `corner_lod`.
 vec3 cornerNormalMap(Surface s, vec2 uv, float lodBias) {
   float scale = exp2(lodBias);
-  return textureGrad(uNormalMap, uv, s.footprint.dUVdx * scale, s.footprint.dUVdy * scale).xyz;
+  vec2 dx = s.footprint.dUVdx * scale, dy = s.footprint.dUVdy * scale;
+  vec2 st = normalMapFilterCoordinates(uv, dx, dy);
+  return textureGrad(uNormalMap, st, dx, dy).xyz;
 }
 
 // A corner past the silhouette. The attributes at a corner are the triangle's planes extrapolated

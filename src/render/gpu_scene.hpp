@@ -58,6 +58,11 @@ class GpuScene {
   [[nodiscard]] bool textured(int material) const { return textures_[index(material)].textured; }
   /// Whether the material's smooth lobe can be anisotropic (Material::anisotropic).
   [[nodiscard]] bool anisotropic(int material) const { return anisotropic_[index(material)]; }
+  /// Whether the material's normal map is a surface of Wang tiles (NormalMap::wang).
+  [[nodiscard]] bool wang_tiled(int material) const {
+    const auto& map = scene_.materials[static_cast<std::size_t>(index(material))].normal_map;
+    return map && map->wang;
+  }
   /// Binds a material's textures to their units and sets `program`'s per-draw texture transforms
   /// (uTextureTransforms, shaders/core/material.glsl); uMaterial selects its uniform-block entry.
   void bind_material(GLuint program, int material) const;

@@ -64,6 +64,7 @@ ShaderDefines forward_variant(const std::string& module, const LightRanges& ligh
           {"MATERIAL_NORMAL_MAP", material.normal_map ? "1" : "0"},
           {"MATERIAL_TEXTURES", material.textures ? "1" : "0"},
           {"MATERIAL_ANISOTROPIC", material.anisotropic ? "1" : "0"},
+          {"MATERIAL_WANG_TILES", material.wang_tiles ? "1" : "0"},
           {"REFERENCE_PASS", is_reference_module(module) ? "1" : "0"},
           {"REFERENCE_SURFACE", std::to_string(static_cast<int>(reference_surface(module)))}};
   for (std::size_t k = 0; k < light_ranges.size(); ++k)
@@ -75,7 +76,7 @@ ShaderDefines forward_variant(const std::string& module, const LightRanges& ligh
 
 MaterialVariant material_variant(const GpuScene& scene, int material) {
   return {scene.kind(material).code(), scene.normal_map(material) != 0, scene.textured(material),
-          scene.anisotropic(material)};
+          scene.anisotropic(material), scene.wang_tiled(material)};
 }
 
 std::string method_program_module(ShaderLibrary& shaders, const MethodDescriptor& method, const ParamValues& params) {

@@ -16,12 +16,13 @@
 namespace glintlab {
 
 /// What of a material changes the forward program: its kind (MATERIAL_KIND, and the kind's module
-/// in the $MATERIAL slot), MATERIAL_NORMAL_MAP, MATERIAL_TEXTURES and MATERIAL_ANISOTROPIC.
+/// in the $MATERIAL slot), MATERIAL_NORMAL_MAP, MATERIAL_TEXTURES, MATERIAL_ANISOTROPIC and MATERIAL_WANG_TILES.
 struct MaterialVariant {
   int kind = 0;  ///< the kind's code (MaterialKind::code)
   bool normal_map = false;
   bool textures = false;
   bool anisotropic = false;  ///< Material::anisotropic: an isotropic material's program can skip what only anisotropic lobes need
+  bool wang_tiles = false;   ///< its normal map is a surface of Wang tiles (NormalMap::wang): texels read through the lattice
   auto operator<=>(const MaterialVariant&) const = default;
 };
 MaterialVariant material_variant(const GpuScene& scene, int material);

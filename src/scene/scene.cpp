@@ -83,6 +83,12 @@ std::uint64_t Scene::content_hash() const {
     if (m.normal_map) {
       h.value(m.normal_map->width);
       h.value(m.normal_map->height);
+      h.value(m.normal_map->wang.has_value());
+      if (const auto& w = m.normal_map->wang) {
+        h.value(w->tile_size);
+        h.value(w->tiles);
+        h.value(w->seed);
+      }
       h.span(std::span<const glm::vec3>(m.normal_map->normals));
     }
   }

@@ -60,7 +60,8 @@ std::string kind_names(const LightRanges& ranges) {
 
 std::string variant_label(const std::string& module, MaterialVariant v, const LightRanges& lights) {
   return module + ", " + all_material_kinds()[static_cast<std::size_t>(v.kind)].id + " material" +
-         (v.normal_map ? " with a normal map" : "") + (v.textures ? ", textured" : "") + "; lights " + kind_names(lights);
+         (v.normal_map ? " with a normal map" : "") + (v.wang_tiles ? " of Wang tiles" : "") +
+         (v.textures ? ", textured" : "") + "; lights " + kind_names(lights);
 }
 
 /// The forward program of `module` in variant `v` with `lights`: its fragment stage valid GLSL
@@ -120,6 +121,12 @@ INSTANTIATE_TEST_SUITE_P(Shaders, EveryMethodAndPassCompiles, ::testing::ValuesI
 // Textured materials (glTF's, of the default kind: the other kinds' parameters are constants).
 TEST(Shaders, EveryMethodAndPassCompilesForTextures) {
   EXPECT_GT(expect_every_module_compiles_in({default_material_kind().code(), false, true}), 0);
+}
+
+// A normal map of Wang tiles (MATERIAL_WANG_TILES; only normal-map-glints materials may have one).
+TEST(Shaders, EveryMethodAndPassCompilesForWangTiles) {
+  ASSERT_TRUE(GlslangValidator::available()) << "glslangValidator (Debian's glslang-tools; tools/install-deps.sh)";
+  EXPECT_GT(expect_every_module_compiles_in({.kind = find_material_kind("normal-map-glints").code(), .wang_tiles = true}), 0);
 }
 
 // Every other choice of each method's compile-time parameters (ParamDecl::compile_time), the

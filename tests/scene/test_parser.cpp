@@ -214,4 +214,26 @@ TEST(SceneParser, NormalMapGlintsMaterialKeysAreCheckedAndNamed) {
   expect_error(material({{"ndf", "ggx"}, {"normal_map", bumps}}).toml(), {"ndf", "Beckmann"});
   expect_error(material({{"log_density", 10}, {"normal_map", bumps}}).toml(), {"log_density", "not a known key"});
   expect_error(TestScene().material("g", {{"type", "sparkly"}}).toml(), {"type", "normal-map-glints"});
+
+  // A map of Wang tiles: its surface, tiles and seed reach the material's parameters (the shaders'
+  // lattice); the tile size must fit the input; only normal-map-glints materials take one.
+  auto wang = [&](TomlKeys tiles) {
+    TomlKeys map = bumps;
+    map.emplace_back("wang_tiles", std::move(tiles));
+    return map;
+  };
+  const Scene tiled = material({{"normal_map", wang({{"tile_size", 16}, {"tiles", 40}, {"seed", 77}})}}).scene();
+  const Material& t = tiled.materials[0];
+  ASSERT_TRUE(t.normal_map->wang.has_value());
+  EXPECT_EQ(t.normal_map->width, 64);
+  EXPECT_EQ(t.normal_map->surface_width(), 640);
+  EXPECT_FLOAT_EQ(t.kind_param("wang_tiles"), 40.0f);
+  EXPECT_FLOAT_EQ(t.kind_param("wang_seed"), 77.0f);
+  EXPECT_NE(tiled.content_hash(),
+            material({{"normal_map", wang({{"tile_size", 16}, {"tiles", 40}, {"seed", 78}})}}).scene().content_hash());
+  expect_error(material({{"normal_map", wang({{"tile_size", 33}})}}).toml(), {"wang_tiles", "tile_size = 33", "2 .. 32"});
+  expect_error(material({{"normal_map", wang({{"tiles", 0}})}}).toml(), {"tiles", "1 .. 4096"});
+  expect_error(material({{"normal_map", wang({{"size", 3}})}}).toml(), {"size", "not a known key"});
+  expect_error(TestScene().material("m", {{"normal_map", wang({{"tile_size", 8}})}}).sphere("m").toml(),
+               {"normal_map", "wang_tiles", "normal-map-glints", "microfacet"});
 }

@@ -45,7 +45,8 @@ static_assert(field_count<Material>() == 14);
 static_assert(field_count<TexturedMetalRough>() == 8);
 static_assert(field_count<TextureSlot>() == 2);
 static_assert(field_count<MaterialTexture>() == 5);
-static_assert(field_count<NormalMap>() == 4);
+static_assert(field_count<NormalMap>() == 5);
+static_assert(field_count<WangTiling>() == 3);
 static_assert(field_count<Mesh>() == 5);
 static_assert(field_count<Shape>() == 4);
 static_assert(field_count<Light>() == 13);
@@ -165,6 +166,8 @@ const std::vector<FieldChange> kHashed = {
     {"normal_map.width", [](Scene& s) { normal_map_of(s.materials[1])->width += 1; }},
     {"normal_map.height", [](Scene& s) { normal_map_of(s.materials[1])->height += 1; }},
     {"normal_map.normals", [](Scene& s) { normal_map_of(s.materials[1])->normals[5].x += 0.01f; }},
+    {"normal_map.wang (none -> tiles)",
+     [](Scene& s) { normal_map_of(s.materials[1])->wang = WangTiling{.tile_size = 2, .tiles = 4, .seed = 1}; }},
     {"shape.transform", [](Scene& s) { s.shapes[0].transform[3][0] += 0.1f; }},
     {"shape.material", [](Scene& s) { s.shapes[0].material = 1; }},
     {"mesh.positions", [](Scene& s) { mesh_of(s.shapes[1])->positions[2].y += 0.01f; }},
@@ -258,13 +261,28 @@ TEST(SceneHash, EveryFieldIsListedOnce) {
   EXPECT_EQ(fields("textured."), static_cast<int>(field_count<TexturedMetalRough>()));
   EXPECT_EQ(fields("slot.") + 1, static_cast<int>(field_count<TextureSlot>()));
   EXPECT_EQ(fields("texture."), static_cast<int>(field_count<MaterialTexture>()));
-  EXPECT_EQ(fields("normal_map."), static_cast<int>(field_count<NormalMap>()));
+  // normal_map.wang is listed by what changes ("none -> tiles"); its fields by the test below.
+  EXPECT_EQ(fields("normal_map.") + 1, static_cast<int>(field_count<NormalMap>()));
   EXPECT_EQ(fields("mesh."), static_cast<int>(field_count<Mesh>()));
   // shape.mesh: its contents are the mesh.* fields.
   EXPECT_EQ(fields("shape.") + 1, static_cast<int>(field_count<Shape>()));
   EXPECT_EQ(fields("light."), static_cast<int>(field_count<Light>()));
   // Scene: name, source, description, and film, camera, path, materials, shapes, lights above.
   EXPECT_EQ(fields("scene.") + 6, static_cast<int>(field_count<Scene>()));
+}
+
+TEST(SceneHash, EveryWangTilingFieldChangesTheKey) {
+  const WangTiling tiling{.tile_size = 2, .tiles = 4, .seed = 1};
+  auto key_with = [](const WangTiling& w) {
+    Scene s = base_scene();
+    normal_map_of(s.materials[1])->wang = w;
+    return s.content_hash();
+  };
+  const std::uint64_t key = key_with(tiling);
+  EXPECT_NE(key_with({.tile_size = 4, .tiles = 4, .seed = 1}), key) << "tile_size";
+  EXPECT_NE(key_with({.tile_size = 2, .tiles = 5, .seed = 1}), key) << "tiles";
+  EXPECT_NE(key_with({.tile_size = 2, .tiles = 4, .seed = 2}), key) << "seed";
+  EXPECT_EQ(key_with(tiling), key);
 }
 
 TEST(SceneHash, EveryMaterialKindParameterChangesTheKey) {

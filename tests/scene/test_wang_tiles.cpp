@@ -10,6 +10,7 @@
 #include <set>
 
 #include "chi_square.hpp"
+#include "core/error.hpp"
 #include "scene/normal_maps/wang_tiles.hpp"
 
 using namespace glintlab;
@@ -105,6 +106,33 @@ TEST(WangTiles, TheSurfaceAnywhereIsItsCellsTile) {
   EXPECT_GT(seen.size(), 4u);
   EXPECT_THROW(WangTileSet(input, 1, 0), std::invalid_argument);
   EXPECT_THROW(WangTileSet(input, 65, 0), std::invalid_argument);
+}
+
+// A map of Wang tiles (make_wang_tiled_map): the atlas of the set's tiles, a surface of P T texels
+// that repeats every P tiles (the lattice's period), each texel its cell's tile's; the storage is
+// the 16 tiles whatever P is.
+TEST(WangTiles, ATiledMapsSurfaceRepeatsWithItsPeriodAndReadsTheAtlas) {
+  const NormalMap input = generate_bumps(48, 0.3f, 24, 6, 4);
+  const WangTiling tiling{.tile_size = 12, .tiles = 5, .seed = 9};
+  const NormalMap map = make_wang_tiled_map(input, tiling);
+  ASSERT_TRUE(map.wang.has_value());
+  EXPECT_EQ(map.width, 48);
+  EXPECT_EQ(map.surface_width(), 60);
+  EXPECT_EQ(make_wang_tiled_map(input, {.tile_size = 12, .tiles = 500, .seed = 9}).normals.size(), map.normals.size());
+  const WangTileSet set(input, 12, 9);
+  const WangLattice lattice(9, 5);
+  for (std::int64_t y = -13; y < 75; y += 7)
+    for (std::int64_t x = -30; x < 130; x += 3) {
+      EXPECT_EQ(surface_texel(map, x, y), set.surface_texel(lattice, x, y)) << x << ", " << y;
+      EXPECT_EQ(surface_texel(map, x + 60, y - 120), surface_texel(map, x, y)) << x << ", " << y;
+    }
+  // Unbounded, the lattice does not repeat: some cell P away has another tile.
+  const WangLattice unbounded(9);
+  bool differs = false;
+  for (int i = 0; i < 20; ++i) differs |= unbounded.cell(i, 0).tile() != unbounded.cell(i + 5, 0).tile();
+  EXPECT_TRUE(differs);
+  EXPECT_THROW(make_wang_tiled_map(input, {.tile_size = 49, .tiles = 2, .seed = 0}), InputError);
+  EXPECT_THROW(make_wang_tiled_map(input, {.tile_size = 8, .tiles = 0, .seed = 0}), InputError);
 }
 
 // The seams inside the tiles: neighbouring texels that are not neighbours in the input, and how

@@ -42,6 +42,11 @@ layout(std430, binding = POSITION_NORMAL_ELEMENT_JACOBIANS_BINDING) readonly buf
 };
 #endif
 
+#if defined(MATERIAL_WANG_TILES) && MATERIAL_WANG_TILES
+// A Wang-tiled surface's texels (core/normal_map.glsl), as positionNormalFootprint last read them.
+NormalMapSurface gPositionNormalSurface;
+#endif
+
 struct PositionNormalFootprint {
   vec2 centre;        // c, in texels, wrapped into [0, size)
   mat2 totalInverse;  // (Sigma_h + Sigma_p)^-1
@@ -100,6 +105,9 @@ PositionNormalFootprint positionNormalFootprint(vec2 centre, mat2 sigmaP, ivec2 
   f.cells = f.boxElements > 0.0 ? ivec2(positionNormalCells(first, last, float(f.stride))) : ivec2(0);
   f.seed = 0u;
   f.size = size;
+#if defined(MATERIAL_WANG_TILES) && MATERIAL_WANG_TILES
+  gPositionNormalSurface = normalMapSurface();
+#endif
   f.firstElement = 0u;
   return f;
 }
@@ -112,7 +120,11 @@ ivec2 positionNormalCellElement(ivec2 cell, int stride, uint seed) {
   return cell * stride + ivec2(int(h % s), int((h / s) % s));
 }
 
+#if defined(MATERIAL_WANG_TILES) && MATERIAL_WANG_TILES
+vec3 mapTexel(sampler2D map, ivec2 size, ivec2 i) { return normalMapTexel(gPositionNormalSurface, i); }
+#else
 vec3 mapTexel(sampler2D map, ivec2 size, ivec2 i) { return texelFetch(map, floorMod(i, size), 0).xyz; }
+#endif
 
 // Element e's centre, normal p_e and Jacobian J_e (columns d/du.x, d/du.y), from the texels
 // around it. k = 1: the element sits on texel centre e, its +-0.5 neighbours on the midpoints to

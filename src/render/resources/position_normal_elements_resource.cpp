@@ -17,7 +17,8 @@ namespace glintlab {
 
 namespace {
 
-bool has_elements(const Material& m) { return m.is("normal-map-glints") && m.normal_map; }
+// A Wang-tiled surface's elements are made from its texels in the shader: no storage per texel of the surface.
+bool has_elements(const Material& m) { return m.is("normal-map-glints") && m.normal_map && !m.normal_map->wang; }
 
 // The elements per texel and axis the requesting method sums: deng2022's fallback by its
 // `small_footprints` (yan2016: 2, yan2016-k1: 1, clamp: none), else yan2016's `elements_per_texel`

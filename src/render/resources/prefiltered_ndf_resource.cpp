@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/gpu_contract.hpp"
+#include "core/error.hpp"
 #include "core/hash.hpp"
 #include "prefilter/prefilter_cache.hpp"
 #include "prefilter/prefilter_params.hpp"
@@ -17,6 +18,16 @@ namespace glintlab {
 namespace {
 
 bool has_pyramid(const Material& m) { return m.is("normal-map-glints") && m.normal_map; }
+
+// A pyramid is of one map; a Wang-tiled surface needs one per tile of partial footprints (Deng et
+// al. 2022 sec. 5.5), which this resource does not build yet: refused rather than answered from
+// the atlas, which is not the surface.
+void require_plain_maps(const Scene& scene) {
+  for (const Material& m : scene.materials)
+    if (has_pyramid(m) && m.normal_map->wang)
+      throw InputError("material '" + m.name + "': its normal map has wang_tiles; deng2022's pyramids are of plain maps "
+                       "only (per-tile pyramids are not built yet); allowed: yan2016 and the references on Wang tiles");
+}
 
 // deng2022's `box_queries` (src/shading/methods/deng2022.cpp): 0, prefix-tables, packs the tables
 // of constant-cost box queries; 1, blocks, does without them.
@@ -35,6 +46,7 @@ ResourceType prefiltered_ndf_resource() {
       .key =
           [](const ResourceContext& c) {
             // The settings and, per material with a pyramid, what its pyramid is made of.
+            require_plain_maps(c.scene);
             Hasher h;
             for (const Material& m : c.scene.materials) {
               h.value(has_pyramid(m));

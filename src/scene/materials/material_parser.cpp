@@ -32,6 +32,9 @@ Material parse_material(TomlReader r, const std::filesystem::path& base_dir) {
   r.allow({"base_color", "metallic", "diffuse", "f0"});  // read in one branch or the other
   if (const toml::table* nm = r.get_table("normal_map"))
     m.normal_map = parse_normal_map(TomlReader(*nm, r.file(), "[[material]] '" + m.name + "' normal_map"), base_dir);
+  if (m.normal_map && m.normal_map->wang && !m.is("normal-map-glints"))
+    r.fail("normal_map", "has wang_tiles, which only a normal-map-glints material's map may have (material '" + m.name +
+                             "' is " + m.kind->id + ")");
   m.normal_map_tiling = static_cast<float>(r.get_number("normal_map_tiling", 1.0, 1e-3, 1e5));
   if (m.kind->finish) m.kind->finish(r, m);
   r.finish();

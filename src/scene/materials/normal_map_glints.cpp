@@ -26,6 +26,12 @@ MaterialKind normal_map_glints_material_kind() {
                  {"masking_alpha", 0.01f, 0.0, 1e6,
                   "Beckmann alpha of the whole microsurface, sqrt(E[|b|^2] + 2 sigma_r^2) with b = n.xy / n.z over "
                   "the map's texels: Smith masking-shadowing only (derived from the map)",
+                  /*derived=*/true},
+                 {"wang_tiles", 0.0f, 0.0, 4096.0,
+                  "tiles along a side of the surface of a Wang-tiled normal map (its `wang_tiles.tiles`; 0: a plain "
+                  "map); the tile size is the stored atlas's side / 4",
+                  /*derived=*/true},
+                 {"wang_seed", 0.0f, 0.0, 16777215.0, "the Wang tiles' lattice hash seed (`wang_tiles.seed`)",
                   /*derived=*/true}},
       .lobe_keys = {},
       .parse_lobe =
@@ -41,6 +47,10 @@ MaterialKind normal_map_glints_material_kind() {
           [](TomlReader&, Material& m) {
             m.set_kind_param("masking_alpha",
                              normal_glint_masking_alpha(*m.normal_map, m.kind_param("intrinsic_roughness")));
+            if (const auto& wang = m.normal_map->wang) {
+              m.set_kind_param("wang_tiles", static_cast<float>(wang->tiles));
+              m.set_kind_param("wang_seed", static_cast<float>(wang->seed));
+            }
           },
       .requires_normal_map = true,
   };

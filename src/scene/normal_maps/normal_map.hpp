@@ -4,16 +4,34 @@
 #include <cstdint>
 #include <filesystem>
 #include <glm/vec3.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace glintlab {
 
+/// A surface of Wang tiles (Deng et al. 2022 sec. 5.5; scene/normal_maps/wang_tiles.hpp): `tiles` x
+/// `tiles` cells of tile_size^2 texels, each cell's tile chosen by the hashed lattice of tile corners
+/// (period `tiles`, so that the surface repeats with the map as a plain map does).
+struct WangTiling {
+  int tile_size = 0;       ///< T: texels along a tile's side
+  int tiles = 0;           ///< P: tiles along the surface's side; the surface is P T texels square
+  std::uint32_t seed = 0;  ///< the diamonds' offsets in the input and the lattice's hash
+  bool operator==(const WangTiling&) const = default;
+};
+
 struct NormalMap {
-  int width = 0;
+  int width = 0;   ///< texels stored (with `wang`: the atlas, 4 T)
   int height = 0;
   std::vector<glm::vec3> normals;  ///< unit vectors, row 0 at v = 0 (an image file's bottom row)
   std::string description;         ///< where it came from (file or generator and parameters)
+  /// Set: `normals` is the atlas of the 16 Wang tiles (tile t at column t mod 4, row t / 4) and the
+  /// surface is the implicit tiling they make, surface_size() texels a side.
+  std::optional<WangTiling> wang;
+
+  /// Texels along the surface's side per repeat of the map: the map's own, or P T.
+  [[nodiscard]] int surface_width() const { return wang ? wang->tiles * wang->tile_size : width; }
+  [[nodiscard]] int surface_height() const { return wang ? wang->tiles * wang->tile_size : height; }
 };
 
 /// An image file. PNG/JPEG/TGA/BMP (8 or 16 bits): n = 2c - 1, renormalised. EXR (by its magic number): the

@@ -1,11 +1,13 @@
 #include "scene/normal_maps/normal_map_parser.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #include <glm/vec3.hpp>
 
 #include "core/available_memory.hpp"
 #include "core/error.hpp"
+#include "scene/normal_maps/wang_tiles.hpp"
 
 namespace glintlab {
 
@@ -23,9 +25,25 @@ void require_memory_for_map(const TomlReader& r, int resolution) {
                              "; allowed: a lower resolution (GLINTLAB_MEMORY_MIB sets what may be used)");
 }
 
-}  // namespace
+/// `wang_tiles = { tile_size = T, tiles = P, seed = s }`: the surface synthesised from the map's Wang tiles.
+std::optional<WangTiling> parse_wang_tiling(TomlReader& r) {
+  const toml::table* table = r.get_table("wang_tiles");
+  if (!table) return std::nullopt;
+  TomlReader w(*table, r.file(), r.context() + " wang_tiles");
+  WangTiling tiling;
+  tiling.tile_size = w.get_int("tile_size", 64, 2, 4096);
+  tiling.tiles = w.get_int("tiles", 16, 1, 4096);
+  // The seed reaches the shaders as a float (the material's parameters): exact below 2^24.
+  tiling.seed = static_cast<std::uint32_t>(w.get_int("seed", 1, 0, (1 << 24) - 1));
+  w.finish();
+  if (static_cast<std::int64_t>(tiling.tiles) * tiling.tile_size > (1 << 23))
+    w.fail("tiles", "a surface of " + std::to_string(tiling.tiles) + " x " + std::to_string(tiling.tile_size) +
+                        " texels a side; allowed: at most 2^23 (texel positions exact in float)");
+  return tiling;
+}
 
-std::shared_ptr<const NormalMap> parse_normal_map(TomlReader r, const std::filesystem::path& base_dir) {
+/// The map the table describes: a file or a generator's.
+std::shared_ptr<const NormalMap> parse_input_map(TomlReader& r, const std::filesystem::path& base_dir) {
   if (r.has("file")) {
     const auto file = r.require_string("file");
     r.finish();
@@ -80,6 +98,19 @@ std::shared_ptr<const NormalMap> parse_normal_map(TomlReader r, const std::files
   const auto flat_fraction = static_cast<float>(r.get_number("flat_fraction", 0.0, 0.0, 1.0));
   r.finish();
   return std::make_shared<NormalMap>(generate_flakes(resolution, cells, alpha, seed, jitter, flat_fraction));
+}
+
+}  // namespace
+
+std::shared_ptr<const NormalMap> parse_normal_map(TomlReader r, const std::filesystem::path& base_dir) {
+  const std::optional<WangTiling> wang = parse_wang_tiling(r);
+  std::shared_ptr<const NormalMap> input = parse_input_map(r, base_dir);
+  if (!wang) return input;
+  try {
+    return std::make_shared<NormalMap>(make_wang_tiled_map(*input, *wang));
+  } catch (const InputError& e) {
+    r.fail("wang_tiles", e.what());
+  }
 }
 
 }  // namespace glintlab

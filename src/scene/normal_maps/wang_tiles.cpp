@@ -8,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/error.hpp"
 #include "core/shader_hash.hpp"
 
 namespace glintlab {
@@ -23,6 +24,10 @@ std::int64_t floor_div(std::int64_t a, std::int64_t n) { return (a - wrapped(a, 
 }  // namespace
 
 std::uint32_t WangLattice::corner_bits(std::int32_t i, std::int32_t j) const {
+  if (period_ > 0) {
+    i = static_cast<std::int32_t>(wrapped(i, period_));
+    j = static_cast<std::int32_t>(wrapped(j, period_));
+  }
   // The shaders' hash3 (wang_tiles.glsl draws the same bits); its two highest bits, the most mixed.
   return hash3(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j), seed_) >> 30;
 }
@@ -191,6 +196,35 @@ NormalMap WangTileSet::atlas() const {
     for (int y = 0; y < t; ++y)
       for (int x = 0; x < t; ++x)
         map.normals[static_cast<std::size_t>((tile >> 2) * t + y) * map.width + (tile & 3) * t + x] = texel(tile, x, y);
+  return map;
+}
+
+std::array<int, 2> wang_atlas_texel(const WangTiling& tiling, std::int64_t x, std::int64_t y) {
+  const std::int64_t t = tiling.tile_size, size = t * tiling.tiles;
+  x = wrapped(x, size);
+  y = wrapped(y, size);
+  const int tile = WangLattice(tiling.seed, tiling.tiles).cell(static_cast<std::int32_t>(x / t), static_cast<std::int32_t>(y / t)).tile();
+  return {static_cast<int>((tile & 3) * t + x % t), static_cast<int>((tile >> 2) * t + y % t)};
+}
+
+const glm::vec3& surface_texel(const NormalMap& map, std::int64_t x, std::int64_t y) {
+  if (map.wang) {
+    const auto [ax, ay] = wang_atlas_texel(*map.wang, x, y);
+    return map.normals[static_cast<std::size_t>(ay) * map.width + ax];
+  }
+  return map.normals[static_cast<std::size_t>(wrapped(y, map.height)) * map.width + wrapped(x, map.width)];
+}
+
+NormalMap make_wang_tiled_map(const NormalMap& input, const WangTiling& tiling) {
+  const int largest = std::min(input.width, input.height);
+  if (tiling.tile_size < 2 || tiling.tile_size > largest)
+    throw InputError("wang_tiles.tile_size = " + std::to_string(tiling.tile_size) + ": allowed 2 .. " +
+                     std::to_string(largest) + " (the input map's side)");
+  if (tiling.tiles < 1) throw InputError("wang_tiles.tiles = " + std::to_string(tiling.tiles) + ": allowed >= 1");
+  NormalMap map = WangTileSet(input, tiling.tile_size, tiling.seed).atlas();
+  map.wang = tiling;
+  map.description = "wang_tiles(tile_size=" + std::to_string(tiling.tile_size) + ", tiles=" + std::to_string(tiling.tiles) +
+                    ", seed=" + std::to_string(tiling.seed) + ") of " + input.description;
   return map;
 }
 

@@ -33,10 +33,11 @@ struct WangEdges {
 };
 
 /// The lattice of tile corners, hashed with `seed`: corner (i, j) colours the edge from it to
-/// (i + 1, j) and the edge from it to (i, j + 1).
+/// (i + 1, j) and the edge from it to (i, j + 1). With a `period` P > 0 corners are taken mod P, so
+/// that the tiling repeats every P cells (a map's repeat over uv); 0: unbounded.
 class WangLattice {
  public:
-  explicit WangLattice(std::uint32_t seed) : seed_(seed) {}
+  explicit WangLattice(std::uint32_t seed, std::int32_t period = 0) : seed_(seed), period_(period) {}
   /// The colour of the edge along u that starts at corner (i, j).
   [[nodiscard]] int edge_along_u(std::int32_t i, std::int32_t j) const;
   /// The colour of the edge along v that starts at corner (i, j).
@@ -48,6 +49,7 @@ class WangLattice {
   /// Two independent bits of corner (i, j): bit 0 its edge along u, bit 1 its edge along v.
   [[nodiscard]] std::uint32_t corner_bits(std::int32_t i, std::int32_t j) const;
   std::uint32_t seed_;
+  std::int32_t period_;
 };
 
 /// The 16 tiles of a normal map, each tile_size texels square, and where every texel came from.
@@ -77,5 +79,16 @@ class WangTileSet {
   std::vector<glm::vec3> normals_;                ///< 16 tiles, row after row
   std::vector<std::array<int, 2>> sources_;
 };
+
+/// The Wang-tiled surface of `tiling` made from `input`: its 16 tiles' atlas, with `wang` set.
+/// Throws InputError (naming the key) for a tile size the input cannot hold.
+NormalMap make_wang_tiled_map(const NormalMap& input, const WangTiling& tiling);
+
+/// Texel (x, y) of a map's surface, any integers (wrapped by its surface size): a plain map's own,
+/// or, with Wang tiles, the atlas texel of the tile that its lattice puts there.
+[[nodiscard]] const glm::vec3& surface_texel(const NormalMap& map, std::int64_t x, std::int64_t y);
+
+/// Where texel (x, y) of a Wang-tiled map's surface lies in its atlas (x, y wrapped by the surface size).
+[[nodiscard]] std::array<int, 2> wang_atlas_texel(const WangTiling& tiling, std::int64_t x, std::int64_t y);
 
 }  // namespace glintlab

@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <mutex>
+#include <optional>
 #include <sstream>
 
+#include "core/error.hpp"
 #include "prefilter/position_normal.hpp"
 #include "scene/normal_maps/parallel_rows.hpp"
 
@@ -50,35 +53,30 @@ std::vector<float> angular_factors(const CpFactors& f, int b, int r) {
 
 }  // namespace
 
-PrefilteredNdf precompute_prefiltered_ndf(const NormalMap& map, double intrinsic_roughness,
-                                          const PrefilterSettings& settings) {
-  settings.validate();
-  const auto start = Clock::now();
-  const PositionNormalDistribution pnd(map, intrinsic_roughness, settings.elements_per_texel);
+PrefilteredNdf empty_pyramid(const PrefilterSettings& settings, double extent, double intrinsic_roughness) {
   PrefilteredNdf out;
   out.settings = settings;
-  const double extent = pnd.suggested_extent();
   const NdfGridChoice chosen = choose_ndf_grid(settings, extent, intrinsic_roughness);
   out.settings.ndf_resolution = chosen.resolution;
   out.settings.block_size = chosen.block_size;
   out.settings.validate();  // an explicit block_size must divide the N chosen
-  out.width = map.width;
-  out.height = map.height;
   out.intrinsic_roughness = intrinsic_roughness;
   out.grid = {chosen.resolution, extent};
-  const int n = chosen.resolution, b = chosen.block_size, nb = n / b, r = settings.cp.rank;
-  const int g = settings.group_footprints;
+  return out;
+}
 
-  const int nx0 = base_footprints(map.width, settings), ny0 = base_footprints(map.height, settings);
+void build_levels(PrefilteredNdf& out, const PositionNormalDistribution& pnd, const ElementWindow* window,
+                  glm::dvec2 shift, const LevelLayout& layout, bool stop_test) {
+  const PrefilterSettings& settings = out.settings;
+  const int n = out.grid.resolution, b = settings.block_size, nb = n / b, r = settings.cp.rank;
+  const int g = settings.group_footprints;
   // Images of the level below that the stop test compares with (keyed by footprint index).
   std::vector<std::pair<int, NdfImage>> below;
   int below_nx = 0;
   for (int l = 0; l < settings.max_levels; ++l) {
-    PrefilterLevel level;
-    level.nx = std::max(1, nx0 >> l);
-    level.ny = std::max(1, ny0 >> l);
-    level.spacing = glm::dvec2(map.width, map.height) / glm::dvec2(level.nx, level.ny);
-    level.sigma = static_cast<double>(map.width) / nx0 * std::ldexp(1.0, l);
+    const std::optional<PrefilterLevel> laid = layout(l);
+    if (!laid) break;
+    PrefilterLevel level = *laid;
     level.groups_x = (level.nx + g - 1) / g;
     level.groups_y = (level.ny + g - 1) / g;
     level.first_footprint = static_cast<std::uint32_t>(out.footprints.size());
@@ -88,8 +86,8 @@ PrefilteredNdf precompute_prefiltered_ndf(const NormalMap& map, double intrinsic
     // keep their image, and so do the level's footprints the next level's test will need.
     const int step = std::max(1, std::max(level.nx, level.ny) / 16);
     const int next_step = std::max(1, std::max(std::max(1, level.nx / 2), std::max(1, level.ny / 2)) / 16);
-    auto tested = [&](int x, int y) { return l > 0 && x % step == 0 && y % step == 0; };
-    auto needed_next = [&](int x, int y) { return (x / 2) % next_step == 0 && (y / 2) % next_step == 0; };
+    auto tested = [&](int x, int y) { return stop_test && l > 0 && x % step == 0 && y % step == 0; };
+    auto needed_next = [&](int x, int y) { return stop_test && (x / 2) % next_step == 0 && (y / 2) % next_step == 0; };
 
     const int group_count = level.groups_x * level.groups_y;
     std::vector<GroupResult> results(static_cast<std::size_t>(group_count));
@@ -105,8 +103,9 @@ PrefilteredNdf precompute_prefiltered_ndf(const NormalMap& map, double intrinsic
           auto t0 = Clock::now();
           for (int y = gy * g; y < std::min(level.ny, (gy + 1) * g); ++y)
             for (int x = gx * g; x < std::min(level.nx, (gx + 1) * g); ++x) {
-              const Footprint f = Footprint::isotropic((glm::dvec2(x, y) + 0.5) * level.spacing, level.sigma);
-              images.emplace_back(y * level.nx + x, pnd.image(f, out.grid));
+              const Footprint f =
+                  Footprint::isotropic(level.origin + (glm::dvec2(x, y) + 0.5) * level.spacing + shift, level.sigma);
+              images.emplace_back(y * level.nx + x, pnd.image(f, out.grid, window));
             }
           res.ndf_seconds = seconds_since(t0);
           // Blocks with mass, stacked along k in footprint order then bit order.
@@ -188,7 +187,7 @@ PrefilteredNdf precompute_prefiltered_ndf(const NormalMap& map, double intrinsic
     // Stop test (sec. 4.1): this level's images against the mean of the 2 x 2 footprints of the
     // level below whose centres surround each of them.
     bool converged = false;
-    if (l > 0) {
+    if (stop_test && l > 0) {
       double distance = 0.0;
       int count = 0;
       auto find = [&](int index) -> const NdfImage* {
@@ -223,6 +222,28 @@ PrefilteredNdf precompute_prefiltered_ndf(const NormalMap& map, double intrinsic
     below_nx = level.nx;
     if (converged || top) break;
   }
+}
+
+PrefilteredNdf precompute_prefiltered_ndf(const NormalMap& map, double intrinsic_roughness,
+                                          const PrefilterSettings& settings) {
+  settings.validate();
+  if (map.wang) throw InputError("a map of Wang tiles has a pyramid per tile (precompute_wang_tile_pyramid)");
+  const auto start = Clock::now();
+  const PositionNormalDistribution pnd(map, intrinsic_roughness, settings.elements_per_texel);
+  PrefilteredNdf out = empty_pyramid(settings, pnd.suggested_extent(), intrinsic_roughness);
+  out.width = map.width;
+  out.height = map.height;
+  const int nx0 = base_footprints(map.width, settings), ny0 = base_footprints(map.height, settings);
+  // Level l: the map's footprints halved l times per axis, sigma doubled; up to a single footprint.
+  const LevelLayout layout = [&](int l) -> std::optional<PrefilterLevel> {
+    PrefilterLevel level;
+    level.nx = std::max(1, nx0 >> l);
+    level.ny = std::max(1, ny0 >> l);
+    level.spacing = glm::dvec2(map.width, map.height) / glm::dvec2(level.nx, level.ny);
+    level.sigma = static_cast<double>(map.width) / nx0 * std::ldexp(1.0, l);
+    return level;
+  };
+  build_levels(out, pnd, nullptr, glm::dvec2(0.0), layout, true);
   out.precompute_seconds = seconds_since(start);
   return out;
 }

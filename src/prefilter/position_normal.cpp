@@ -116,11 +116,10 @@ double PositionNormalDistribution::range_mean(const Footprint& footprint, glm::d
 }
 
 void PositionNormalDistribution::accumulate_image(const Footprint& footprint, const NdfGrid& grid, double scale,
-                                                  float* out) const {
+                                                  float* out, const ElementWindow* window) const {
   const int n = grid.resolution;
   const double h = grid.pixel_size();
   const glm::dmat2 box(h * h / 12.0);  // a pixel's box as a Gaussian of the same variance
-  std::vector<double> window;
   std::vector<std::pair<int, double>> stored;
   std::vector<double> pixels(grid.pixel_count(), 0.0);
   const double total = for_each_term(footprint, [&](const Term& t) {
@@ -150,15 +149,16 @@ void PositionNormalDistribution::accumulate_image(const Footprint& footprint, co
       return;
     }
     for (const auto& [index, g] : stored) pixels[static_cast<std::size_t>(index)] += t.weight * g / sum;
-  });
+  }, window);
   if (!(total > 0)) return;
   const double to_average = scale / (total * grid.pixel_area());
   for (std::size_t i = 0; i < pixels.size(); ++i) out[i] += static_cast<float>(pixels[i] * to_average);
 }
 
-NdfImage PositionNormalDistribution::image(const Footprint& footprint, const NdfGrid& grid) const {
+NdfImage PositionNormalDistribution::image(const Footprint& footprint, const NdfGrid& grid,
+                                           const ElementWindow* window) const {
   NdfImage img{grid, std::vector<float>(grid.pixel_count(), 0.0f)};
-  accumulate_image(footprint, grid, 1.0, img.values.data());
+  accumulate_image(footprint, grid, 1.0, img.values.data(), window);
   return img;
 }
 

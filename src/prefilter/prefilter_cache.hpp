@@ -14,8 +14,8 @@
 
 namespace glintlab {
 
-/// The entry format's magic (its version: 2 has the checksum frame).
-inline constexpr std::string_view kPrefilteredNdfMagic = "GLPNDF2\n";
+/// The entry format's magic (its version: 2 has the checksum frame, 3 levels' origins and Wang tiles' pyramids).
+inline constexpr std::string_view kPrefilteredNdfMagic = "GLPNDF3\n";
 /// The line an entry starts with: what it was built from (the map's size, the roughness, the settings).
 std::string prefiltered_ndf_built_from(const NormalMap& map, double intrinsic_roughness,
                                        const PrefilterSettings& settings);

@@ -163,6 +163,16 @@ double PrefilteredNdf::pixel_range_sum(std::uint32_t footprint, glm::dvec2 x0, g
 std::vector<PrefilteredNdf::Weighted> PrefilteredNdf::interpolation(glm::dvec2 centre, double sigma) const {
   std::vector<Weighted> out;
   const int last = static_cast<int>(levels.size()) - 1;
+  if (partial && sigma > levels.back().sigma) {
+    // Wider than the last level: its footprint at the tile's centre (its grid's middle), scaled.
+    const PrefilterLevel& top = levels.back();
+    const glm::dvec2 middle(0.5 * width, 0.5 * height);
+    const double share = tile_share(middle, top.sigma);
+    if (share > 0.0)
+      out.push_back({top.first_footprint + static_cast<std::uint32_t>((top.ny / 2) * top.nx + top.nx / 2),
+                     tile_share(centre, sigma) / share});
+    return out;
+  }
   const double lambda =
       std::clamp(std::log2(std::max(sigma, 1e-9) / levels.front().sigma), 0.0, static_cast<double>(last));
   const int l0 = std::min(static_cast<int>(lambda), last);
@@ -172,17 +182,27 @@ std::vector<PrefilteredNdf::Weighted> PrefilteredNdf::interpolation(glm::dvec2 c
     const double level_weight = side == 0 ? 1.0 - t : t;
     if (level_weight <= 0.0 || (side == 1 && l1 == l0)) continue;
     const PrefilterLevel& level = levels[static_cast<std::size_t>(side == 0 ? l0 : l1)];
-    const glm::dvec2 g = centre / level.spacing - 0.5;
+    const glm::dvec2 g = (centre - level.origin) / level.spacing - 0.5;
     const glm::dvec2 g0 = glm::floor(g), f = g - g0;
     for (int dy = 0; dy < 2; ++dy)
       for (int dx = 0; dx < 2; ++dx) {
         const double w = level_weight * (dx ? f.x : 1 - f.x) * (dy ? f.y : 1 - f.y);
         if (w <= 0.0) continue;
-        const int x = wrap_texel(static_cast<int>(g0.x) + dx, level.nx), y = wrap_texel(static_cast<int>(g0.y) + dy, level.ny);
+        int x = static_cast<int>(g0.x) + dx, y = static_cast<int>(g0.y) + dy;
+        if (partial && (x < 0 || y < 0 || x >= level.nx || y >= level.ny)) continue;  // sees none of the tile
+        x = wrap_texel(x, level.nx);
+        y = wrap_texel(y, level.ny);
         out.push_back({level.first_footprint + static_cast<std::uint32_t>(y * level.nx + x), w});
       }
   }
   return out;
+}
+
+double PrefilteredNdf::tile_share(glm::dvec2 centre, double sigma) const {
+  const double element = 1.5 / (settings.elements_per_texel * std::sqrt(12.0));  // PositionNormalDistribution's
+  const double s = std::sqrt(sigma * sigma + element * element) * std::sqrt(2.0);
+  const auto along = [&](double c, double size) { return 0.5 * (std::erf((size - c) / s) - std::erf(-c / s)); };
+  return along(centre.x, width) * along(centre.y, height);
 }
 
 double PrefilteredNdf::density(glm::dvec2 centre, double sigma, glm::dvec2 s) const {
@@ -259,6 +279,7 @@ void PrefilteredNdf::write(std::ostream& out) const {
   put(out, height);
   put(out, intrinsic_roughness);
   put(out, precompute_seconds);
+  put<std::uint8_t>(out, partial ? 1 : 0);
   put<std::uint64_t>(out, levels.size());
   for (const PrefilterLevel& l : levels) put(out, l);
   put_vector(out, footprints);
@@ -278,6 +299,7 @@ PrefilteredNdf PrefilteredNdf::read(std::istream& in) {
   p.height = get<int>(in);
   p.intrinsic_roughness = get<double>(in);
   p.precompute_seconds = get<double>(in);
+  p.partial = get<std::uint8_t>(in) != 0;
   const auto level_count = get<std::uint64_t>(in);
   if (level_count < 1 || level_count > 16) throw RuntimeFailure("prefiltered NDF: bad level count");
   for (std::uint64_t i = 0; i < level_count; ++i) p.levels.push_back(get<PrefilterLevel>(in));
@@ -307,13 +329,16 @@ void PrefilteredNdf::check_consistent() const {
     const PrefilterLevel& l = levels[i];
     const std::string level = "level " + std::to_string(i) + ": ";
     if (!finite_positive(l.sigma) || !(l.sigma > sigma_below)) fail(level + "bad sigma");
-    // The centres tile the map: spacing = map size / footprints, as the precompute sets it (a
-    // spacing of 1e-300 sent a query's grid position past every integer: fuzz/fuzz_pyramid.cpp).
-    const auto tiles = [](double spacing, int count, int size) {
-      return finite_positive(spacing) && std::abs(spacing * count - size) <= 1e-9 * size;
+    // A map's centres tile the map: spacing = map size / footprints, as the precompute sets it (a
+    // spacing of 1e-300 sent a query's grid position past every integer: fuzz/fuzz_pyramid.cpp). A
+    // tile's cover the tile and reach past it by at most the footprint's reach and a spacing.
+    const auto tiles = [&](double spacing, double origin, int count, int size) {
+      if (!finite_positive(spacing) || !std::isfinite(origin)) return false;
+      if (!partial) return origin == 0.0 && count <= size && std::abs(spacing * count - size) <= 1e-9 * size;
+      const double reach = 4.0 * l.sigma + 2.0 * spacing + 4.0;
+      return origin <= 0.0 && origin >= -reach && origin + spacing * count >= size && origin + spacing * count <= size + reach;
     };
-    if (l.nx < 1 || l.ny < 1 || l.nx > width || l.ny > height || !tiles(l.spacing.x, l.nx, width) ||
-        !tiles(l.spacing.y, l.ny, height))
+    if (l.nx < 1 || l.ny < 1 || !tiles(l.spacing.x, l.origin.x, l.nx, width) || !tiles(l.spacing.y, l.origin.y, l.ny, height))
       fail(level + "bad footprint grid");
     if (l.groups_x < 1 || l.groups_y < 1 || l.groups_x > l.nx || l.groups_y > l.ny) fail(level + "bad group grid");
     if (l.first_footprint != footprint_count || l.first_group != group_count)

@@ -68,11 +68,14 @@ std::uint64_t prefiltered_ndf_bytes_bound(const PrefilterSettings& settings, int
                                           bool box_prefix_tables = false);
 
 /// One level of the pyramid: nx x ny footprints of standard deviation sigma texels, centred at
-/// ((i + 0.5) spacing.x, (j + 0.5) spacing.y), grouped in groups_x x groups_y tensors.
+/// origin + ((i + 0.5) spacing.x, (j + 0.5) spacing.y), grouped in groups_x x groups_y tensors.
+/// A map's pyramid has origin 0 and its centres tile the map; a Wang tile's (`partial`) reaches
+/// past the tile on every side.
 struct PrefilterLevel {
   double sigma = 0.0;
   int nx = 0, ny = 0;
   glm::dvec2 spacing{0.0};
+  glm::dvec2 origin{0.0};
   int groups_x = 0, groups_y = 0;
   std::uint32_t first_footprint = 0;
   std::uint32_t first_group = 0;
@@ -97,6 +100,13 @@ class PrefilteredNdf {
   NdfGrid grid;
   int width = 0, height = 0;         ///< the map's texels
   double intrinsic_roughness = 0.0;
+  /// A Wang tile's pyramid (prefilter/wang_tile_pyramids.hpp), not a map's: each footprint's image
+  /// sums only the tile's elements, over the weight of the whole surface's (so that the images of
+  /// the tiles a footprint reaches add up to the surface's); its centres reach past the tile, the
+  /// grid does not wrap, and a footprint off the grid's centres sees none of the tile (0). Wider
+  /// than the last level, a footprint is the last level's footprint at the tile's centre scaled by
+  /// the share of the footprint's Gaussian that falls on the tile (interpolation()).
+  bool partial = false;
   std::vector<PrefilterLevel> levels;
   std::vector<FootprintRecord> footprints;
   /// Per group, the offset into `angular` of its a (B x R), b (B x R) and their exclusive prefix
@@ -129,12 +139,17 @@ class PrefilteredNdf {
 
   /// The stored footprints and weights that stand for a footprint N(centre, sigma^2 I) (texels):
   /// bilinear between the four nearest centres of the two levels around log2(sigma / sigma_0)
-  /// (trilinear, sec. 4.1), clamped to the pyramid's first and last level.
+  /// (trilinear, sec. 4.1), clamped to the pyramid's first and last level. A partial pyramid's
+  /// centres off its grid weigh 0, and past its last level the footprint is that level's at the
+  /// tile's centre times tile_share(centre, sigma) / tile_share(tile centre, last sigma).
   struct Weighted {
     std::uint32_t footprint;
     double weight;
   };
   [[nodiscard]] std::vector<Weighted> interpolation(glm::dvec2 centre, double sigma) const;
+  /// The share of N(centre, (sigma^2 + the elements' variance) I) that falls on the map's square
+  /// [0, width] x [0, height] (a partial pyramid's tile).
+  [[nodiscard]] double tile_share(glm::dvec2 centre, double sigma) const;
 
   /// P(s) of the footprint: pixels bilinearly interpolated (0 outside the image), never negative.
   [[nodiscard]] double density(glm::dvec2 centre, double sigma, glm::dvec2 s) const;

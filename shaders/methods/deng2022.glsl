@@ -29,7 +29,29 @@ const int PNDF_FIXED_RANK = param_rank;
 #include "glints/normal-map/prefiltered_ndf.glsl"
 #include "glints/normal-map/footprint_probes.glsl"
 
-PndfHeader gPyramid;       // the material's pyramid, read once per pixel
+// The material's pyramid, read once per pixel: its map's, or on a map of Wang tiles its 16 tiles'
+// (sec. 5.5: a footprint's NDF summed over the cells it reaches; glints/normal-map/wang_tile_queries.glsl).
+#include "glints/normal-map/wang_tile_queries.glsl"  // (never inside an #if: files expand once, where first included)
+#if MATERIAL_WANG_TILES
+WangPyramids gPyramid;
+void loadPyramid() {
+  NormalMapSurface surface = normalMapSurface();
+  gPyramid = wangPyramids(uMaterial, surface.tileSize, surface.tiles, surface.seed);
+}
+float pyramidFirstSigma() { return gPyramid.firstSigma; }
+float pyramidDensity(vec2 centre, float sigma, vec2 s) { return wangDensity(gPyramid, centre, sigma, s); }
+float pyramidRangeMean(vec2 centre, float sigma, vec2 lo, vec2 hi, bool prefixTables) {
+  return wangRangeMean(gPyramid, centre, sigma, lo, hi, prefixTables);
+}
+#else
+PndfHeader gPyramid;
+void loadPyramid() { gPyramid = pndfHeader(uMaterial); }
+float pyramidFirstSigma() { return pndfFirstSigma(gPyramid); }
+float pyramidDensity(vec2 centre, float sigma, vec2 s) { return pndfDensity(gPyramid, centre, sigma, s); }
+float pyramidRangeMean(vec2 centre, float sigma, vec2 lo, vec2 hi, bool prefixTables) {
+  return pndfRangeMean(gPyramid, centre, sigma, lo, hi, prefixTables);
+}
+#endif
 FootprintProbes gProbes;  // the footprint as isotropic queries of the pyramid (texels of the map)
 float gMaskingAlpha;
 vec3 gDiffuseNormal;  // the map's filtered normal in the macro frame, for Lambert
@@ -42,6 +64,13 @@ bool gBelowPyramid;
 PositionNormalFootprint gElements;
 #ifdef METHOD_AS_FOOTPRINT_NDF
 #include "glints/normal-map/ndf_sampling.glsl"
+#if MATERIAL_WANG_TILES
+float pyramidMass(vec2 centre, float sigma) { return wangMass(gPyramid, centre, sigma); }
+NdfSample pyramidSample(vec2 centre, float sigma, uint seed, vec2 u) { return wangSample(gPyramid, centre, sigma, seed, u); }
+#else
+float pyramidMass(vec2 centre, float sigma) { return pndfMass(gPyramid, centre, sigma); }
+NdfSample pyramidSample(vec2 centre, float sigma, uint seed, vec2 u) { return pndfSample(gPyramid, centre, sigma, seed, u); }
+#endif
 float gNdfMass;  // the footprint NDF's mass, the sampler's normaliser
 const uint NDF_PROBE_STAGE = 24u;  // the probe's choice: a stage of the sample's seed past pndfSample's (0 .. 17)
 float normalGlintsProbesMass();
@@ -52,7 +81,7 @@ float normalGlintsDensity(vec2 s) {
   float sum = 0.0;
   ProbeWeights w = gProbes.weights;
   for (int j = 0; j < gProbes.count; ++j)
-    sum += nextProbeWeight(w) * pndfDensity(gPyramid, probeCentre(gProbes, j), gProbes.sigma, s);
+    sum += nextProbeWeight(w) * pyramidDensity(probeCentre(gProbes, j), gProbes.sigma, s);
   return sum;
 }
 float normalGlintsBoxMean(vec2 lo, vec2 hi) {
@@ -60,8 +89,8 @@ float normalGlintsBoxMean(vec2 lo, vec2 hi) {
   float sum = 0.0;
   ProbeWeights w = gProbes.weights;
   for (int j = 0; j < gProbes.count; ++j)
-    sum += nextProbeWeight(w) * pndfRangeMean(gPyramid, probeCentre(gProbes, j), gProbes.sigma, lo, hi,
-                                                   param_box_queries == BOX_QUERIES_PREFIX_TABLES);
+    sum += nextProbeWeight(w) * pyramidRangeMean(probeCentre(gProbes, j), gProbes.sigma, lo, hi,
+                                                 param_box_queries == BOX_QUERIES_PREFIX_TABLES);
   return sum;
 }
 #include "glints/normal-map/shading.glsl"
@@ -82,8 +111,8 @@ void normalGlintsPrepareFootprint(inout Surface s) {
   vec2 centre = fract(s.uv) * vec2(size);
   MaterialData m = materials[uMaterial];
   gMaskingAlpha = normalMapGlintsMaskingAlpha(m);
-  gPyramid = pndfHeader(uMaterial);
-  float sigma0 = pndfFirstSigma(gPyramid);
+  loadPyramid();
+  float sigma0 = pyramidFirstSigma();
   gProbes = footprintProbes(centre, sigmaP, sigma0, int(param_anisotropic_probes));
   // The switch (sec. 5.1): the pyramid cannot resolve a footprint whose minor axis is finer than
   // sigma_0; such a footprint is summed over the map's elements in its true shape (never shrunk)
@@ -115,7 +144,7 @@ float normalGlintsProbesMass() {
   float sum = 0.0;
   ProbeWeights w = gProbes.weights;
   for (int j = 0; j < gProbes.count; ++j)
-    sum += nextProbeWeight(w) * pndfMass(gPyramid, probeCentre(gProbes, j), gProbes.sigma);
+    sum += nextProbeWeight(w) * pyramidMass(probeCentre(gProbes, j), gProbes.sigma);
   return sum;
 }
 
@@ -127,11 +156,11 @@ NdfSample normalGlintsSampleNdf(uint seed, vec2 u) {
   int chosen = -1;
   ProbeWeights w = gProbes.weights;
   for (int j = 0; j < gProbes.count; ++j) {
-    const float m = nextProbeWeight(w) * pndfMass(gPyramid, probeCentre(gProbes, j), gProbes.sigma);
+    const float m = nextProbeWeight(w) * pyramidMass(probeCentre(gProbes, j), gProbes.sigma);
     if (ndfReservoirTakes(m, total, ndfChoiceUniform(seed, NDF_PROBE_STAGE, uint(j)))) chosen = j;
   }
   if (chosen < 0) return NO_NDF_SAMPLE;
-  NdfSample x = pndfSample(gPyramid, probeCentre(gProbes, chosen), gProbes.sigma, seed, u);
+  NdfSample x = pyramidSample(probeCentre(gProbes, chosen), gProbes.sigma, seed, u);
   if (x.pdf > 0.0) x.pdf = normalGlintsSamplePdf(x.s);
   return x.pdf > 0.0 ? x : NO_NDF_SAMPLE;
 }

@@ -8,17 +8,20 @@
 #include "core/file_access.hpp"
 #include "core/hash.hpp"
 #include "prefilter/ndf_precompute.hpp"
+#include "prefilter/wang_tile_pyramids.hpp"
 
 namespace glintlab {
 
 namespace {
 /// Bump when precompute_prefiltered_ndf would give other values for the same inputs.
-constexpr std::uint32_t kPrefilterVersion = 1;
-std::string header_text(const NormalMap& map, double intrinsic_roughness, const PrefilterSettings& settings) {
+constexpr std::uint32_t kPrefilterVersion = 2;
+std::string header_text(const NormalMap& map, double intrinsic_roughness, const PrefilterSettings& settings, int tile) {
   std::ostringstream s;
   s.precision(17);
-  s << "version=" << kPrefilterVersion << " map=" << map.width << "x" << map.height
-    << " intrinsic_roughness=" << intrinsic_roughness << " " << settings.describe();
+  s << "version=" << kPrefilterVersion << " map=" << map.width << "x" << map.height;
+  if (map.wang)
+    s << " wang_tiles=" << map.wang->tile_size << "," << map.wang->tiles << "," << map.wang->seed << " tile=" << tile;
+  s << " intrinsic_roughness=" << intrinsic_roughness << " " << settings.describe();
   return s.str();
 }
 
@@ -26,7 +29,9 @@ std::string header_text(const NormalMap& map, double intrinsic_roughness, const 
 /// matched; these are the same facts in the binary part, which a damaged entry can contradict.
 std::string mismatch(const PrefilteredNdf& p, const NormalMap& map, double intrinsic_roughness,
                      const PrefilterSettings& settings) {
-  if (p.width != map.width || p.height != map.height) return "its map size is not the map's";
+  const int width = map.wang ? map.wang->tile_size : map.width, height = map.wang ? map.wang->tile_size : map.height;
+  if (p.width != width || p.height != height) return "its map size is not the map's";
+  if (p.partial != map.wang.has_value()) return "it is not the kind of pyramid the map has";
   if (p.intrinsic_roughness != intrinsic_roughness) return "its intrinsic roughness differs";
   // ndf_resolution and block_size 0 ask for a grid chosen from the map (choose_ndf_grid).
   const auto differs = [](int stored, int asked) { return asked != 0 && stored != asked; };
@@ -40,13 +45,14 @@ std::string mismatch(const PrefilteredNdf& p, const NormalMap& map, double intri
 }  // namespace
 
 std::string prefiltered_ndf_built_from(const NormalMap& map, double intrinsic_roughness,
-                                      const PrefilterSettings& settings) {
-  return header_text(map, intrinsic_roughness, settings);
+                                      const PrefilterSettings& settings, int tile) {
+  return header_text(map, intrinsic_roughness, settings, tile);
 }
 
-std::string prefiltered_ndf_key(const NormalMap& map, double intrinsic_roughness, const PrefilterSettings& settings) {
+std::string prefiltered_ndf_key(const NormalMap& map, double intrinsic_roughness, const PrefilterSettings& settings,
+                                int tile) {
   Hasher h;
-  h.text(header_text(map, intrinsic_roughness, settings));
+  h.text(header_text(map, intrinsic_roughness, settings, tile));
   h.span(std::span<const glm::vec3>(map.normals));
   char name[40];
   std::snprintf(name, sizeof name, "pndf-%016llx.bin", static_cast<unsigned long long>(h.digest()));
@@ -55,11 +61,15 @@ std::string prefiltered_ndf_key(const NormalMap& map, double intrinsic_roughness
 
 PrefilteredNdf load_or_precompute_prefiltered_ndf(const NormalMap& map, double intrinsic_roughness,
                                                   const PrefilterSettings& settings,
-                                                  const std::filesystem::path& cache_directory) {
-  const std::string header = header_text(map, intrinsic_roughness, settings);
+                                                  const std::filesystem::path& cache_directory, int tile) {
+  if ((tile >= 0) != map.wang.has_value())
+    throw InputError(map.wang ? "a map of Wang tiles has a pyramid per tile: name the tile"
+                              : "a plain map has no Wang tiles' pyramids");
+  const std::string header = header_text(map, intrinsic_roughness, settings, tile);
   const std::filesystem::path path =
-      cache_directory.empty() ? std::filesystem::path()
-                              : cache_directory / "prefiltered-ndf" / prefiltered_ndf_key(map, intrinsic_roughness, settings);
+      cache_directory.empty()
+          ? std::filesystem::path()
+          : cache_directory / "prefiltered-ndf" / prefiltered_ndf_key(map, intrinsic_roughness, settings, tile);
   bool replaceable = true;
   if (!path.empty()) {
     CacheEntryRead entry = read_cache_entry(path, kPrefilteredNdfMagic, header, kMaxBinaryFileBytes);
@@ -86,7 +96,8 @@ PrefilteredNdf load_or_precompute_prefiltered_ndf(const NormalMap& map, double i
     const FileKind kind = file_kind(path, false);
     replaceable = kind == FileKind::missing || kind == FileKind::regular;
   }
-  PrefilteredNdf p = precompute_prefiltered_ndf(map, intrinsic_roughness, settings);
+  PrefilteredNdf p = tile >= 0 ? precompute_wang_tile_pyramid(map, tile, intrinsic_roughness, settings)
+                                : precompute_prefiltered_ndf(map, intrinsic_roughness, settings);
   if (!path.empty() && replaceable) {
     std::ostringstream out;
     p.write(out);
@@ -94,6 +105,19 @@ PrefilteredNdf load_or_precompute_prefiltered_ndf(const NormalMap& map, double i
       std::fprintf(stderr, "glintlab: warning: cannot store the pyramid in the cache: %s\n", failed.c_str());
   }
   return p;
+}
+
+std::vector<PrefilteredNdf> load_or_precompute_pyramids(const NormalMap& map, double intrinsic_roughness,
+                                                        const PrefilterSettings& settings,
+                                                        const std::filesystem::path& cache_directory) {
+  std::vector<PrefilteredNdf> out;
+  if (!map.wang) {
+    out.push_back(load_or_precompute_prefiltered_ndf(map, intrinsic_roughness, settings, cache_directory));
+    return out;
+  }
+  for (int tile = 0; tile < 16; ++tile)
+    out.push_back(load_or_precompute_prefiltered_ndf(map, intrinsic_roughness, settings, cache_directory, tile));
+  return out;
 }
 
 }  // namespace glintlab

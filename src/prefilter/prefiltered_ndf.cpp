@@ -73,20 +73,18 @@ NdfGridChoice choose_ndf_grid(const PrefilterSettings& settings, double extent, 
   return c;
 }
 
-std::uint64_t prefiltered_ndf_bytes_bound(const PrefilterSettings& settings, int width, int height,
-                                          bool box_prefix_tables) {
+std::uint64_t pyramid_bytes_bound(const PrefilterSettings& settings,
+                                  const std::vector<std::array<std::uint64_t, 2>>& level_footprints, bool box_prefix_tables) {
   // Before the map's extent is known: the finest grid ndf_resolution 0 may choose.
   const NdfGridChoice grid = choose_ndf_grid(settings, 1.0, settings.ndf_resolution == 0 ? 1e-6 : 1.0);
   const std::uint64_t blocks = static_cast<std::uint64_t>(grid.resolution / grid.block_size) *
                                static_cast<std::uint64_t>(grid.resolution / grid.block_size);
   const std::uint64_t rank = static_cast<std::uint64_t>(settings.cp.rank);
   const std::uint64_t b = static_cast<std::uint64_t>(grid.block_size);
-  std::uint64_t nx = static_cast<std::uint64_t>(base_footprints(width, settings));
-  std::uint64_t ny = static_cast<std::uint64_t>(base_footprints(height, settings));
   // The header's words and the zeros that align its three value regions to vec4s
   // (src/prefilter/prefiltered_ndf_layout.hpp).
-  std::uint64_t bytes = 4 * 12 + 4 * 9;
-  for (int level = 0; level < settings.max_levels; ++level) {
+  std::uint64_t bytes = 4 * 16 + 4 * 9;
+  for (const auto& [nx, ny] : level_footprints) {
     bytes += 4 * 8;  // the level's words
     const std::uint64_t footprints = nx * ny;
     const std::uint64_t g = static_cast<std::uint64_t>(settings.group_footprints);
@@ -95,11 +93,22 @@ std::uint64_t prefiltered_ndf_bytes_bound(const PrefilterSettings& settings, int
     // ((B + 1) x R each); a record per footprint and an offset per group.
     bytes += 4 * (footprints * blocks * rank + groups * blocks * (4 * b + 2) * rank) + sizeof(FootprintRecord) * footprints +
              4 * groups + (box_prefix_tables ? 4 * footprints * blocks * (2 * rank + 1) : 0);
+  }
+  return bytes;
+}
+
+std::uint64_t prefiltered_ndf_bytes_bound(const PrefilterSettings& settings, int width, int height,
+                                          bool box_prefix_tables) {
+  std::uint64_t nx = static_cast<std::uint64_t>(base_footprints(width, settings));
+  std::uint64_t ny = static_cast<std::uint64_t>(base_footprints(height, settings));
+  std::vector<std::array<std::uint64_t, 2>> levels;
+  for (int level = 0; level < settings.max_levels; ++level) {
+    levels.push_back({nx, ny});
     if (nx == 1 && ny == 1) break;
     nx = (nx + 1) / 2;
     ny = (ny + 1) / 2;
   }
-  return bytes;
+  return pyramid_bytes_bound(settings, levels, box_prefix_tables);
 }
 
 std::size_t PrefilteredNdf::storage_bytes() const {

@@ -6,6 +6,7 @@
 // eq. 5); point queries (sec. 4.3, eq. 6) and box queries through the angular factors' prefix sums
 // (sec. 4.4, eq. 7). The layout below is also the GPU's (src/render/prefiltered_ndf_buffers.cpp,
 // shaders/glints/normal-map/prefiltered_ndf.glsl); docs/methods.md#deng2022 explains every choice.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <glm/vec2.hpp>
@@ -66,6 +67,11 @@ struct NdfGridChoice {
 /// `box_prefix_tables`, their (N/B)^2 (2R + 1) floats per footprint too (box_prefix_tables.hpp).
 std::uint64_t prefiltered_ndf_bytes_bound(const PrefilterSettings& settings, int width, int height,
                                           bool box_prefix_tables = false);
+
+/// The bound above for a pyramid of levels of level_footprints[l] = {nx, ny} footprints.
+std::uint64_t pyramid_bytes_bound(const PrefilterSettings& settings,
+                                  const std::vector<std::array<std::uint64_t, 2>>& level_footprints,
+                                  bool box_prefix_tables);
 
 /// One level of the pyramid: nx x ny footprints of standard deviation sigma texels, centred at
 /// origin + ((i + 0.5) spacing.x, (j + 0.5) spacing.y), grouped in groups_x x groups_y tensors.

@@ -57,24 +57,37 @@ PrefilteredNdf precompute_wang_tile_pyramid(const NormalMap& map, int tile, doub
   out.width = t;
   out.height = t;
   out.partial = true;
-  const double element_variance = pnd.element_sigma() * pnd.element_sigma();
-  // Level l: sigma_0 2^l, centres sigma_0 2^l apart, symmetric about the tile's centre (one at it)
-  // and reaching 3 sigma of the footprint widened by an element, plus a texel, past the tile.
+  const std::vector<PrefilterLevel> levels = wang_tile_levels(settings, t);
   const LevelLayout layout = [&](int l) -> std::optional<PrefilterLevel> {
-    if (l > 0 && out.levels.back().sigma >= t) return std::nullopt;
-    PrefilterLevel level;
-    level.sigma = settings.base_stride * std::ldexp(1.0, l);
-    const double spacing = level.sigma;
-    const double reach = kElementTruncation * std::sqrt(level.sigma * level.sigma + element_variance) + 1.0;
-    const int half = static_cast<int>(std::ceil((0.5 * t + reach) / spacing));
-    level.nx = level.ny = 2 * half + 1;
-    level.spacing = glm::dvec2(spacing);
-    level.origin = glm::dvec2(0.5 * t - (half + 0.5) * spacing);
-    return level;
+    return l < static_cast<int>(levels.size()) ? std::optional(levels[static_cast<std::size_t>(l)]) : std::nullopt;
   };
   build_levels(out, pnd, &window, glm::dvec2(kSkirt), layout, false);
   out.precompute_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
+}
+
+std::vector<PrefilterLevel> wang_tile_levels(const PrefilterSettings& settings, int tile_size) {
+  // Level l: sigma_0 2^l up to the first at least the tile's size, centres sigma_0 2^l apart,
+  // symmetric about the tile's centre (one at it) and reaching a footprint's reach past the tile.
+  std::vector<PrefilterLevel> levels;
+  for (int l = 0; l < settings.max_levels && (levels.empty() || levels.back().sigma < tile_size); ++l) {
+    PrefilterLevel level;
+    level.sigma = settings.base_stride * std::ldexp(1.0, l);
+    const double spacing = level.sigma;
+    const int half = static_cast<int>(std::ceil((0.5 * tile_size + wang_footprint_reach(level.sigma, settings.elements_per_texel)) / spacing));
+    level.nx = level.ny = 2 * half + 1;
+    level.spacing = glm::dvec2(spacing);
+    level.origin = glm::dvec2(0.5 * tile_size - (half + 0.5) * spacing);
+    levels.push_back(level);
+  }
+  return levels;
+}
+
+std::uint64_t wang_tile_pyramids_bytes_bound(const PrefilterSettings& settings, int tile_size, bool box_prefix_tables) {
+  std::vector<std::array<std::uint64_t, 2>> sizes;
+  for (const PrefilterLevel& l : wang_tile_levels(settings, tile_size))
+    sizes.push_back({static_cast<std::uint64_t>(l.nx), static_cast<std::uint64_t>(l.ny)});
+  return 16 * (pyramid_bytes_bound(settings, sizes, box_prefix_tables) + 4);
 }
 
 double wang_footprint_reach(double sigma, int elements_per_texel) {

@@ -16,6 +16,7 @@
 #include <functional>
 #include <glm/vec2.hpp>
 #include <span>
+#include <vector>
 
 #include "prefilter/prefiltered_ndf.hpp"
 #include "scene/normal_maps/normal_map.hpp"
@@ -31,6 +32,14 @@ PrefilteredNdf precompute_wang_tile_pyramid(const NormalMap& map, int tile, doub
 /// The cell where the lattice of `map` first puts `tile` (row by row over its period), or {-1, -1}
 /// where it never does (its pyramid is then made from its atlas place, and no query reads it).
 std::array<int, 2> wang_tile_placement(const NormalMap& map, int tile);
+
+/// The levels of a tile's pyramid (no footprint yet): sigma_0 2^l (sigma_0 = base_stride) up to the
+/// first at least the tile's size, centres sigma_0 2^l apart, symmetric about the tile's centre
+/// (one at it) and reaching wang_footprint_reach past the tile on every side.
+std::vector<PrefilterLevel> wang_tile_levels(const PrefilterSettings& settings, int tile_size);
+
+/// An upper bound of the 16 tiles' pyramids' packed bytes (prefiltered_ndf_bytes_bound's).
+std::uint64_t wang_tile_pyramids_bytes_bound(const PrefilterSettings& settings, int tile_size, bool box_prefix_tables);
 
 /// How far past a cell a footprint of deviation sigma (texels) reaches it: 3 deviations of the
 /// footprint widened by an element (the elements' truncation) and a texel.

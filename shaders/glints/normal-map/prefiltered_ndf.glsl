@@ -35,11 +35,15 @@ struct PndfHeader {
   float extent;
   uint footprints, groups, angular, rows;
   uint tables;  // the box prefix tables' first float, or PNDF_NONE
+  bool partial;  // a Wang tile's pyramid (src/prefilter/prefiltered_ndf.hpp, PrefilteredNdf::partial)
+  vec2 size;     // its map's (tile's) texels
+  int elementsPerTexel;
 };
 
-PndfHeader pndfHeader(int material) {
+// The pyramid whose header starts at word `at`.
+PndfHeader pndfHeaderAt(uint at) {
   PndfHeader h;
-  h.at = pndfRecords[material];
+  h.at = at;
   h.levels = int(pndfRecords[h.at + 0u]);
   h.n = PNDF_FIXED_N > 0 ? PNDF_FIXED_N : int(pndfRecords[h.at + 1u]);
   h.b = PNDF_FIXED_B > 0 ? PNDF_FIXED_B : int(pndfRecords[h.at + 2u]);
@@ -50,12 +54,18 @@ PndfHeader pndfHeader(int material) {
   h.angular = pndfRecords[h.at + 7u];
   h.rows = pndfRecords[h.at + 8u];
   h.tables = pndfRecords[h.at + 11u];
+  h.size = vec2(pndfRecords[h.at + 9u], pndfRecords[h.at + 10u]);
+  h.partial = pndfRecords[h.at + 12u] != 0u;
+  h.elementsPerTexel = int(pndfRecords[h.at + 13u]);
   return h;
 }
 
+// A material's pyramid (of a plain map).
+PndfHeader pndfHeader(int material) { return pndfHeaderAt(pndfRecords[material]); }
+
 bool pndfPresent(int material) { return material >= 0 && pndfRecords[material] != PNDF_NONE; }
 
-uint pndfLevelWord(PndfHeader h, int level, uint field) { return pndfRecords[h.at + 12u + 8u * uint(level) + field]; }
+uint pndfLevelWord(PndfHeader h, int level, uint field) { return pndfRecords[h.at + 16u + 8u * uint(level) + field]; }
 
 // The footprint sigma (texels) of the pyramid's first level.
 float pndfFirstSigma(PndfHeader h) { return uintBitsToFloat(pndfLevelWord(h, 0, 5u)); }
@@ -160,11 +170,14 @@ float pndfPixelRangeSumByCorners(PndfHeader h, uint f, vec2 x0, vec2 x1) {
 
 // The level and position of a footprint N(centre, sigma^2) (texels) among the stored ones:
 // trilinear (sec. 4.1): bilinear over the four nearest centres of the two levels around
-// log2(sigma / sigma_0), clamped to the first and last level. Each level's cell is kept as
+// log2(sigma / sigma_0), clamped to the first and last level. A Wang tile's (partial) pyramid
+// does not wrap: centres off its grid weigh 0; past its last level, the last level's footprint at
+// the tile's centre times the share of the footprint on the tile over that footprint's share. Each level's cell is kept as
 // scalars and its eight footprints are enumerated by pndfCorner, so that no array is indexed at
 // run time in the loops over them (a GPU would keep such an array in local memory).
 struct PndfLevelCell {
   uint first;     // the level's first footprint
+  bool wraps;     // a map's grid wraps; a tile's does not
   ivec2 count;    // its footprints per axis
   ivec2 origin;   // the cell's lower corner (footprint grid coordinates, not yet wrapped)
   vec2 fraction;  // the centre's position in the cell
@@ -177,14 +190,40 @@ struct PndfInterpolation {
 PndfLevelCell pndfLevelCell(PndfHeader h, vec2 centre, int level, float levelWeight) {
   const ivec2 count = ivec2(pndfLevelWord(h, level, 0u), pndfLevelWord(h, level, 1u));
   const vec2 spacing = vec2(uintBitsToFloat(pndfLevelWord(h, level, 2u)), uintBitsToFloat(pndfLevelWord(h, level, 3u)));
-  const vec2 g = centre / spacing - 0.5;
+  const vec2 origin = vec2(uintBitsToFloat(pndfLevelWord(h, level, 6u)), uintBitsToFloat(pndfLevelWord(h, level, 7u)));
+  const vec2 g = (centre - origin) / spacing - 0.5;
   const vec2 g0 = floor(g);
-  return PndfLevelCell(pndfLevelWord(h, level, 4u), count, ivec2(g0), g - g0, levelWeight);
+  return PndfLevelCell(pndfLevelWord(h, level, 4u), !h.partial, count, ivec2(g0), g - g0, levelWeight);
+}
+
+// erf(x) (Abramowitz & Stegun 7.1.26, absolute error below 1.5e-7).
+float pndfErf(float x) {
+  const float t = 1.0 / (1.0 + 0.3275911 * abs(x));
+  const float y = 1.0 - t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429)))) *
+                            exp(-x * x);
+  return sign(x) * y;
+}
+
+// The share of N(centre, (sigma^2 + the elements' variance) I) on a partial pyramid's tile
+// [0, size]^2 (PrefilteredNdf::tile_share).
+float pndfTileShare(PndfHeader h, vec2 centre, float sigma) {
+  const float element = 1.5 / (float(h.elementsPerTexel) * 3.4641016);  // 1.5 / (k sqrt 12)
+  const float s = sqrt(2.0 * (sigma * sigma + element * element));
+  const vec2 share = 0.5 * vec2(pndfErf((h.size.x - centre.x) / s) - pndfErf(-centre.x / s),
+                                pndfErf((h.size.y - centre.y) / s) - pndfErf(-centre.y / s));
+  return share.x * share.y;
 }
 
 PndfInterpolation pndfInterpolation(PndfHeader h, vec2 centre, float sigma) {
   const int last = h.levels - 1;
   const float sigma0 = uintBitsToFloat(pndfLevelWord(h, 0, 5u));
+  const float sigmaLast = uintBitsToFloat(pndfLevelWord(h, last, 5u));
+  if (h.partial && sigma > sigmaLast) {
+    const vec2 middle = 0.5 * h.size;  // a footprint's centre of the last level
+    const float share = pndfTileShare(h, middle, sigmaLast);
+    const float scale = share > 0.0 ? pndfTileShare(h, centre, sigma) / share : 0.0;
+    return PndfInterpolation(pndfLevelCell(h, middle, last, scale), pndfLevelCell(h, middle, last, 0.0));
+  }
   const float lambda = clamp(log2(max(sigma, 1e-9) / sigma0), 0.0, float(last));
   const int l0 = min(int(lambda), last);
   const float t = lambda - float(l0);
@@ -192,13 +231,15 @@ PndfInterpolation pndfInterpolation(PndfHeader h, vec2 centre, float sigma) {
 }
 
 // Footprint q (q < 8: q / 4 the level, q % 4 the corner of its cell) of the interpolation, and
-// its weight. The grid wraps around the map (the map tiles).
+// its weight. A map's grid wraps around it (the map tiles); a Wang tile's stops.
 uint pndfCorner(PndfInterpolation interpolation, int q, out float weight) {
   const PndfLevelCell c = q < 4 ? interpolation.lower : interpolation.upper;
   const ivec2 d = ivec2(q & 1, (q >> 1) & 1);
   const ivec2 g = c.origin + d;
-  const ivec2 p = floorMod(g, c.count);
-  weight = c.weight * (d.x == 1 ? c.fraction.x : 1.0 - c.fraction.x) * (d.y == 1 ? c.fraction.y : 1.0 - c.fraction.y);
+  const ivec2 p = c.wraps ? floorMod(g, c.count) : clamp(g, ivec2(0), c.count - 1);
+  const bool on = c.wraps || g == p;  // a tile's footprint off its grid sees none of it
+  weight = on ? c.weight * (d.x == 1 ? c.fraction.x : 1.0 - c.fraction.x) * (d.y == 1 ? c.fraction.y : 1.0 - c.fraction.y)
+              : 0.0;
   return c.first + uint(p.y * c.count.x + p.x);
 }
 

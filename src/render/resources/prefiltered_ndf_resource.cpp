@@ -1,16 +1,17 @@
 // Resource `prefiltered-ndf` (deng2022; docs/methods.md#deng2022): the CP-compressed NDF pyramid
-// of every normal-map-glints material of the scene under the method's precompute settings
+// of every normal-map-glints material of the scene under the method's precompute settings (a
+// map of Wang tiles: one per tile, prefilter/wang_tile_pyramids.hpp)
 // (src/prefilter/), read from the disk cache or precomputed, packed into the two storage buffers
 // shaders/glints/normal-map/prefiltered_ndf.glsl reads (kPrefilteredNdf*Binding).
 #include <cstdio>
 #include <string>
 
 #include "core/gpu_contract.hpp"
-#include "core/error.hpp"
 #include "core/hash.hpp"
 #include "prefilter/prefilter_cache.hpp"
 #include "prefilter/prefilter_params.hpp"
 #include "prefilter/prefiltered_ndf_layout.hpp"
+#include "prefilter/wang_tile_pyramids.hpp"
 #include "render/resources/storage_buffers_resource.hpp"
 
 namespace glintlab {
@@ -19,15 +20,6 @@ namespace {
 
 bool has_pyramid(const Material& m) { return m.is("normal-map-glints") && m.normal_map; }
 
-// A pyramid is of one map; a Wang-tiled surface needs one per tile of partial footprints (Deng et
-// al. 2022 sec. 5.5), which this resource does not build yet: refused rather than answered from
-// the atlas, which is not the surface.
-void require_plain_maps(const Scene& scene) {
-  for (const Material& m : scene.materials)
-    if (has_pyramid(m) && m.normal_map->wang)
-      throw InputError("material '" + m.name + "': its normal map has wang_tiles; deng2022's pyramids are of plain maps "
-                       "only (per-tile pyramids are not built yet); allowed: yan2016 and the references on Wang tiles");
-}
 
 // deng2022's `box_queries` (src/shading/methods/deng2022.cpp): 0, prefix-tables, packs the tables
 // of constant-cost box queries; 1, blocks, does without them.
@@ -46,13 +38,13 @@ ResourceType prefiltered_ndf_resource() {
       .key =
           [](const ResourceContext& c) {
             // The settings and, per material with a pyramid, what its pyramid is made of.
-            require_plain_maps(c.scene);
             Hasher h;
             for (const Material& m : c.scene.materials) {
               h.value(has_pyramid(m));
               if (!has_pyramid(m)) continue;
-              h.text(prefiltered_ndf_key(*m.normal_map, m.kind_param("intrinsic_roughness"),
-                                         prefilter_settings_from(c.params)));
+              const PrefilterSettings settings = prefilter_settings_from(c.params);
+              for (int tile = m.normal_map->wang ? 0 : -1; tile < (m.normal_map->wang ? 16 : 0); ++tile)
+                h.text(prefiltered_ndf_key(*m.normal_map, m.kind_param("intrinsic_roughness"), settings, tile));
             }
             return prefilter_settings_from(c.params).describe() + " box_prefix_tables=" +
                    std::to_string(wants_box_prefix_tables(c.params)) + " maps=" + h.hex();
@@ -62,21 +54,25 @@ ResourceType prefiltered_ndf_resource() {
             std::uint64_t bytes = 4 * kMaxMaterials + sizeof(float);  // each material's word; a value at least
             const PrefilterSettings settings = prefilter_settings_from(c.params);
             for (const Material& m : c.scene.materials)
-              if (has_pyramid(m)) bytes += prefiltered_ndf_bytes_bound(settings, m.normal_map->width, m.normal_map->height,
-                                                                  wants_box_prefix_tables(c.params));
+              if (has_pyramid(m))
+                bytes += m.normal_map->wang ? wang_tile_pyramids_bytes_bound(settings, m.normal_map->wang->tile_size,
+                                                                             wants_box_prefix_tables(c.params))
+                                            : prefiltered_ndf_bytes_bound(settings, m.normal_map->width, m.normal_map->height,
+                                                                          wants_box_prefix_tables(c.params));
             return bytes;
           },
       .make =
           [](const ResourceContext& c) -> std::unique_ptr<GpuResource> {
             const PrefilterSettings settings = prefilter_settings_from(c.params);
-            std::vector<std::unique_ptr<PrefilteredNdf>> pyramids;
-            std::vector<const PrefilteredNdf*> per_material;
+            // A material's pyramid, or its Wang tiles' 16 (prefilter/wang_tile_pyramids.hpp).
+            std::vector<std::vector<PrefilteredNdf>> pyramids;
+            std::vector<std::vector<const PrefilteredNdf*>> per_material;
             for (const Material& m : c.scene.materials) {
-              pyramids.push_back(has_pyramid(m) ? std::make_unique<PrefilteredNdf>(load_or_precompute_prefiltered_ndf(
-                                                      *m.normal_map, m.kind_param("intrinsic_roughness"), settings,
-                                                      c.cache.directory()))
-                                                : nullptr);
-              per_material.push_back(pyramids.back().get());
+              pyramids.push_back(has_pyramid(m) ? load_or_precompute_pyramids(*m.normal_map, m.kind_param("intrinsic_roughness"),
+                                                                              settings, c.cache.directory())
+                                                : std::vector<PrefilteredNdf>{});
+              per_material.emplace_back();
+              for (const PrefilteredNdf& p : pyramids.back()) per_material.back().push_back(&p);
             }
             const PrefilteredNdfBuffers packed =
                 pack_prefiltered_ndfs(per_material, kMaxMaterials, wants_box_prefix_tables(c.params));

@@ -1,0 +1,132 @@
+// Deng et al. 2022's queries on a surface of Wang tiles (sec. 5.5, fig. 12), the GLSL twin of
+// src/prefilter/wang_tile_pyramids.cpp (wang_tiles_density): a footprint's NDF is the sum over the
+// cells it reaches of the cell's tile's partial NDF at the footprint's centre relative to the cell,
+// each from that tile's pyramid (prefiltered_ndf.glsl; a material's 16 tile headers in
+// src/prefilter/prefiltered_ndf_layout.hpp). The tile at a cell comes from the hashed lattice
+// (core/wang_tiles.glsl), as the surface's texels do (core/normal_map.glsl).
+//
+// The cost is one pyramid query per cell reached: constant while a footprint is under a tile
+// (at most 4 x 4 cells at the last level's sigma, about the tile's size), growing with its area
+// past that. Past WANG_MAX_CELLS cells a stratified subset stands for them: the cells cut into
+// s x s blocks, one cell per block chosen by a hash of the block (fixed on the surface), weighed
+// s^2; unbiased over the hash, its error the tiles' arrangement's, not a lost part of the footprint.
+#include "core/wang_tiles.glsl"
+#include "glints/normal-map/ndf_sampling.glsl"  // pndfMass, pndfSample, the reservoir
+#include "glints/normal-map/prefiltered_ndf.glsl"
+
+const int WANG_MAX_CELLS = 64;
+
+struct WangPyramids {
+  uint table;  // the word of the material's 16 tile header offsets
+  int tileSize, tiles;
+  uint seed;
+  int elementsPerTexel;
+  float firstSigma;
+};
+
+WangPyramids wangPyramids(int material, int tileSize, int tiles, uint seed) {
+  WangPyramids w;
+  w.table = pndfRecords[material];
+  w.tileSize = tileSize;
+  w.tiles = tiles;
+  w.seed = seed;
+  const PndfHeader first = pndfHeaderAt(pndfRecords[w.table]);
+  w.elementsPerTexel = first.elementsPerTexel;
+  w.firstSigma = pndfFirstSigma(first);
+  return w;
+}
+
+PndfHeader wangTileHeader(WangPyramids w, int tile) { return pndfHeaderAt(pndfRecords[w.table + uint(tile)]); }
+
+// The cells a footprint reaches (wang_footprint_reach), as a block-strided walk: `count` cells of
+// stride `stride` from `first`, each standing for stride^2.
+struct WangCells {
+  ivec2 first, count;
+  int stride;
+};
+
+WangCells wangCells(WangPyramids w, vec2 centre, float sigma) {
+  const float element = 1.5 / (float(w.elementsPerTexel) * 3.4641016);
+  const float reach = 3.0 * sqrt(sigma * sigma + element * element) + 1.0;
+  const ivec2 lo = ivec2(floor((centre - reach) / float(w.tileSize))), hi = ivec2(floor((centre + reach) / float(w.tileSize)));
+  WangCells c;
+  c.stride = 1;
+  const ivec2 n = hi - lo + 1;
+  while ((n.x + c.stride - 1) / c.stride * ((n.y + c.stride - 1) / c.stride) > WANG_MAX_CELLS) ++c.stride;
+  c.first = lo;
+  c.count = (n + c.stride - 1) / c.stride;
+  return c;
+}
+
+// Cell i of the walk (the block's own at stride 1, else the one its hash picks), and its tile.
+ivec2 wangCell(WangPyramids w, WangCells c, int i, out int tile) {
+  ivec2 block = ivec2(i % c.count.x, i / c.count.x);
+  ivec2 cell = c.first + block * c.stride;
+  if (c.stride > 1) {
+    const uint h = hash3(uvec3(uvec2(c.first + block * c.stride), uint(c.stride) ^ 0x5eedu));
+    cell += ivec2(int(h % uint(c.stride)), int((h / uint(c.stride)) % uint(c.stride)));
+  }
+  tile = wangTile(cell, w.tiles, w.seed);
+  return cell;
+}
+
+float wangDensity(WangPyramids w, vec2 centre, float sigma, vec2 s) {
+  const WangCells c = wangCells(w, centre, sigma);
+  const float scale = float(c.stride * c.stride);
+  float sum = 0.0;
+  for (int i = 0; i < c.count.x * c.count.y; ++i) {
+    int tile;
+    const ivec2 cell = wangCell(w, c, i, tile);
+    sum += pndfDensity(wangTileHeader(w, tile), centre - vec2(cell * w.tileSize), sigma, s);
+  }
+  return scale * sum;
+}
+
+float wangRangeMean(WangPyramids w, vec2 centre, float sigma, vec2 lo, vec2 hi, bool prefixTables) {
+  const WangCells c = wangCells(w, centre, sigma);
+  const float scale = float(c.stride * c.stride);
+  float sum = 0.0;
+  for (int i = 0; i < c.count.x * c.count.y; ++i) {
+    int tile;
+    const ivec2 cell = wangCell(w, c, i, tile);
+    sum += pndfRangeMean(wangTileHeader(w, tile), centre - vec2(cell * w.tileSize), sigma, lo, hi, prefixTables);
+  }
+  return scale * sum;
+}
+
+// The footprint's mass in the square (the sampler's normaliser).
+float wangMass(WangPyramids w, vec2 centre, float sigma) {
+  const WangCells c = wangCells(w, centre, sigma);
+  const float scale = float(c.stride * c.stride);
+  float sum = 0.0;
+  for (int i = 0; i < c.count.x * c.count.y; ++i) {
+    int tile;
+    const ivec2 cell = wangCell(w, c, i, tile);
+    sum += pndfMass(wangTileHeader(w, tile), centre - vec2(cell * w.tileSize), sigma);
+  }
+  return scale * sum;
+}
+
+// Sampling across tiles: a cell by its mass (a weighted reservoir; the paper picks one uniformly),
+// then its tile's sampler (pndfSample) at the centre relative to the cell. The density of s is
+// then the sum over cells of mass_i / total times cell i's density over its mass: wangDensity over
+// wangMass, which the pdf returned is.
+NdfSample wangSample(WangPyramids w, vec2 centre, float sigma, uint seed, vec2 u) {
+  const WangCells c = wangCells(w, centre, sigma);
+  float total = 0.0;
+  int chosen = -1;
+  for (int i = 0; i < c.count.x * c.count.y; ++i) {
+    int tile;
+    const ivec2 cell = wangCell(w, c, i, tile);
+    const float m = pndfMass(wangTileHeader(w, tile), centre - vec2(cell * w.tileSize), sigma);
+    if (ndfReservoirTakes(m, total, ndfChoiceUniform(seed, 30u, uint(i)))) chosen = i;
+  }
+  if (chosen < 0) return NO_NDF_SAMPLE;
+  int tile;
+  const ivec2 cell = wangCell(w, c, chosen, tile);
+  NdfSample x = pndfSample(wangTileHeader(w, tile), centre - vec2(cell * w.tileSize), sigma, seed, u);
+  if (x.pdf <= 0.0) return NO_NDF_SAMPLE;
+  const float mass = float(c.stride * c.stride) * total;
+  x.pdf = wangDensity(w, centre, sigma, x.s) / mass;
+  return x.pdf > 0.0 ? x : NO_NDF_SAMPLE;
+}

@@ -13,6 +13,8 @@
 #include "prefilter/box_prefix_tables.hpp"
 #include "prefilter/position_normal.hpp"
 #include "prefilter/prefilter_cache.hpp"
+#include "prefilter/wang_tile_pyramids.hpp"
+#include "scene/normal_maps/wang_tiles.hpp"
 
 namespace glintlab {
 
@@ -91,6 +93,115 @@ nlohmann::json accuracy(const PrefilteredNdf& p, const NormalMap& map, int count
   return levels;
 }
 
+/// A Wang-tiled surface's footprint NDF image from its tiles' pyramids: every pixel a box query
+/// summed over the reached cells' tiles.
+NdfImage wang_query_image(const NormalMap& map, const std::vector<PrefilteredNdf>& tiles, glm::dvec2 centre, double sigma) {
+  const PrefilteredNdf& any = tiles.front();
+  NdfImage img{any.grid, std::vector<float>(any.grid.pixel_count(), 0.0f)};
+  const double h = any.grid.pixel_size();
+  for_each_reached_tile(map, centre, sigma, any.settings.elements_per_texel,
+                        [&](std::array<std::int64_t, 2>, int tile, glm::dvec2 local) {
+                          const PrefilteredNdf& p = tiles[static_cast<std::size_t>(tile)];
+                          for (int j = 0; j < any.grid.resolution; ++j)
+                            for (int i = 0; i < any.grid.resolution; ++i) {
+                              const glm::dvec2 lo = any.grid.pixel_centre(i, j) - 0.5 * h;
+                              img.values[static_cast<std::size_t>(j) * any.grid.resolution + i] +=
+                                  static_cast<float>(p.range_mean(local, sigma, lo, lo + h));
+                            }
+                        });
+  return img;
+}
+
+/// The exact NDF image of a footprint on a Wang-tiled surface: Yan 2016's sum over the elements of
+/// the surface around it (a window of the surface wide enough that the footprint's reach stays inside).
+NdfImage wang_exact_image(const NormalMap& map, double sigma_r, int k, glm::dvec2 centre, double sigma, const NdfGrid& grid) {
+  const int half = static_cast<int>(std::ceil(wang_footprint_reach(sigma, k))) + 4;
+  const glm::ivec2 corner = glm::ivec2(glm::floor(centre)) - half;
+  NormalMap window{.width = 2 * half, .height = 2 * half, .normals = {}, .description = {}};
+  for (int y = 0; y < 2 * half; ++y)
+    for (int x = 0; x < 2 * half; ++x) window.normals.push_back(surface_texel(map, corner.x + x, corner.y + y));
+  return PositionNormalDistribution(window, sigma_r, k).image(Footprint::isotropic(centre - glm::dvec2(corner), sigma), grid);
+}
+
+/// The report of a Wang-tiled map's 16 tile pyramids: their sums per level, and (count > 0) the
+/// surface's footprint NDFs from them against the exact ones, anywhere on the surface.
+nlohmann::json wang_report(const Material& m, const std::vector<PrefilteredNdf>& tiles, const PrefilterReportOptions& options,
+                           double seconds) {
+  const NormalMap& map = *m.normal_map;
+  const PrefilteredNdf& any = tiles.front();
+  std::size_t bytes = 0, tables = 0;
+  double precompute = 0.0;
+  for (const PrefilteredNdf& p : tiles) {
+    bytes += p.storage_bytes();
+    tables += box_prefix_tables_bytes(p);
+    precompute += p.precompute_seconds;
+  }
+  std::printf("material '%s': %s, a %dx%d surface of 16 Wang tiles of %d^2, sigma_r %g\n  %s\n", m.name.c_str(),
+              map.description.c_str(), map.surface_width(), map.surface_height(), map.wang->tile_size,
+              any.intrinsic_roughness, options.settings.describe().c_str());
+  std::printf("  a pyramid per tile: NDF images %dx%d in %dx%d blocks over |s| <= %.3f, %zu levels, %.2f MB in all "
+              "(box_queries = prefix-tables adds %.2f MB on the GPU), whatever the surface's size; precompute %.1f s "
+              "(this run %.1f s)\n",
+              any.grid.resolution, any.grid.resolution, any.settings.block_size, any.settings.block_size, any.grid.extent,
+              any.levels.size(), bytes / 1e6, tables / 1e6, precompute, seconds);
+  std::printf("  %5s %8s %11s %12s %12s %10s %10s   (16 tiles' sums; CP error their mean)\n", "level", "sigma",
+              "footprints", "kept blocks", "CP error", "NDF (s)", "CP (s)");
+  nlohmann::json levels = nlohmann::json::array();
+  for (std::size_t l = 0; l < any.levels.size(); ++l) {
+    std::size_t footprints = 0, kept = 0;
+    double error = 0.0, ndf = 0.0, cp = 0.0;
+    for (const PrefilteredNdf& p : tiles) {
+      const PrefilterLevel& v = p.levels[l];
+      footprints += static_cast<std::size_t>(v.nx) * v.ny;
+      kept += v.kept_blocks;
+      error += v.compression_error / 16.0;
+      ndf += v.ndf_seconds;
+      cp += v.compress_seconds;
+    }
+    std::printf("  %5zu %8.2f %11zu %12zu %12.4f %10.1f %10.1f\n", l, any.levels[l].sigma, footprints, kept, error, ndf, cp);
+    levels.push_back({{"sigma", any.levels[l].sigma}, {"footprints", footprints}, {"kept_blocks", kept},
+                      {"compression_error", error}, {"ndf_seconds", ndf}, {"compress_seconds", cp}});
+  }
+  nlohmann::json entry = {{"material", m.name},
+                          {"map", map.description},
+                          {"wang_tiles", {{"tile_size", map.wang->tile_size}, {"tiles", map.wang->tiles}, {"seed", map.wang->seed}}},
+                          {"width", map.surface_width()},
+                          {"height", map.surface_height()},
+                          {"settings", options.settings.describe()},
+                          {"rank", any.rank()},
+                          {"ndf_resolution", any.grid.resolution},
+                          {"block_size", any.settings.block_size},
+                          {"storage_bytes", bytes},
+                          {"box_prefix_tables_bytes", tables},
+                          {"precompute_seconds", precompute},
+                          {"levels", levels}};
+  if (options.accuracy_footprints <= 0) return entry;
+  std::printf("  accuracy against yan2016 on the surface (relative L2 of NDF images; %d footprints per sigma, anywhere):\n",
+              options.accuracy_footprints);
+  std::printf("  %8s %12s %10s %12s\n", "sigma", "error", "mass", "query (us)");
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  nlohmann::json accuracy = nlohmann::json::array();
+  for (const PrefilterLevel& level : any.levels) {
+    double error = 0.0, mass = 0.0, query_us = 0.0;
+    for (int q = 0; q < options.accuracy_footprints; ++q) {
+      const glm::dvec2 centre(u(rng) * map.surface_width(), u(rng) * map.surface_height());
+      const double sigma = level.sigma * std::pow(2.0, u(rng));
+      const auto t0 = Clock::now();
+      const NdfImage ours = wang_query_image(map, tiles, centre, sigma);
+      query_us += std::chrono::duration<double, std::micro>(Clock::now() - t0).count() / any.grid.pixel_count();
+      error += relative_l2(ours, wang_exact_image(map, any.intrinsic_roughness, any.settings.elements_per_texel, centre,
+                                                  sigma, any.grid));
+      mass += ours.mass();
+    }
+    const double n = options.accuracy_footprints;
+    std::printf("  %8.2f %12.4f %10.4f %12.3f\n", level.sigma, error / n, mass / n, query_us / n);
+    accuracy.push_back({{"sigma", level.sigma}, {"error", error / n}, {"mass", mass / n}, {"box_query_microseconds", query_us / n}});
+  }
+  entry["accuracy"] = accuracy;
+  return entry;
+}
+
 }  // namespace
 
 void run_prefilter_report(const Scene& scene, const PrefilterReportOptions& options) {
@@ -99,6 +210,13 @@ void run_prefilter_report(const Scene& scene, const PrefilterReportOptions& opti
   for (const Material& m : scene.materials) {
     if (!m.is("normal-map-glints") || !m.normal_map) continue;
     const auto t0 = Clock::now();
+    if (m.normal_map->wang) {
+      const std::vector<PrefilteredNdf> tiles = load_or_precompute_pyramids(
+          *m.normal_map, m.kind_param("intrinsic_roughness"), options.settings,
+          options.use_cache ? default_table_cache_directory() : std::filesystem::path());
+      out.push_back(wang_report(m, tiles, options, std::chrono::duration<double>(Clock::now() - t0).count()));
+      continue;
+    }
     const PrefilteredNdf p = load_or_precompute_prefiltered_ndf(
         *m.normal_map, m.kind_param("intrinsic_roughness"), options.settings,
         options.use_cache ? default_table_cache_directory() : std::filesystem::path());

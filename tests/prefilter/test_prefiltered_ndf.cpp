@@ -12,6 +12,7 @@
 #include <string>
 
 #include "core/cache_entry.hpp"
+#include "core/error.hpp"
 #include "prefilter/box_prefix_tables.hpp"
 #include "prefilter/ndf_precompute.hpp"
 #include "prefilter/position_normal.hpp"
@@ -375,6 +376,33 @@ TEST(PrefilteredNdf, CacheRoundTripsAndRebuildsADamagedEntry) {
 /// Entries that a checksum cannot catch (a consistent frame around wrong bytes, as a bug or a
 /// hostile writer makes them) and special files: each one is reported, and the pyramid is rebuilt
 /// equal to the precompute's.
+// The pyramid fuzzer's seeds (fuzz/corpus/pyramid/) are payloads of the current entry format: the
+// seed of a real entry reads, and the two findings are refused by check_consistent (a seed of an
+// old format would fail at its first bytes and fuzz nothing past them).
+TEST(PrefilteredNdf, TheFuzzSeedsAreOfTheCurrentFormat) {
+  const auto read = [](const char* name) {
+    std::ifstream in(std::string(GLINTLAB_SOURCE_DIR "/fuzz/corpus/pyramid/") + name, std::ios::binary);
+    std::stringstream bytes;
+    bytes << in.rdbuf();
+    std::istringstream payload(bytes.str());
+    return PrefilteredNdf::read(payload);
+  };
+  const PrefilteredNdf seed = read("bumps-16-rank2.bin");
+  EXPECT_EQ(seed.width, 16);
+  EXPECT_EQ(seed.rank(), 2);
+  EXPECT_FALSE(seed.partial);
+  for (const char* finding : {"finding-tiny-spacing.bin", "finding-tiny-extent.bin"}) {
+    try {
+      (void)read(finding);
+      ADD_FAILURE() << finding << " reads";
+    } catch (const RuntimeFailure& e) {
+      const std::string what = e.what();
+      EXPECT_TRUE(what.find("bad footprint grid") != std::string::npos || what.find("extent") != std::string::npos)
+          << finding << ": " << what;
+    }
+  }
+}
+
 TEST(PrefilteredNdf, CacheRebuildsEveryInconsistentOrSpecialEntry) {
   const test::ScratchDirectory dir;
   const PrefilterSettings s = small_settings();

@@ -108,6 +108,24 @@ TEST(WangTiles, TheSurfaceAnywhereIsItsCellsTile) {
   EXPECT_THROW(WangTileSet(input, 65, 0), std::invalid_argument);
 }
 
+// Each tile's interior is a patch of its own: the diamonds, shared by every tile of an edge's colour,
+// keep a band along the edges, and past it no two tiles take their texels from the same place, so
+// the surface is not a lattice of four diamonds' contents.
+TEST(WangTiles, EachTileHasAnInteriorOfItsOwn) {
+  const NormalMap input = generate_bumps(128, 0.3f, 32, 8, 5);
+  const int t = 32;
+  const WangTileSet set(input, t, 7);
+  for (int a = 0; a < 16; ++a) {
+    const auto centre = set.source(a, t / 2, t / 2);
+    for (int b = a + 1; b < 16; ++b) EXPECT_NE(set.source(b, t / 2, t / 2), centre) << a << ", " << b;
+    // The band: every texel within one texel of an edge comes from the edge's diamond, which the
+    // tiles that share the colour share (the south edge's row of tile a and of another tile of its colour).
+    for (int b = 0; b < 16; ++b)
+      if (b != a && ((b >> 2) & 1) == ((a >> 2) & 1))
+        for (int x = 1; x < t - 1; ++x) EXPECT_EQ(set.source(b, x, 0), set.source(a, x, 0)) << a << ", " << b << ", x " << x;
+  }
+}
+
 // A map of Wang tiles (make_wang_tiled_map): the atlas of the set's tiles, a surface of P T texels
 // that repeats every P tiles (the lattice's period), each texel its cell's tile's; the storage is
 // the 16 tiles whatever P is.
@@ -136,8 +154,10 @@ TEST(WangTiles, ATiledMapsSurfaceRepeatsWithItsPeriodAndReadsTheAtlas) {
 }
 
 // The seams inside the tiles: neighbouring texels that are not neighbours in the input, and how
-// much their normals differ. The minimum-error cut may only lower it (the straight diagonal is one
-// of the cuts it chooses among), and on a rough map it lowers it clearly.
+// much their normals differ. The minimum-error cuts (between diamonds near the diagonals, between
+// the edges' diamonds and the tile's centre patch) lower it against straight boundaries (measured
+// 0.88 and 0.87 of it on a rough bumps map: the centre patch's boundary, about 4 T texels long
+// between uncorrelated samples, leaves the cuts less to choose from than the diagonals alone, 0.45).
 TEST(WangTiles, TheMinimumErrorCutLowersTheSeamsInsideTiles) {
   const NormalMap input = generate_bumps(128, 0.4f, 48, 12, 8);
   auto seam_energy = [&](const WangTileSet& set) {
@@ -158,6 +178,6 @@ TEST(WangTiles, TheMinimumErrorCutLowersTheSeamsInsideTiles) {
   for (const int t : {32, 33}) {
     const double straight = seam_energy(WangTileSet(input, t, 4, false)), cut = seam_energy(WangTileSet(input, t, 4));
     std::cout << "tile " << t << ": seam energy straight " << straight << ", cut " << cut << "\n";
-    EXPECT_LT(cut, 0.8 * straight) << t;
+    EXPECT_LT(cut, 0.9 * straight) << t;
   }
 }

@@ -43,8 +43,8 @@ WangEdges WangLattice::cell(std::int32_t i, std::int32_t j) const {
 
 namespace {
 
-/// Edges of a tile, as labels of its texels: each texel copies the diamond of one of its edges.
-enum Edge { kSouth, kNorth, kWest, kEast };
+/// Where a tile's texel is copied from: the diamond of one of its edges, or the tile's own centre patch.
+enum Edge { kSouth, kNorth, kWest, kEast, kCentre };
 
 /// One quarter of a tile, seen from its corner: local (x', y') in [0, half)^2 maps to the tile's
 /// texel, and `along_u` and `along_v` are the edges that meet at the corner (S or N, W or E).
@@ -109,6 +109,52 @@ std::vector<int> minimum_error_cut(int half, const Mismatch& mismatch) {
   return tau;
 }
 
+/// How deep into the tile from edge e the diamond reaches at position a along the edge, before the
+/// tile's centre patch takes over: for each a, depth tau_a in [lo_a, hi_a] (texels from the edge;
+/// hi_a: how many texels from the edge the edge's label holds, lo_a: the band every edge keeps,
+/// clamped to hi_a), moving by at most 2 from a to a + 1 where the bounds allow (the cut stays
+/// connected), minimising the seam it makes: `across(a, tau)`, the cost of the pair of texels the
+/// boundary separates in column a, plus `along(a, p, tau)`, that of the pairs between columns a - 1
+/// (depth p) and a (depth tau). `cut` false: tau_a = lo_a (a straight band).
+template <typename Across, typename Along>
+std::vector<int> centre_cut(const std::vector<int>& lo, const std::vector<int>& hi, bool cut, const Across& across,
+                            const Along& along) {
+  const int n = static_cast<int>(lo.size());
+  if (!cut) return lo;
+  int deepest = 0;
+  for (int v : hi) deepest = std::max(deepest, v);
+  std::vector<std::vector<double>> best(n, std::vector<double>(deepest + 1, INFINITY));
+  std::vector<std::vector<int>> from(n, std::vector<int>(deepest + 1, -1));
+  for (int a = 0; a < n; ++a)
+    for (int t = lo[a]; t <= hi[a]; ++t) {
+      double previous = 0.0;
+      if (a > 0) {
+        previous = INFINITY;
+        for (int p = std::max(lo[a - 1], t - 2); p <= std::min(hi[a - 1], t + 2); ++p)
+          if (best[a - 1][p] + along(a, p, t) < previous) {
+            previous = best[a - 1][p] + along(a, p, t);
+            from[a][t] = p;
+          }
+        if (previous == INFINITY)  // the bounds jumped: join the nearest depth of the column before
+          for (int p = lo[a - 1]; p <= hi[a - 1]; ++p)
+            if (best[a - 1][p] < INFINITY && (from[a][t] < 0 || std::abs(p - t) < std::abs(from[a][t] - t))) {
+              previous = best[a - 1][p];
+              from[a][t] = p;
+            }
+      }
+      best[a][t] = previous + across(a, t);
+    }
+  std::vector<int> tau(n);
+  int at = lo[n - 1];
+  for (int t = lo[n - 1]; t <= hi[n - 1]; ++t)
+    if (best[n - 1][t] < best[n - 1][at]) at = t;
+  for (int a = n - 1; a >= 0; --a) {
+    tau[a] = at;
+    if (a > 0) at = from[a][at] >= 0 ? from[a][at] : lo[a - 1];
+  }
+  return tau;
+}
+
 }  // namespace
 
 WangTileSet::WangTileSet(const NormalMap& input, int tile_size, std::uint32_t seed, bool cut) : tile_size_(tile_size) {
@@ -120,10 +166,15 @@ WangTileSet::WangTileSet(const NormalMap& input, int tile_size, std::uint32_t se
   // Where in the input each edge colour's diamond is centred: [0, 1] for the edges along u, [2, 3]
   // for those along v.
   std::mt19937 random(seed);
+  const auto anywhere = [&]() -> std::array<int, 2> {
+    return {std::uniform_int_distribution<int>(0, input.width - 1)(random),
+            std::uniform_int_distribution<int>(0, input.height - 1)(random)};
+  };
   std::array<std::array<int, 2>, 4> centre{};
-  for (auto& c : centre)
-    c = {std::uniform_int_distribution<int>(0, input.width - 1)(random),
-         std::uniform_int_distribution<int>(0, input.height - 1)(random)};
+  for (auto& c : centre) c = anywhere();
+  // And each tile's own centre patch, so that no two tiles share their interior.
+  std::array<std::array<int, 2>, 16> patch{};
+  for (auto& p : patch) p = anywhere();
 
   const int t = tile_size, half = tile_size / 2;
   normals_.resize(16 * static_cast<std::size_t>(t) * t);
@@ -132,6 +183,9 @@ WangTileSet::WangTileSet(const NormalMap& input, int tile_size, std::uint32_t se
     const std::array<int, 4> colour = {(tile >> 2) & 1, tile & 1, (tile >> 3) & 1, (tile >> 1) & 1};  // S, N, W, E
     // The texel (x, y) of edge e's diamond: offsets from the edge's midpoint into the input.
     auto source_of = [&](Edge e, int x, int y) -> std::array<int, 2> {
+      if (e == kCentre)
+        return {static_cast<int>(wrapped(patch[static_cast<std::size_t>(tile)][0] + x - half, input.width)),
+                static_cast<int>(wrapped(patch[static_cast<std::size_t>(tile)][1] + y - half, input.height))};
       const std::array<int, 2> c = centre[(e == kSouth || e == kNorth ? 0 : 2) + colour[e]];
       const std::array<int, 2> offset = e == kSouth   ? std::array<int, 2>{x - half, y}
                                         : e == kNorth ? std::array<int, 2>{x - half, y - t}
@@ -165,6 +219,59 @@ WangTileSet::WangTileSet(const NormalMap& input, int tile_size, std::uint32_t se
           for (int lx = 0; lx < half; ++lx)
             label[static_cast<std::size_t>(tile_y(ly)) * t + tile_x(lx)] = lx - ly > tau[lx + ly] ? q.along_u : q.along_v;
       }
+    // The centre patch: every texel at least t / 4 texels from every edge (the core) is the tile's
+    // own patch; in each edge's region the diamond keeps a band of t / 8 texels (at least one) from
+    // the edge, and between band and core the boundary is again a minimum-error cut (per position
+    // along the edge, the depth where the diamond gives way). Local coordinates: a along the edge,
+    // b the depth from it.
+    const int band = std::max(1, t / 8), core = std::max(band + 1, t / 4);
+    for (const Edge e : {kSouth, kNorth, kWest, kEast}) {
+      auto at = [&](int a, int b) -> std::pair<int, int> {  // (x, y) of local (a, b)
+        switch (e) {
+          case kSouth: return {a, b};
+          case kNorth: return {a, t - 1 - b};
+          case kWest: return {b, a};
+          default: return {t - 1 - b, a};
+        }
+      };
+      // region: how deep the edge's label reaches; hi: where the cut must end (the core, or the region's end).
+      std::vector<int> lo(static_cast<std::size_t>(t)), hi(static_cast<std::size_t>(t)), region(static_cast<std::size_t>(t));
+      for (int a = 0; a < t; ++a) {
+        int depth = 0;
+        while (depth < t) {
+          const auto [x, y] = at(a, depth);
+          if (label[static_cast<std::size_t>(y) * t + x] != e) break;
+          ++depth;
+        }
+        region[static_cast<std::size_t>(a)] = depth;
+        hi[static_cast<std::size_t>(a)] = std::min(depth, core);
+        lo[static_cast<std::size_t>(a)] = std::min(band, hi[static_cast<std::size_t>(a)]);
+      }
+      // The seam between texel (a, b) taken from `first` and its neighbour (a2, b2) from `second`.
+      auto seam = [&](Edge first, int a, int b, Edge second, int a2, int b2) {
+        const auto [x, y] = at(a, b);
+        const auto [x2, y2] = at(a2, b2);
+        const glm::vec3 d = normal_of(first, x, y) - normal_of(second, x2, y2);
+        return static_cast<double>(glm::dot(d, d));
+      };
+      const std::vector<int> tau = centre_cut(
+          lo, hi, cut,
+          [&](int a, int b) {  // the diamond's last texel of the column against the patch's first
+            return b >= 1 && b < region[static_cast<std::size_t>(a)] ? seam(e, a, b - 1, kCentre, a, b) : 0.0;
+          },
+          [&](int a, int p, int b) {  // between the columns, the depths where one is diamond, the other patch
+            double sum = 0.0;
+            for (int d = std::min(p, b); d < std::max(p, b); ++d)
+              if (d < region[static_cast<std::size_t>(a - 1)] && d < region[static_cast<std::size_t>(a)])
+                sum += p < b ? seam(kCentre, a - 1, d, e, a, d) : seam(e, a - 1, d, kCentre, a, d);
+            return sum;
+          });
+      for (int a = 0; a < t; ++a)
+        for (int b = tau[static_cast<std::size_t>(a)]; b < region[static_cast<std::size_t>(a)]; ++b) {
+          const auto [x, y] = at(a, b);
+          label[static_cast<std::size_t>(y) * t + x] = kCentre;
+        }
+    }
     for (int y = 0; y < t; ++y)
       for (int x = 0; x < t; ++x) {
         const auto s = source_of(label[static_cast<std::size_t>(y) * t + x], x, y);

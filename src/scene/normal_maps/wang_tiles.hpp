@@ -14,6 +14,13 @@
 // are neighbours in the input: no seam between tiles. Inside a tile two diamonds meet along each
 // half-diagonal; as Cohen et al. (after Efros & Freeman 2001's quilting) the boundary there is the
 // minimum-error cut, the path near the diagonal along which the two diamonds differ least.
+//
+// With two colours a direction there are only four diamonds, and a surface made of them alone is a
+// lattice of edge-centred diamonds of two contents each: a pattern at the tile's period that the eye
+// finds at once, whatever the input. So past a band of T / 8 texels from its edges each tile takes a
+// patch of its own from the input (16 more samples), the boundary again a minimum-error cut (per
+// position along an edge, the depth at which the diamond gives way); the edges, and so the absence
+// of seams between tiles, are the diamonds'.
 #include <array>
 #include <cstdint>
 #include <glm/vec3.hpp>
@@ -56,8 +63,9 @@ class WangLattice {
 class WangTileSet {
  public:
   /// Cuts the tiles from `input` (read periodically: glintlab's generated maps tile), the four
-  /// diamonds at offsets drawn from `seed`. tile_size at least 2 and at most the input's size.
-  /// `cut` false: the straight diagonals (to measure what the cut saves).
+  /// diamonds and the 16 centre patches at offsets drawn from `seed`. tile_size at least 2 and at
+  /// most the input's size. `cut` false: straight boundaries (the diagonals, the band's edge: to
+  /// measure what the cuts save).
   WangTileSet(const NormalMap& input, int tile_size, std::uint32_t seed, bool cut = true);
 
   [[nodiscard]] int tile_size() const { return tile_size_; }

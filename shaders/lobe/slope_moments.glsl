@@ -1,8 +1,9 @@
 // The slope moments of the material's normal map (src/render/gpu_scene.cpp): (Bx, By, Bx^2, By^2)
 // and Bx By, mipmapped by plain averaging, so that one filtered lookup over the pixel's texture
 // footprint gives the mean and the covariance of the slopes there (LEAN mapping).
-#include "lobe/roughness_filtering.glsl"
+#include "core/material_inputs.glsl"  // the map's filter coordinates (core/normal_map.glsl)
 #include "core/surface.glsl"
+#include "lobe/roughness_filtering.glsl"
 #include "generated/gpu_contract.glsl"
 
 layout(binding = SLOPE_MOMENTS_UNIT) uniform sampler2D uSlopeMoments;

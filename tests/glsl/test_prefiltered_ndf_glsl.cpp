@@ -13,6 +13,7 @@
 #include "chi_square.hpp"
 #include "core/gpu_contract.hpp"
 #include "gl_fixture.hpp"
+#include "ndf_histogram.hpp"
 #include "prefilter/ndf_precompute.hpp"
 #include "prefilter/ndf_sampling.hpp"
 #include "prefilter/position_normal.hpp"
@@ -160,8 +161,6 @@ TEST(PrefilteredNdfGlsl, SamplesFollowTheDensityTheMethodEvaluates) {
   for (const auto& [tables, centre, sigma] : {std::tuple{true, glm::vec2(11.3f, 20.6f), 1.7f}, {false, glm::vec2(4.5f, 4.5f), 2.0f}}) {
     const BoundPyramid bound(tables);
     const PrefilteredNdf& p = bound.pyramid;
-    const int side = p.grid.resolution + 1;
-    const double area = p.grid.pixel_area();
     std::vector<glm::vec4> a, b;
     for (int i = 0; i < kSamples; ++i) {
       a.emplace_back(centre, sigma, 2.0f);
@@ -174,27 +173,17 @@ vec4 evaluate(vec4 a, vec4 b) {
 })",
                                    a, b);
     const auto cpu_pdf = [&](double s_sigma, glm::dvec2 s) { return prefiltered_ndf_pdf(p, glm::dvec2(centre), s_sigma, s); };
-    std::vector<double> observed(static_cast<std::size_t>(side * side), 0.0), expected(observed.size()),
-        wrong(observed.size());
-    int outside = 0;
+    std::vector<glm::dvec2> samples;
     for (const glm::vec4& x : out) {
       ASSERT_GT(x.z, 0.0f) << "a sample";
       const glm::dvec2 s(x.x, x.y);
       ASSERT_NEAR(x.z, x.w, 1e-5 * x.w) << "the sample's pdf is pndfSamplePdf's";
       ASSERT_NEAR(x.z, cpu_pdf(sigma, s), 2e-3 * x.z + 1e-4) << "the C++ density over the C++ mass";
-      const glm::dvec2 g = p.grid.to_pixels(s) + 0.5;
-      const int i = static_cast<int>(std::floor(g.x)), j = static_cast<int>(std::floor(g.y));
-      if (i < 0 || j < 0 || i >= side || j >= side) {
-        ++outside;
-        continue;
-      }
-      observed[static_cast<std::size_t>(j * side + i)] += 1;
+      samples.push_back(s);
     }
-    for (int c = 0; c < side * side; ++c) {
-      const glm::dvec2 at = glm::dvec2(c % side, c / side) * p.grid.pixel_size() - p.grid.extent;
-      expected[static_cast<std::size_t>(c)] = cpu_pdf(sigma, at) * area * kSamples;
-      wrong[static_cast<std::size_t>(c)] = cpu_pdf(2.0 * sigma, at) * area * kSamples;
-    }
+    const auto [observed, outside] = ndf_histogram(samples, p.grid);
+    const std::vector<double> expected = ndf_expected_counts(p.grid, samples.size(), [&](glm::dvec2 s) { return cpu_pdf(sigma, s); });
+    const std::vector<double> wrong = ndf_expected_counts(p.grid, samples.size(), [&](glm::dvec2 s) { return cpu_pdf(2.0 * sigma, s); });
     const auto chi = chi_square(observed, expected);
     std::printf("GLSL deng2022 sampler at sigma %.2f (%s): %s\n", sigma, tables ? "prefix tables" : "block by block",
                 (std::ostringstream() << chi).str().c_str());

@@ -13,6 +13,7 @@
 #include "chi_square.hpp"
 #include "core/gpu_contract.hpp"
 #include "gl_fixture.hpp"
+#include "ndf_histogram.hpp"
 #include "prefilter/prefiltered_ndf_layout.hpp"
 #include "prefilter/wang_tile_pyramids.hpp"
 #include "scene/normal_maps/wang_tiles.hpp"
@@ -128,25 +129,15 @@ vec4 evaluate(vec4 a, vec4 b) {
     const auto pdf = [&](double s_sigma, glm::dvec2 s) {
       return wang_tiles_density(bound.map, bound.tiles, glm::dvec2(centre), s_sigma, s) / mass;
     };
-    const int side = any.grid.resolution + 1;
-    std::vector<double> observed(static_cast<std::size_t>(side * side), 0.0), expected(observed.size()), wrong(observed.size());
-    int outside = 0;
+    std::vector<glm::dvec2> samples;
     for (const glm::vec4& x : out) {
       ASSERT_GT(x.z, 0.0f) << "a sample";
       ASSERT_NEAR(x.z, pdf(sigma, glm::dvec2(x.x, x.y)), 3e-3 * x.z + 1e-3) << "the C++ density over the C++ mass";
-      const glm::dvec2 g = any.grid.to_pixels(glm::dvec2(x.x, x.y)) + 0.5;
-      const int i = static_cast<int>(std::floor(g.x)), j = static_cast<int>(std::floor(g.y));
-      if (i < 0 || j < 0 || i >= side || j >= side) {
-        ++outside;
-        continue;
-      }
-      observed[static_cast<std::size_t>(j * side + i)] += 1;
+      samples.emplace_back(x.x, x.y);
     }
-    for (int c = 0; c < side * side; ++c) {
-      const glm::dvec2 at = glm::dvec2(c % side, c / side) * any.grid.pixel_size() - any.grid.extent;
-      expected[static_cast<std::size_t>(c)] = pdf(sigma, at) * any.grid.pixel_area() * kSamples;
-      wrong[static_cast<std::size_t>(c)] = pdf(0.5 * sigma, at) * any.grid.pixel_area() * kSamples;
-    }
+    const auto [observed, outside] = ndf_histogram(samples, any.grid);
+    const std::vector<double> expected = ndf_expected_counts(any.grid, samples.size(), [&](glm::dvec2 s) { return pdf(sigma, s); });
+    const std::vector<double> wrong = ndf_expected_counts(any.grid, samples.size(), [&](glm::dvec2 s) { return pdf(0.5 * sigma, s); });
     const auto chi = chi_square(observed, expected);
     std::printf("GLSL Wang-tile sampler at sigma %.1f over %g cells: %s\n", sigma, out.front().w,
                 (std::ostringstream() << chi).str().c_str());

@@ -15,6 +15,7 @@
 #include "core/error.hpp"
 #include "prefilter/box_prefix_tables.hpp"
 #include "prefilter/ndf_precompute.hpp"
+#include "small_pyramid_settings.hpp"
 #include "prefilter/position_normal.hpp"
 #include "prefilter/prefilter_cache.hpp"
 #include "prefilter/prefilter_params.hpp"
@@ -24,15 +25,7 @@
 namespace glintlab {
 namespace {
 
-PrefilterSettings small_settings() {
-  PrefilterSettings s;
-  s.ndf_resolution = 32;
-  s.block_size = 8;
-  s.base_stride = 1;
-  s.group_footprints = 4;
-  s.cp.rank = 16;
-  return s;
-}
+PrefilterSettings small_settings() { return test::small_pyramid_settings(); }
 
 const NormalMap& bumps() {
   static const NormalMap map = generate_bumps(32, 0.25f, 48, 6, 9);

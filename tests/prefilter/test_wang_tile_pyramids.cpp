@@ -12,6 +12,7 @@
 
 #include "core/error.hpp"
 #include "prefilter/ndf_precompute.hpp"
+#include "small_pyramid_settings.hpp"
 #include "prefilter/position_normal.hpp"
 #include "prefilter/wang_tile_pyramids.hpp"
 #include "scene/normal_maps/wang_tiles.hpp"
@@ -19,14 +20,7 @@
 namespace glintlab {
 namespace {
 
-PrefilterSettings small_settings() {
-  PrefilterSettings s;
-  s.ndf_resolution = 32;
-  s.block_size = 8;
-  s.base_stride = 1;
-  s.cp.rank = 16;
-  return s;
-}
+PrefilterSettings small_settings() { return test::small_pyramid_settings(); }
 
 constexpr double kSigmaR = 0.03;
 

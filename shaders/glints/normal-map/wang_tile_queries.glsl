@@ -70,41 +70,47 @@ ivec2 wangCell(WangPyramids w, WangCells c, int i, out int tile) {
   return cell;
 }
 
+int wangCellCount(WangCells c) { return c.count.x * c.count.y; }
+// Each cell stands for stride^2 of them.
+float wangCellWeight(WangCells c) { return float(c.stride * c.stride); }
+
+// Cell i's tile's pyramid, and the footprint's centre relative to the cell.
+PndfHeader wangCellPyramid(WangPyramids w, WangCells c, int i, vec2 centre, out vec2 local) {
+  int tile;
+  const ivec2 cell = wangCell(w, c, i, tile);
+  local = centre - vec2(cell * w.tileSize);
+  return wangTileHeader(w, tile);
+}
+
 float wangDensity(WangPyramids w, vec2 centre, float sigma, vec2 s) {
   const WangCells c = wangCells(w, centre, sigma);
-  const float scale = float(c.stride * c.stride);
   float sum = 0.0;
-  for (int i = 0; i < c.count.x * c.count.y; ++i) {
-    int tile;
-    const ivec2 cell = wangCell(w, c, i, tile);
-    sum += pndfDensity(wangTileHeader(w, tile), centre - vec2(cell * w.tileSize), sigma, s);
+  for (int i = 0; i < wangCellCount(c); ++i) {
+    vec2 local;
+    sum += pndfDensity(wangCellPyramid(w, c, i, centre, local), local, sigma, s);
   }
-  return scale * sum;
+  return wangCellWeight(c) * sum;
 }
 
 float wangRangeMean(WangPyramids w, vec2 centre, float sigma, vec2 lo, vec2 hi, bool prefixTables) {
   const WangCells c = wangCells(w, centre, sigma);
-  const float scale = float(c.stride * c.stride);
   float sum = 0.0;
-  for (int i = 0; i < c.count.x * c.count.y; ++i) {
-    int tile;
-    const ivec2 cell = wangCell(w, c, i, tile);
-    sum += pndfRangeMean(wangTileHeader(w, tile), centre - vec2(cell * w.tileSize), sigma, lo, hi, prefixTables);
+  for (int i = 0; i < wangCellCount(c); ++i) {
+    vec2 local;
+    sum += pndfRangeMean(wangCellPyramid(w, c, i, centre, local), local, sigma, lo, hi, prefixTables);
   }
-  return scale * sum;
+  return wangCellWeight(c) * sum;
 }
 
 // The footprint's mass in the square (the sampler's normaliser).
 float wangMass(WangPyramids w, vec2 centre, float sigma) {
   const WangCells c = wangCells(w, centre, sigma);
-  const float scale = float(c.stride * c.stride);
   float sum = 0.0;
-  for (int i = 0; i < c.count.x * c.count.y; ++i) {
-    int tile;
-    const ivec2 cell = wangCell(w, c, i, tile);
-    sum += pndfMass(wangTileHeader(w, tile), centre - vec2(cell * w.tileSize), sigma);
+  for (int i = 0; i < wangCellCount(c); ++i) {
+    vec2 local;
+    sum += pndfMass(wangCellPyramid(w, c, i, centre, local), local, sigma);
   }
-  return scale * sum;
+  return wangCellWeight(c) * sum;
 }
 
 // Sampling across tiles: a cell by its mass (a weighted reservoir; the paper picks one uniformly),
@@ -115,18 +121,16 @@ NdfSample wangSample(WangPyramids w, vec2 centre, float sigma, uint seed, vec2 u
   const WangCells c = wangCells(w, centre, sigma);
   float total = 0.0;
   int chosen = -1;
-  for (int i = 0; i < c.count.x * c.count.y; ++i) {
-    int tile;
-    const ivec2 cell = wangCell(w, c, i, tile);
-    const float m = pndfMass(wangTileHeader(w, tile), centre - vec2(cell * w.tileSize), sigma);
+  for (int i = 0; i < wangCellCount(c); ++i) {
+    vec2 local;
+    const float m = pndfMass(wangCellPyramid(w, c, i, centre, local), local, sigma);
     if (ndfReservoirTakes(m, total, ndfChoiceUniform(seed, 30u, uint(i)))) chosen = i;
   }
   if (chosen < 0) return NO_NDF_SAMPLE;
-  int tile;
-  const ivec2 cell = wangCell(w, c, chosen, tile);
-  NdfSample x = pndfSample(wangTileHeader(w, tile), centre - vec2(cell * w.tileSize), sigma, seed, u);
+  vec2 local;
+  const PndfHeader h = wangCellPyramid(w, c, chosen, centre, local);
+  NdfSample x = pndfSample(h, local, sigma, seed, u);
   if (x.pdf <= 0.0) return NO_NDF_SAMPLE;
-  const float mass = float(c.stride * c.stride) * total;
-  x.pdf = wangDensity(w, centre, sigma, x.s) / mass;
+  x.pdf = wangDensity(w, centre, sigma, x.s) / (wangCellWeight(c) * total);
   return x.pdf > 0.0 ? x : NO_NDF_SAMPLE;
 }

@@ -349,6 +349,8 @@ int run_cli(int argc, char** argv) {
   program->add_flag("--textures", program_o.textures, "the material's parameters vary per texel (glTF's textures)");
   program->add_flag("--anisotropic", program_o.anisotropic,
                     "the material's lobe can be anisotropic (unequal alphas, a slope correlation, glTF's anisotropy)");
+  program->add_flag("--wang-tiles", program_o.wang_tiles,
+                    "the normal map is a surface of Wang tiles (normal-map-glints; docs/scene-format.md)");
   program->add_option("--lights", program_o.lights, "lights of each kind, KIND=COUNT,...")->default_str(program_o.lights);
   program->add_option("--stage", program_o.stage, "fragment or vertex")->default_str(program_o.stage);
   program->add_option("--driver-profile", program_o.driver_profile,

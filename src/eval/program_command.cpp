@@ -23,11 +23,15 @@ std::string program_module(ShaderLibrary& shaders, const std::string& method, co
   return method_program_module(shaders, *choices[0].method, choices[0].params);
 }
 
-MaterialVariant program_material_variant(const std::string& kind_id, bool normal_map, bool textures, bool anisotropic) {
+MaterialVariant program_material_variant(const std::string& kind_id, bool normal_map, bool textures, bool anisotropic,
+                                         bool wang_tiles) {
   const MaterialKind& kind = kind_id.empty() ? default_material_kind() : find_material_kind(kind_id);
   if (kind.requires_normal_map && !normal_map)
     throw InputError("--material-kind " + kind.id + ": the kind requires a normal map; add --normal-map");
-  return {kind.code(), normal_map, textures, anisotropic};
+  if (wang_tiles && (kind.id != "normal-map-glints" || !normal_map))
+    throw InputError("--wang-tiles: a normal-map-glints material's normal map only; allowed with --material-kind "
+                     "normal-map-glints --normal-map");
+  return {kind.code(), normal_map, textures, anisotropic, wang_tiles};
 }
 
 std::string program_source(const ProgramOptions& o) {
@@ -41,7 +45,7 @@ std::string program_source(const ProgramOptions& o) {
   ShaderLibrary shaders(profile);
   add_contract_sources(shaders);
   const std::string module = program_module(shaders, o.method, o.params);
-  return forward_program_text(shaders, module, program_material_variant(o.material_kind, o.normal_map, o.textures, o.anisotropic),
+  return forward_program_text(shaders, module, program_material_variant(o.material_kind, o.normal_map, o.textures, o.anisotropic, o.wang_tiles),
                               parse_light_counts(o.lights, "--lights"), stage);
 }
 

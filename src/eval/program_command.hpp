@@ -16,6 +16,7 @@ struct ProgramOptions {
   bool normal_map = false;
   bool textures = false;
   bool anisotropic = false;
+  bool wang_tiles = false;              ///< the normal map is a surface of Wang tiles (normal-map-glints only)
   std::string lights = "point=1";       ///< parse_light_counts
   std::string stage = "fragment";       ///< fragment or vertex
   std::string driver_profile = "software";
@@ -36,10 +37,11 @@ inline constexpr ProgramPass kProgramPasses[] = {{"reference", kReferenceModule}
 /// resolve_methods does, naming the passes too.
 std::string program_module(ShaderLibrary& shaders, const std::string& method, const std::vector<std::string>& params);
 
-/// The material variant of --material-kind/--normal-map/--textures/--anisotropic; throws InputError for an
-/// unknown kind or a kind that requires a normal map without one.
+/// The material variant of --material-kind/--normal-map/--textures/--anisotropic/--wang-tiles; throws
+/// InputError for an unknown kind, a kind that requires a normal map without one, or Wang tiles on a
+/// kind other than normal-map-glints (the scene file refuses them there too).
 MaterialVariant program_material_variant(const std::string& kind, bool normal_map, bool textures,
-                                         bool anisotropic = false);
+                                         bool anisotropic = false, bool wang_tiles = false);
 
 /// The program's text; throws InputError naming the option for a bad value.
 std::string program_source(const ProgramOptions& options);

@@ -104,7 +104,7 @@ vec4 evaluate(vec4 a, vec4 b) {
 }
 
 TEST(WangTileQueriesGlsl, SamplingAcrossTilesFollowsTheDensity) {
-  constexpr int kSamples = 20000;
+  constexpr int kSamples = 12000;
   const BoundTiles bound;
   const PrefilteredNdf& any = bound.tiles.front();
   std::mt19937 rng(6);

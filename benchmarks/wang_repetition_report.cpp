@@ -31,16 +31,9 @@ namespace {
 
 constexpr int kElementsPerTexel = 1;
 
-/// The exact NDF image of N(centre, sigma^2 I) on a map's surface (any place: it wraps), from the
-/// elements of a window of the surface around it wide enough for the footprint's reach.
+/// The exact NDF image of a footprint on a map's surface (one element per texel: the study's cost).
 NdfImage exact_image(const NormalMap& map, double sigma_r, glm::dvec2 centre, double sigma, const NdfGrid& grid) {
-  const int half = static_cast<int>(std::ceil(wang_footprint_reach(sigma, kElementsPerTexel))) + 4;
-  const glm::ivec2 corner = glm::ivec2(glm::floor(centre)) - half;
-  NormalMap window{.width = 2 * half, .height = 2 * half, .normals = {}, .description = {}};
-  for (int y = 0; y < 2 * half; ++y)
-    for (int x = 0; x < 2 * half; ++x) window.normals.push_back(surface_texel(map, corner.x + x, corner.y + y));
-  return PositionNormalDistribution(window, sigma_r, kElementsPerTexel)
-      .image(Footprint::isotropic(centre - glm::dvec2(corner), sigma), grid);
+  return exact_surface_image(map, sigma_r, kElementsPerTexel, centre, sigma, grid);
 }
 
 }  // namespace

@@ -112,17 +112,6 @@ NdfImage wang_query_image(const NormalMap& map, const std::vector<PrefilteredNdf
   return img;
 }
 
-/// The exact NDF image of a footprint on a Wang-tiled surface: Yan 2016's sum over the elements of
-/// the surface around it (a window of the surface wide enough that the footprint's reach stays inside).
-NdfImage wang_exact_image(const NormalMap& map, double sigma_r, int k, glm::dvec2 centre, double sigma, const NdfGrid& grid) {
-  const int half = static_cast<int>(std::ceil(wang_footprint_reach(sigma, k))) + 4;
-  const glm::ivec2 corner = glm::ivec2(glm::floor(centre)) - half;
-  NormalMap window{.width = 2 * half, .height = 2 * half, .normals = {}, .description = {}};
-  for (int y = 0; y < 2 * half; ++y)
-    for (int x = 0; x < 2 * half; ++x) window.normals.push_back(surface_texel(map, corner.x + x, corner.y + y));
-  return PositionNormalDistribution(window, sigma_r, k).image(Footprint::isotropic(centre - glm::dvec2(corner), sigma), grid);
-}
-
 /// The report of a Wang-tiled map's 16 tile pyramids: their sums per level, and (count > 0) the
 /// surface's footprint NDFs from them against the exact ones, anywhere on the surface.
 nlohmann::json wang_report(const Material& m, const std::vector<PrefilteredNdf>& tiles, const PrefilterReportOptions& options,
@@ -190,8 +179,8 @@ nlohmann::json wang_report(const Material& m, const std::vector<PrefilteredNdf>&
       const auto t0 = Clock::now();
       const NdfImage ours = wang_query_image(map, tiles, centre, sigma);
       query_us += std::chrono::duration<double, std::micro>(Clock::now() - t0).count() / any.grid.pixel_count();
-      error += relative_l2(ours, wang_exact_image(map, any.intrinsic_roughness, any.settings.elements_per_texel, centre,
-                                                  sigma, any.grid));
+      error += relative_l2(ours, exact_surface_image(map, any.intrinsic_roughness, any.settings.elements_per_texel, centre,
+                                                     sigma, any.grid));
       mass += ours.mass();
     }
     const double n = options.accuracy_footprints;

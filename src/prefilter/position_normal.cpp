@@ -77,7 +77,7 @@ PositionNormalDistribution::PositionNormalDistribution(const NormalMap& map, dou
     }
 }
 
-double PositionNormalDistribution::element_sigma() const { return 1.5 / (k_ * std::sqrt(12.0)); }
+double PositionNormalDistribution::element_sigma() const { return position_normal_element_sigma(k_); }
 
 const PositionNormalDistribution::Element& PositionNormalDistribution::element(int ex, int ey) const {
   const int w = width() * k_, h = height() * k_;

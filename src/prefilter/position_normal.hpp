@@ -4,6 +4,7 @@
 // surface that a Gaussian pixel footprint sees, evaluated by brute force over Gaussian elements.
 // This is the exact baseline `yan2016` (its GLSL twin is shaders/glints/normal-map/position_normal.glsl) and
 // the source of every NDF image deng2022 precomputes. docs/methods.md#yan2016 has the derivation.
+#include <cmath>
 #include <cstdint>
 #include <glm/mat2x2.hpp>
 #include <glm/vec2.hpp>
@@ -27,8 +28,12 @@ struct Footprint {
 /// and axis, before wrapping): a Wang tile's (prefilter/wang_tile_pyramids.hpp).
 struct ElementWindow {
   glm::ivec2 lo{0}, hi{0};
-  [[nodiscard]] bool contains(int ex, int ey) const { return ex >= lo.x && ey >= lo.y && ex < hi.x && ey < hi.y; }
 };
+
+/// An element's shape at k elements per texel and axis: an isotropic Gaussian of this standard
+/// deviation in texels, 1.5 / (k sqrt 12) (a box of the element's spacing, widened by 1.5 so that
+/// neighbours overlap).
+inline double position_normal_element_sigma(int elements_per_texel) { return 1.5 / (elements_per_texel * std::sqrt(12.0)); }
 
 /// Elements farther than this Mahalanobis distance from the footprint's centre (under the sum of
 /// the element's and the footprint's covariances) are skipped, in the sum and in its normaliser.
@@ -51,8 +56,7 @@ class PositionNormalDistribution {
   [[nodiscard]] int elements_per_texel() const { return k_; }
   /// Every element, (width k) x (height k), row major.
   [[nodiscard]] const std::vector<Element>& elements() const { return elements_; }
-  /// Element shape: an isotropic Gaussian of this standard deviation in texels (1.5 / (k sqrt 12):
-  /// a box of the element's spacing, widened by 1.5 so that neighbours overlap).
+  /// Element shape: position_normal_element_sigma(k).
   [[nodiscard]] double element_sigma() const;
   /// The smallest square half-width that holds every element's mean plus 4 of its deviations.
   [[nodiscard]] double suggested_extent() const;

@@ -1,5 +1,7 @@
 #include "prefilter/prefiltered_ndf.hpp"
 
+#include "prefilter/position_normal.hpp"
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -208,7 +210,7 @@ std::vector<PrefilteredNdf::Weighted> PrefilteredNdf::interpolation(glm::dvec2 c
 }
 
 double PrefilteredNdf::tile_share(glm::dvec2 centre, double sigma) const {
-  const double element = 1.5 / (settings.elements_per_texel * std::sqrt(12.0));  // PositionNormalDistribution's
+  const double element = position_normal_element_sigma(settings.elements_per_texel);
   const double s = std::sqrt(sigma * sigma + element * element) * std::sqrt(2.0);
   const auto along = [&](double c, double size) { return 0.5 * (std::erf((size - c) / s) - std::erf(-c / s)); };
   return along(centre.x, width) * along(centre.y, height);

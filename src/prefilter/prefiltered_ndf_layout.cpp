@@ -40,7 +40,10 @@ std::uint32_t pack_pyramid(const PrefilteredNdf& pyramid, bool box_prefix_tables
                          word(groups_at), word(angular_at), word(rows_at), word(static_cast<std::size_t>(p->width)),
                          word(static_cast<std::size_t>(p->height)),
                          box_prefix_tables ? word(tables_at) : kNoPrefilteredNdf, p->partial ? 1u : 0u,
-                         word(static_cast<std::size_t>(p->settings.elements_per_texel)), 0u, 0u});
+                         word(static_cast<std::size_t>(p->settings.elements_per_texel)),
+                         bits(p->partial ? p->tile_share(glm::dvec2(0.5 * p->width, 0.5 * p->height), p->levels.back().sigma)
+                                         : 0.0),
+                         0u});
   for (const PrefilterLevel& l : p->levels)
     rec.insert(rec.end(), {word(static_cast<std::size_t>(l.nx)), word(static_cast<std::size_t>(l.ny)),
                            bits(l.spacing.x), bits(l.spacing.y), l.first_footprint, bits(l.sigma), bits(l.origin.x),

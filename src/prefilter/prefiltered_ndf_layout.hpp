@@ -9,7 +9,8 @@
 //   factors, [8] first float of the long factor's rows, [9] map width, [10] map height, [11] first float of the box prefix
 //   tables (src/prefilter/box_prefix_tables.hpp), or kNoPrefilteredNdf where they were not packed,
 //   [12] 1 for a Wang tile's pyramid (PrefilteredNdf::partial), else 0, [13] its elements per texel
-//   (the images' source), [14 .. 15] 0;
+//   (the images' source), [14] a tile's share of its last level's footprint at its centre
+//   (PrefilteredNdf::tile_share, float bits; 0 for a map's), [15] 0;
 //   then per level l at H + 16 + 8 l: nx, ny, spacing.x, spacing.y (float bits), first footprint,
 //   sigma, origin.x, origin.y (float bits).
 //   footprint f: 4 words (mask_lo, mask_hi, first row, group); group g: its angular offset.

@@ -42,13 +42,7 @@ PrefilteredNdf precompute_wang_tile_pyramid(const NormalMap& map, int tile, doub
   const std::array<int, 2> cell = wang_tile_placement(map, tile);
   const bool placed = cell[0] >= 0;
   const std::int64_t x0 = placed ? std::int64_t{t} * cell[0] : (tile & 3) * t, y0 = placed ? std::int64_t{t} * cell[1] : (tile >> 2) * t;
-  const int size = t + 2 * kSkirt;
-  NormalMap region{.width = size, .height = size, .normals = {}, .description = "Wang tile " + std::to_string(tile)};
-  region.normals.resize(static_cast<std::size_t>(size) * size);
-  for (int y = 0; y < size; ++y)
-    for (int x = 0; x < size; ++x)
-      region.normals[static_cast<std::size_t>(y) * size + x] =
-          surface_texel(placed ? map : atlas, x0 - kSkirt + x, y0 - kSkirt + y);
+  const NormalMap region = surface_window(placed ? map : atlas, x0 - kSkirt, y0 - kSkirt, t + 2 * kSkirt, t + 2 * kSkirt);
   const PositionNormalDistribution pnd(region, intrinsic_roughness, k);
   const ElementWindow window{.lo = glm::ivec2(kSkirt * k), .hi = glm::ivec2((kSkirt + t) * k)};
   // One NDF grid for all 16 tiles: the atlas's.
@@ -91,7 +85,7 @@ std::uint64_t wang_tile_pyramids_bytes_bound(const PrefilterSettings& settings, 
 }
 
 double wang_footprint_reach(double sigma, int elements_per_texel) {
-  const double element = 1.5 / (elements_per_texel * std::sqrt(12.0));  // PositionNormalDistribution::element_sigma
+  const double element = position_normal_element_sigma(elements_per_texel);
   return kElementTruncation * std::sqrt(sigma * sigma + element * element) + 1.0;
 }
 
@@ -118,6 +112,16 @@ double wang_tiles_density(const NormalMap& map, std::span<const PrefilteredNdf> 
                           sum += tiles[static_cast<std::size_t>(tile)].density(local, sigma, s);
                         });
   return sum;
+}
+
+NdfImage exact_surface_image(const NormalMap& map, double intrinsic_roughness, int elements_per_texel, glm::dvec2 centre,
+                             double sigma, const NdfGrid& grid) {
+  const int half = static_cast<int>(std::ceil(wang_footprint_reach(sigma, elements_per_texel))) + 4;
+  const glm::dvec2 corner = glm::floor(centre) - static_cast<double>(half);
+  const NormalMap window = surface_window(map, static_cast<std::int64_t>(corner.x), static_cast<std::int64_t>(corner.y),
+                                          2 * half, 2 * half);
+  return PositionNormalDistribution(window, intrinsic_roughness, elements_per_texel)
+      .image(Footprint::isotropic(centre - corner, sigma), grid);
 }
 
 }  // namespace glintlab

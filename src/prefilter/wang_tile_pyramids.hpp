@@ -18,6 +18,7 @@
 #include <span>
 #include <vector>
 
+#include "prefilter/ndf_image.hpp"
 #include "prefilter/prefiltered_ndf.hpp"
 #include "scene/normal_maps/normal_map.hpp"
 
@@ -49,6 +50,12 @@ double wang_footprint_reach(double sigma, int elements_per_texel);
 /// that a footprint N(centre, sigma^2 I) reaches: its tile and the centre relative to the cell.
 void for_each_reached_tile(const NormalMap& map, glm::dvec2 centre, double sigma, int elements_per_texel,
                            const std::function<void(std::array<std::int64_t, 2>, int, glm::dvec2)>& visit);
+
+/// The exact NDF image of N(centre, sigma^2 I) on a map's surface (plain or of Wang tiles, any place:
+/// it repeats): Yan 2016's sum over the elements of a window of the surface around the footprint,
+/// wide enough for its reach. What the tiles' pyramids are measured against.
+NdfImage exact_surface_image(const NormalMap& map, double intrinsic_roughness, int elements_per_texel, glm::dvec2 centre,
+                             double sigma, const NdfGrid& grid);
 
 /// P(s) of the footprint N(centre, sigma^2 I) on the surface: the sum of the reached cells' tiles'
 /// partial densities (`tiles`: the 16 pyramids, by tile). The CPU twin of the shaders' query

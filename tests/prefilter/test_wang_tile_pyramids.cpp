@@ -77,9 +77,7 @@ TEST(WangTilePyramids, PartialImagesOfTheReachedTilesAddUpToTheSurfaces) {
     std::vector<float> sum(grid.pixel_count(), 0.0f);
     for_each_reached_tile(tiled(), centre, sigma, k, [&](std::array<std::int64_t, 2> cell, int, glm::dvec2 local) {
       // The cell's own texels and skirt, as the pyramid of its tile reads them where it first lies.
-      NormalMap region{.width = t + 4, .height = t + 4, .normals = {}, .description = {}};
-      for (int y = 0; y < t + 4; ++y)
-        for (int x = 0; x < t + 4; ++x) region.normals.push_back(surface_texel(tiled(), cell[0] * t - 2 + x, cell[1] * t - 2 + y));
+      const NormalMap region = surface_window(tiled(), cell[0] * t - 2, cell[1] * t - 2, t + 4, t + 4);
       const PositionNormalDistribution part(region, kSigmaR, k);
       const ElementWindow window{.lo = glm::ivec2(2 * k), .hi = glm::ivec2((2 + t) * k)};
       part.accumulate_image(Footprint::isotropic(local + 2.0, sigma), grid, 1.0, sum.data(), &window);

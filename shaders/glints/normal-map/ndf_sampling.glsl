@@ -134,7 +134,7 @@ NdfSample positionNormalSample(sampler2D map, PositionNormalFootprint f, const i
   if (!any) return NO_NDF_SAMPLE;
   vec2 centreOfElement, p;
   mat2 J;
-  positionNormalElement(map, f.size, chosen, k, centreOfElement, p, J);
+  positionNormalElement(map, f, chosen, k, centreOfElement, p, J);
   const vec2 q = f.totalInverse * (f.centre - centreOfElement);
   const vec2 mean = p + J * (f.shapeVariance * q);
   const mat2 cov = J * f.sigmaU * transpose(J) + mat2(f.sigmaR2);

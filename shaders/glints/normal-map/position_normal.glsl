@@ -42,11 +42,6 @@ layout(std430, binding = POSITION_NORMAL_ELEMENT_JACOBIANS_BINDING) readonly buf
 };
 #endif
 
-#if defined(MATERIAL_WANG_TILES) && MATERIAL_WANG_TILES
-// A Wang-tiled surface's texels (core/normal_map.glsl), as positionNormalFootprint last read them.
-NormalMapSurface gPositionNormalSurface;
-#endif
-
 struct PositionNormalFootprint {
   vec2 centre;        // c, in texels, wrapped into [0, size)
   mat2 totalInverse;  // (Sigma_h + Sigma_p)^-1
@@ -60,6 +55,9 @@ struct PositionNormalFootprint {
   uint seed;          // the subset's hash seed (0 in the methods; tests vary it)
   ivec2 size;         // the map's texels
   uint firstElement;  // the material's first stored element (POSITION_NORMAL_STORED_ELEMENTS)
+#if defined(MATERIAL_WANG_TILES) && MATERIAL_WANG_TILES
+  NormalMapSurface surface;  // the Wang-tiled surface whose texels the elements are made of (core/normal_map.glsl)
+#endif
 };
 
 // The cells of stride s that the elements [first, last] meet along each axis.
@@ -106,7 +104,7 @@ PositionNormalFootprint positionNormalFootprint(vec2 centre, mat2 sigmaP, ivec2 
   f.seed = 0u;
   f.size = size;
 #if defined(MATERIAL_WANG_TILES) && MATERIAL_WANG_TILES
-  gPositionNormalSurface = normalMapSurface();
+  f.surface = normalMapSurface();
 #endif
   f.firstElement = 0u;
   return f;
@@ -120,32 +118,35 @@ ivec2 positionNormalCellElement(ivec2 cell, int stride, uint seed) {
   return cell * stride + ivec2(int(h % s), int((h / s) % s));
 }
 
+// Texel i of the footprint's map (wrapped; on a Wang-tiled map, the surface's texel).
+vec3 mapTexel(sampler2D map, PositionNormalFootprint f, ivec2 i) {
 #if defined(MATERIAL_WANG_TILES) && MATERIAL_WANG_TILES
-vec3 mapTexel(sampler2D map, ivec2 size, ivec2 i) { return normalMapTexel(gPositionNormalSurface, i); }
+  return normalMapTexel(f.surface, i);
 #else
-vec3 mapTexel(sampler2D map, ivec2 size, ivec2 i) { return texelFetch(map, floorMod(i, size), 0).xyz; }
+  return texelFetch(map, floorMod(i, f.size), 0).xyz;
 #endif
+}
 
 // Element e's centre, normal p_e and Jacobian J_e (columns d/du.x, d/du.y), from the texels
 // around it. k = 1: the element sits on texel centre e, its +-0.5 neighbours on the midpoints to
 // the four adjacent texels. k = 2: all five points lie in the 2 x 2 texels whose cell holds the
 // element, at fractions {0, 0.25, 0.5, 0.75, 1}.
-void positionNormalElement(sampler2D map, ivec2 size, ivec2 e, const int k, out vec2 u, out vec2 p, out mat2 J) {
+void positionNormalElement(sampler2D map, PositionNormalFootprint footprint, ivec2 e, const int k, out vec2 u, out vec2 p, out mat2 J) {
   u = (vec2(e) + 0.5) / float(k);
   if (k == 1) {
-    vec3 t = mapTexel(map, size, e);
-    vec2 px = normalize(t + mapTexel(map, size, e + ivec2(1, 0))).xy;
-    vec2 mx = normalize(t + mapTexel(map, size, e - ivec2(1, 0))).xy;
-    vec2 py = normalize(t + mapTexel(map, size, e + ivec2(0, 1))).xy;
-    vec2 my = normalize(t + mapTexel(map, size, e - ivec2(0, 1))).xy;
+    vec3 t = mapTexel(map, footprint, e);
+    vec2 px = normalize(t + mapTexel(map, footprint, e + ivec2(1, 0))).xy;
+    vec2 mx = normalize(t + mapTexel(map, footprint, e - ivec2(1, 0))).xy;
+    vec2 py = normalize(t + mapTexel(map, footprint, e + ivec2(0, 1))).xy;
+    vec2 my = normalize(t + mapTexel(map, footprint, e - ivec2(0, 1))).xy;
     p = normalize(t).xy;
     J = mat2(px - mx, py - my);  // / (2 delta), delta = 0.5
   } else {
     // Grid coordinate g = u - 0.5 = e / 2 - 0.25: cell a = floor(g), fraction 0.75 (e even) or 0.25.
     ivec2 a = ivec2(floor(u - 0.5));
     vec2 f = u - 0.5 - vec2(a);
-    vec3 t00 = mapTexel(map, size, a), t10 = mapTexel(map, size, a + ivec2(1, 0));
-    vec3 t01 = mapTexel(map, size, a + ivec2(0, 1)), t11 = mapTexel(map, size, a + ivec2(1, 1));
+    vec3 t00 = mapTexel(map, footprint, a), t10 = mapTexel(map, footprint, a + ivec2(1, 0));
+    vec3 t01 = mapTexel(map, footprint, a + ivec2(0, 1)), t11 = mapTexel(map, footprint, a + ivec2(1, 1));
 #define BILINEAR_XY(q) normalize(mix(mix(t00, t10, (q).x), mix(t01, t11, (q).x), (q).y)).xy
     p = BILINEAR_XY(f);
     J = mat2(BILINEAR_XY(f + vec2(0.25, 0.0)) - BILINEAR_XY(f - vec2(0.25, 0.0)),
@@ -270,7 +271,7 @@ float positionNormalSum(sampler2D map, PositionNormalFootprint f, const int k, v
 #ifdef POSITION_NORMAL_STORED_ELEMENTS
     positionNormalStoredElement(f, e, k, u, p, J);
 #else
-    positionNormalElement(map, f.size, e, k, u, p, J);
+    positionNormalElement(map, f, e, k, u, p, J);
 #endif
     vec2 d = f.centre - u;
     vec2 q = f.totalInverse * d;

@@ -38,6 +38,7 @@ struct PndfHeader {
   bool partial;  // a Wang tile's pyramid (src/prefilter/prefiltered_ndf.hpp, PrefilteredNdf::partial)
   vec2 size;     // its map's (tile's) texels
   int elementsPerTexel;
+  float topShare;  // a tile's: the share of its last level's footprint at its centre on it
 };
 
 // The pyramid whose header starts at word `at`.
@@ -57,6 +58,7 @@ PndfHeader pndfHeaderAt(uint at) {
   h.size = vec2(pndfRecords[h.at + 9u], pndfRecords[h.at + 10u]);
   h.partial = pndfRecords[h.at + 12u] != 0u;
   h.elementsPerTexel = int(pndfRecords[h.at + 13u]);
+  h.topShare = uintBitsToFloat(pndfRecords[h.at + 14u]);
   return h;
 }
 
@@ -204,10 +206,14 @@ float pndfErf(float x) {
   return sign(x) * y;
 }
 
+// An element's standard deviation at k elements per texel and axis, 1.5 / (k sqrt 12) texels
+// (position_normal_element_sigma).
+float pndfElementSigma(int k) { return 1.5 / (float(k) * 3.4641016); }
+
 // The share of N(centre, (sigma^2 + the elements' variance) I) on a partial pyramid's tile
 // [0, size]^2 (PrefilteredNdf::tile_share).
 float pndfTileShare(PndfHeader h, vec2 centre, float sigma) {
-  const float element = 1.5 / (float(h.elementsPerTexel) * 3.4641016);  // 1.5 / (k sqrt 12)
+  const float element = pndfElementSigma(h.elementsPerTexel);
   const float s = sqrt(2.0 * (sigma * sigma + element * element));
   const vec2 share = 0.5 * vec2(pndfErf((h.size.x - centre.x) / s) - pndfErf(-centre.x / s),
                                 pndfErf((h.size.y - centre.y) / s) - pndfErf(-centre.y / s));
@@ -220,8 +226,7 @@ PndfInterpolation pndfInterpolation(PndfHeader h, vec2 centre, float sigma) {
   const float sigmaLast = uintBitsToFloat(pndfLevelWord(h, last, 5u));
   if (h.partial && sigma > sigmaLast) {
     const vec2 middle = 0.5 * h.size;  // a footprint's centre of the last level
-    const float share = pndfTileShare(h, middle, sigmaLast);
-    const float scale = share > 0.0 ? pndfTileShare(h, centre, sigma) / share : 0.0;
+    const float scale = h.topShare > 0.0 ? pndfTileShare(h, centre, sigma) / h.topShare : 0.0;
     return PndfInterpolation(pndfLevelCell(h, middle, last, scale), pndfLevelCell(h, middle, last, 0.0));
   }
   const float lambda = clamp(log2(max(sigma, 1e-9) / sigma0), 0.0, float(last));

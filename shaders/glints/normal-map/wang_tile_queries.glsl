@@ -5,9 +5,9 @@
 // src/prefilter/prefiltered_ndf_layout.hpp). The tile at a cell comes from the hashed lattice
 // (core/wang_tiles.glsl), as the surface's texels do (core/normal_map.glsl).
 //
-// The cost is one pyramid query per cell reached: constant while a footprint is under a tile
-// (at most 4 x 4 cells at the last level's sigma, about the tile's size), growing with its area
-// past that. Past WANG_MAX_CELLS cells a stratified subset stands for them: the cells cut into
+// The cost is one pyramid query per cell reached: 1 to 4 while a footprint's reach (about 3 sigma)
+// is under a tile, up to 8 x 8 at the last level's sigma (about the tile's size), growing with its
+// area past that. Past WANG_MAX_CELLS cells a stratified subset stands for them: the cells cut into
 // s x s blocks, one cell per block chosen by a hash of the block (fixed on the surface), weighed
 // s^2; unbiased over the hash, its error the tiles' arrangement's, not a lost part of the footprint.
 #include "core/wang_tiles.glsl"
@@ -46,7 +46,7 @@ struct WangCells {
 };
 
 WangCells wangCells(WangPyramids w, vec2 centre, float sigma) {
-  const float element = 1.5 / (float(w.elementsPerTexel) * 3.4641016);
+  const float element = pndfElementSigma(w.elementsPerTexel);
   const float reach = 3.0 * sqrt(sigma * sigma + element * element) + 1.0;
   const ivec2 lo = ivec2(floor((centre - reach) / float(w.tileSize))), hi = ivec2(floor((centre + reach) / float(w.tileSize)));
   WangCells c;

@@ -322,6 +322,14 @@ const glm::vec3& surface_texel(const NormalMap& map, std::int64_t x, std::int64_
   return map.normals[static_cast<std::size_t>(wrapped(y, map.height)) * map.width + wrapped(x, map.width)];
 }
 
+NormalMap surface_window(const NormalMap& map, std::int64_t x0, std::int64_t y0, int width, int height) {
+  NormalMap window{.width = width, .height = height, .normals = {}, .description = "a window of " + map.description};
+  window.normals.reserve(static_cast<std::size_t>(width) * height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) window.normals.push_back(surface_texel(map, x0 + x, y0 + y));
+  return window;
+}
+
 NormalMap make_wang_tiled_map(const NormalMap& input, const WangTiling& tiling) {
   const int largest = std::min(input.width, input.height);
   if (tiling.tile_size < 2 || tiling.tile_size > largest)

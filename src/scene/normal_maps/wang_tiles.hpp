@@ -96,6 +96,9 @@ NormalMap make_wang_tiled_map(const NormalMap& input, const WangTiling& tiling);
 /// or, with Wang tiles, the atlas texel of the tile that its lattice puts there.
 [[nodiscard]] const glm::vec3& surface_texel(const NormalMap& map, std::int64_t x, std::int64_t y);
 
+/// The width x height texels of a map's surface from (x0, y0) (surface_texel's), as a plain map.
+[[nodiscard]] NormalMap surface_window(const NormalMap& map, std::int64_t x0, std::int64_t y0, int width, int height);
+
 /// Where texel (x, y) of a Wang-tiled map's surface lies in its atlas (x, y wrapped by the surface size).
 [[nodiscard]] std::array<int, 2> wang_atlas_texel(const WangTiling& tiling, std::int64_t x, std::int64_t y);
 

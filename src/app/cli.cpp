@@ -27,6 +27,7 @@
 #include "scene/scene_loader.hpp"
 #include "shading/method_reference.hpp"
 #include "shading/registry.hpp"
+#include "eval/metrics_command.hpp"
 #include "view/view_command.hpp"
 #include "view/view_script.hpp"
 
@@ -84,6 +85,13 @@ void add_common(CLI::App* cmd, CommonOptions& o, bool many_methods) {
       ->check(CLI::Range(1, kMaxPathFrames));
   cmd->add_flag("--no-cache", o.no_cache, "do not read or write the reference cache");
   cmd->add_flag("-q,--quiet", o.quiet, "no progress bar");
+}
+
+/// The viewing FLIP assumes, for the commands that measure (compare, animate).
+void add_metric_options(CLI::App* cmd, CommonOptions& o) {
+  cmd->add_option("--ppd", o.pixels_per_degree,
+                  "FLIP's pixels per degree of visual angle (default 67.02: 0.7 m from a 0.7 m wide 3840-pixel display)")
+      ->check(CLI::Range(1.0, 1000.0));
 }
 
 std::string default_out(const std::string& command, const CommonOptions& o) {
@@ -237,10 +245,28 @@ int run_cli(int argc, char** argv) {
   int compare_frame = 0;
   compare->add_option("--frame", compare_frame, "frame of the camera path")->default_str("0");
   compare->add_option("-o,--out", compare_o.out, "output directory (default out/compare/SCENE)");
+  add_metric_options(compare, compare_o);
+
+  auto* metrics = app.add_subcommand(
+      "metrics", "the metrics of an image file against a reference file: RMSE, FLIP (LDR and HDR), sparkle distance");
+  MetricsCommandOptions metrics_o;
+  std::string metrics_exposures;
+  metrics->add_option("test", metrics_o.test, "the image judged: .exr (radiance) or .png (sRGB picture)")->required();
+  metrics->add_option("reference", metrics_o.reference, "the reference, of the same kind and size")->required();
+  metrics->add_option("--ppd", metrics_o.pixels_per_degree, "FLIP's pixels per degree (default 67.02)")
+      ->check(CLI::Range(1.0, 1000.0));
+  metrics->add_option("--display-exposure", metrics_o.display_exposure,
+                      "stops before the ACES curve of the displayed picture LDR-FLIP judges (.exr inputs)")
+      ->default_str("0");
+  metrics->add_option("--hdr-exposures", metrics_exposures,
+                      "HDR-FLIP's exposures START,STOP,COUNT (default: automatic from the reference)");
+  metrics->add_option("--flip-map", metrics_o.flip_map, "write the FLIP error map (HDR-FLIP for .exr) to this .png");
+  metrics->add_flag("--json", metrics_o.json, "print JSON");
 
   auto* animate = app.add_subcommand("animate", "render the camera path; per-frame RMSE and flicker, videos");
   add_common(animate, animate_o, true);
   animate->add_option("-o,--out", animate_o.out, "output directory (default out/animate/SCENE)");
+  add_metric_options(animate, animate_o);
 
   auto* bench = app.add_subcommand("bench", "time each method's frame (GL timer queries and wall clock), as JSON");
   add_common(bench, bench_o, true);
@@ -399,6 +425,9 @@ int run_cli(int argc, char** argv) {
       if (compare_frame < 0 || compare_frame >= session.frames())
         throw InputError("--frame " + std::to_string(compare_frame) + ": allowed: 0 .. " + std::to_string(session.frames() - 1));
       run_compare(session, methods, compare_o.out.empty() ? default_out("compare", compare_o) : compare_o.out, compare_frame);
+    } else if (app.got_subcommand("metrics")) {
+      if (!metrics_exposures.empty()) metrics_o.hdr_exposures = parse_hdr_exposures(metrics_exposures);
+      run_metrics_command(metrics_o);
     } else if (app.got_subcommand("animate")) {
       const auto methods = resolve_methods(animate_o.methods, animate_o.params);
       if (!animate_o.out.empty()) check_output_directory(animate_o.out);

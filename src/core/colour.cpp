@@ -21,6 +21,11 @@ float srgb_encode(float v) {
   return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
 }
 
+float srgb_decode(float v) {
+  v = std::clamp(v, 0.0f, 1.0f);
+  return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+}
+
 Image tonemap_for_display(const Image& linear, float exposure_stops, float bloom) {
   const float gain = std::exp2(exposure_stops);
   Image exposed(linear.width(), linear.height());

@@ -15,6 +15,8 @@ Image tonemap_for_display(const Image& linear, float exposure_stops, float bloom
 
 float aces_filmic(float x);
 float srgb_encode(float linear);
+/// The inverse of srgb_encode (IEC 61966-2-1): a display-encoded value as the light it shows.
+float srgb_decode(float encoded);
 
 /// An 8-bit value of a display-encoded one in [0, 1] (clamped, rounded): what the PNGs, the
 /// viewer's texture and the glTF textures glintlab writes hold.

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "core/colour.hpp"
+
 namespace glintlab {
 
 namespace {
@@ -147,17 +149,73 @@ double glint_detail(const Image& image, const Image* standard_error) {
   return std::sqrt(std::max(power, 0.0));
 }
 
-ImageMetrics measure(const Image& total, const Image& specular, const Image& ref_total,
-                     const Image& ref_specular) {
+double sparkle_distance(const Image& test, const Image& ref, int block) {
+  require_same_size(test, ref);
+  require_block(block);
+  const int columns = test.width() / block, rows = test.height() / block;
+  if (columns == 0 || rows == 0) return 0.0;
+  std::vector<float> a, b;
+  double distance = 0, reference_sum = 0;
+  for (int ty = 0; ty < rows; ++ty)
+    for (int tx = 0; tx < columns; ++tx) {
+      a.clear();
+      b.clear();
+      for (int y = ty * block; y < (ty + 1) * block; ++y)
+        for (int x = tx * block; x < (tx + 1) * block; ++x) {
+          a.push_back(luminance(test.at(x, y)));
+          b.push_back(luminance(ref.at(x, y)));
+        }
+      std::sort(a.begin(), a.end());
+      std::sort(b.begin(), b.end());
+      // W1 of two empirical distributions of equal size: the mean gap between their order statistics.
+      for (std::size_t i = 0; i < a.size(); ++i) {
+        distance += std::abs(double(a[i]) - b[i]);
+        reference_sum += b[i];
+      }
+    }
+  if (reference_sum <= 0) return distance > 0 ? std::numeric_limits<double>::infinity() : 0.0;
+  return distance / reference_sum;
+}
+
+Image displayed_linear(const Image& radiance, float exposure) {
+  const float gain = std::exp2(exposure);
+  Image out(radiance.width(), radiance.height());
+  for (std::size_t i = 0; i < radiance.pixel_count(); ++i)
+    for (int c = 0; c < 3; ++c) out.pixels()[i][c] = aces_filmic(gain * radiance.pixels()[i][c]);
+  return out;
+}
+
+MetricsReference::MetricsReference(const Image& total, const Image& specular, const MetricsViewing& viewing)
+    : total_(total),
+      specular_(specular),
+      viewing_(viewing),
+      displayed_(displayed_linear(total, viewing.display_exposure), viewing.pixels_per_degree),
+      hdr_(total, viewing.pixels_per_degree, flip::automatic_exposures(total)) {}
+
+std::vector<float> MetricsReference::flip_ldr_map(const Image& total) const {
+  require_same_size(total, total_);
+  return flip::error_map(flip::Perception(displayed_linear(total, viewing_.display_exposure), viewing_.pixels_per_degree),
+                         displayed_);
+}
+
+std::vector<float> MetricsReference::flip_hdr_map(const Image& total) const {
+  require_same_size(total, total_);
+  return hdr_.error_map(total);
+}
+
+ImageMetrics MetricsReference::measure(const Image& total, const Image& specular) const {
   ImageMetrics m;
-  m.rmse = rmse(total, ref_total);
-  m.rmse_specular = rmse(specular, ref_specular);
+  m.rmse = rmse(total, total_);
+  m.rmse_specular = rmse(specular, specular_);
   m.psnr = psnr(m.rmse);
-  m.energy_ratio = energy_ratio(total, ref_total);
-  m.energy_ratio_specular = energy_ratio(specular, ref_specular);
-  m.max_error = max_abs_error(total, ref_total);
-  m.block_rmse = block_rmse(total, ref_total, kStatisticsBlock);
+  m.energy_ratio = energy_ratio(total, total_);
+  m.energy_ratio_specular = energy_ratio(specular, specular_);
+  m.max_error = max_abs_error(total, total_);
+  m.block_rmse = block_rmse(total, total_, kStatisticsBlock);
   m.glint_detail = glint_detail(total);
+  m.flip_ldr = flip::mean(flip_ldr_map(total));
+  m.flip_hdr = flip::mean(flip_hdr_map(total));
+  m.sparkle_distance = sparkle_distance(total, total_, kSparkleBlock);
   return m;
 }
 

@@ -3,6 +3,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/flip.hpp"
 #include "core/image.hpp"
 
 namespace glintlab {
@@ -39,13 +40,55 @@ double glint_detail(const Image& image, const Image* standard_error = nullptr);
 /// The tile size of compare's block_rmse.
 inline constexpr int kStatisticsBlock = 8;
 
+/// How far an image's sparkles are from the truth's in number, size and brightness, wherever they
+/// fall inside a region: in every full `block` x `block` tile, the Wasserstein-1 distance between
+/// the two images' distributions of pixel luminance (the mean absolute difference of their sorted
+/// values), averaged over tiles and divided by the reference's mean luminance there. Positions
+/// inside a tile do not count, so an independent realisation of the same glints scores only the
+/// randomness of their count per tile, while an image that keeps the light but spreads it (a
+/// smooth highlight where the truth sparkles) scores about twice the glints' share of it.
+double sparkle_distance(const Image& test, const Image& reference, int block);
+/// The tile size of sparkle_distance in compare and animate.
+inline constexpr int kSparkleBlock = 16;
+
 /// Everything `compare` reports for one method.
 struct ImageMetrics {
   double rmse = 0, rmse_specular = 0, psnr = 0, energy_ratio = 0, energy_ratio_specular = 0,
          max_error = 0, block_rmse = 0, glint_detail = 0;
+  double flip_ldr = 0;  ///< mean LDR-FLIP of the displayed pictures (the film's exposure, ACES, no bloom)
+  double flip_hdr = 0;  ///< mean HDR-FLIP of the radiance, exposures from the reference
+  double sparkle_distance = 0;  ///< sparkle_distance(total, reference, kSparkleBlock)
 };
-ImageMetrics measure(const Image& total, const Image& specular, const Image& ref_total,
-                     const Image& ref_specular);
+
+/// How the metrics look at images: the film's exposure of the displayed picture (LDR-FLIP), the
+/// viewer's pixels per degree (both FLIPs).
+struct MetricsViewing {
+  float display_exposure = 0.0f;
+  double pixels_per_degree = flip::default_pixels_per_degree();
+};
+
+/// The linear picture a display shows of `radiance`: 2^exposure, then the ACES curve the PNGs
+/// use (colour.hpp), in [0, 1] before the sRGB encoding; LDR-FLIP's input.
+Image displayed_linear(const Image& radiance, float exposure);
+
+/// A reference prepared once for measuring many images against it (FLIP perceives it once per
+/// exposure).
+class MetricsReference {
+ public:
+  MetricsReference(const Image& total, const Image& specular, const MetricsViewing& viewing);
+  [[nodiscard]] ImageMetrics measure(const Image& total, const Image& specular) const;
+  /// LDR-FLIP's and HDR-FLIP's error maps of one image.
+  [[nodiscard]] std::vector<float> flip_ldr_map(const Image& total) const;
+  [[nodiscard]] std::vector<float> flip_hdr_map(const Image& total) const;
+  [[nodiscard]] const flip::Exposures& hdr_exposures() const { return hdr_.exposures(); }
+  [[nodiscard]] const MetricsViewing& viewing() const { return viewing_; }
+
+ private:
+  Image total_, specular_;
+  MetricsViewing viewing_;
+  flip::Perception displayed_;
+  flip::HdrReference hdr_;
+};
 
 /// Flicker: the mean over pixels, RGB channels and frames t >= 1 of
 ///   |(m_t - r_t) - (m_{t-1} - r_{t-1})|,

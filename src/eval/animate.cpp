@@ -31,15 +31,31 @@ bool encode_mp4(const std::filesystem::path& frames_dir, const std::filesystem::
 
 }  // namespace
 
-void TemporalAccumulator::add_frame(const Image& method, const Image& reference) {
+void TemporalAccumulator::add_frame(const Image& method, const Image& reference, const MetricsReference* perceived) {
   rmse_per_frame_.push_back(rmse(method, reference));
+  sparkle_per_frame_.push_back(sparkle_distance(method, reference, kSparkleBlock));
+  if (perceived) {
+    flip_ldr_per_frame_.push_back(flip::mean(perceived->flip_ldr_map(method)));
+    flip_hdr_per_frame_.push_back(flip::mean(perceived->flip_hdr_map(method)));
+  }
   flicker_.add_frame(method, reference);
 }
 
+namespace {
+double mean_of(const std::vector<double>& values) {
+  return values.empty() ? 0.0 : std::accumulate(values.begin(), values.end(), 0.0) / static_cast<double>(values.size());
+}
+}  // namespace
+
 TemporalMetrics TemporalAccumulator::result(const std::string& method) const {
-  const double sum = std::accumulate(rmse_per_frame_.begin(), rmse_per_frame_.end(), 0.0);
-  return {method, rmse_per_frame_, rmse_per_frame_.empty() ? 0.0 : sum / static_cast<double>(rmse_per_frame_.size()),
-          flicker_.flicker(), flicker_.per_frame()};
+  TemporalMetrics m{method, rmse_per_frame_, mean_of(rmse_per_frame_), flicker_.flicker(), flicker_.per_frame()};
+  m.sparkle_per_frame = sparkle_per_frame_;
+  m.flip_ldr_per_frame = flip_ldr_per_frame_;
+  m.flip_hdr_per_frame = flip_hdr_per_frame_;
+  m.mean_sparkle = mean_of(sparkle_per_frame_);
+  m.mean_flip_ldr = mean_of(flip_ldr_per_frame_);
+  m.mean_flip_hdr = mean_of(flip_hdr_per_frame_);
+  return m;
 }
 
 void FlickerFloor::add_frame(const ReferenceFrame& reference) {
@@ -61,6 +77,7 @@ AnimateResult run_animate(Session& session, const std::vector<MethodChoice>& met
                                          const std::filesystem::path& out) {
   const int frames = session.frames();
   const Film& film = session.scene().film;
+  const MetricsViewing viewing = metrics_viewing(session);
   std::vector<TemporalAccumulator> accumulators(methods.size());
   FlickerFloor floor;
   // Frames go to a staging folder first, so a failure half-way leaves no partial animation.
@@ -74,10 +91,11 @@ AnimateResult run_animate(Session& session, const std::vector<MethodChoice>& met
     const std::vector<Frame>& rendered = all.methods;
     const Frame& reference = all.reference.mean;
     floor.add_frame(all.reference);
+    const MetricsReference perceived(reference.total, reference.specular, viewing);
     std::snprintf(name, sizeof name, "%04d.png", f);
     write_png(staging / "reference" / name, tonemap_for_display(reference.total, film.exposure, film.bloom));
     for (std::size_t i = 0; i < methods.size(); ++i) {
-      accumulators[i].add_frame(rendered[i].total, reference.total);
+      accumulators[i].add_frame(rendered[i].total, reference.total, &perceived);
       write_png(staging / methods[i].file_stem() / name,
                 tonemap_for_display(rendered[i].total, film.exposure, film.bloom));
     }
@@ -95,6 +113,10 @@ AnimateResult run_animate(Session& session, const std::vector<MethodChoice>& met
       "flicker of the reference's even passes against its odd passes, over sqrt(2): the flicker a second "
       "independent reference would show against the first; smaller method differences are noise";
   json["flicker_definition"] = "mean over pixels, RGB channels and frames t>=1 of |(m_t - r_t) - (m_{t-1} - r_{t-1})|";
+  json["sparkle_block"] = kSparkleBlock;
+  json["flip_pixels_per_degree"] = viewing.pixels_per_degree;
+  json["flip_display_exposure"] = viewing.display_exposure;
+  json["flip_hdr_exposures"] = "automatic, from each frame's reference";
   std::vector<TemporalMetrics> results;
   for (std::size_t i = 0; i < methods.size(); ++i) {
     const auto& r = results.emplace_back(accumulators[i].result(methods[i].display_name()));
@@ -104,7 +126,13 @@ AnimateResult run_animate(Session& session, const std::vector<MethodChoice>& met
          {"mean_rmse", r.mean_rmse},
          {"flicker", r.flicker},
          {"rmse_per_frame", r.rmse_per_frame},
-         {"flicker_per_frame", r.flicker_per_frame}});
+         {"flicker_per_frame", r.flicker_per_frame},
+         {"mean_flip_ldr", r.mean_flip_ldr},
+         {"mean_flip_hdr", r.mean_flip_hdr},
+         {"mean_sparkle_distance", r.mean_sparkle},
+         {"flip_ldr_per_frame", r.flip_ldr_per_frame},
+         {"flip_hdr_per_frame", r.flip_hdr_per_frame},
+         {"sparkle_distance_per_frame", r.sparkle_per_frame}});
   }
   // Publish: MP4s when ffmpeg is there, otherwise the PNG frames themselves.
   const bool ffmpeg = have_ffmpeg();
@@ -123,10 +151,12 @@ AnimateResult run_animate(Session& session, const std::vector<MethodChoice>& met
   // The name column: 22 wide, wider for a longer name (a variant's).
   int width = 22;
   for (const auto& r : results) width = std::max(width, static_cast<int>(r.method.size()));
-  std::printf("scene %s, %d frames, %dx%d, reference %d..%d spp\n%-*s %12s %12s\n", session.scene().source.c_str(),
-              frames, session.width(), session.height(), reference_floor.spp_min, reference_floor.spp_max, width,
-              "method", "mean_rmse", "flicker");
-  for (const auto& r : results) std::printf("%-*s %12.6f %12.6f\n", width, r.method.c_str(), r.mean_rmse, r.flicker);
+  std::printf("scene %s, %d frames, %dx%d, reference %d..%d spp\n%-*s %12s %12s %9s %9s %9s\n",
+              session.scene().source.c_str(), frames, session.width(), session.height(), reference_floor.spp_min,
+              reference_floor.spp_max, width, "method", "mean_rmse", "flicker", "flip", "hdr_flip", "sparkle");
+  for (const auto& r : results)
+    std::printf("%-*s %12.6f %12.6f %9.4f %9.4f %9.4f\n", width, r.method.c_str(), r.mean_rmse, r.flicker,
+                r.mean_flip_ldr, r.mean_flip_hdr, r.mean_sparkle);
   std::printf("%-*s %12.6f %12.6f\n", width, "(reference floor)", reference_floor.noise_rmse, reference_floor.flicker);
   std::printf("written to %s/\n", out.string().c_str());
   return {results, reference_floor};

@@ -24,17 +24,22 @@ struct TemporalMetrics {
   double mean_rmse = 0;
   double flicker = 0;
   std::vector<double> flicker_per_frame;  ///< of each frame t >= 1 against t - 1 (flicker is their mean)
+  /// Per frame and their means: the sparkle distance, and (when frames were added with a
+  /// MetricsReference) LDR-FLIP and HDR-FLIP; empty vectors and 0 otherwise.
+  std::vector<double> sparkle_per_frame, flip_ldr_per_frame, flip_hdr_per_frame;
+  double mean_sparkle = 0, mean_flip_ldr = 0, mean_flip_hdr = 0;
 };
 
-/// One method's error over a sequence, added frame by frame: the RMSE of each frame, their mean,
-/// and the flicker (FlickerAccumulator).
+/// One method's error over a sequence, added frame by frame: the RMSE and sparkle distance of
+/// each frame, their means, and the flicker (FlickerAccumulator); with `perceived` (the frame's
+/// reference prepared for FLIP) also each frame's LDR- and HDR-FLIP.
 class TemporalAccumulator {
  public:
-  void add_frame(const Image& method, const Image& reference);
+  void add_frame(const Image& method, const Image& reference, const MetricsReference* perceived = nullptr);
   [[nodiscard]] TemporalMetrics result(const std::string& method) const;
 
  private:
-  std::vector<double> rmse_per_frame_;
+  std::vector<double> rmse_per_frame_, sparkle_per_frame_, flip_ldr_per_frame_, flip_hdr_per_frame_;
   FlickerAccumulator flicker_;
 };
 

@@ -22,6 +22,13 @@ std::string csv_field(const std::string& text) {
   return text.find(',') == std::string::npos ? text : "\"" + text + "\"";
 }
 
+/// A per-pixel map as an image (the value in every channel), for false_colour.
+Image as_image(const std::vector<float>& map, int width) {
+  Image out(width, width > 0 ? static_cast<int>(map.size()) / width : 0);
+  for (std::size_t i = 0; i < map.size(); ++i) out.pixels()[i] = glm::vec3(map[i]);
+  return out;
+}
+
 struct Region {
   int x, y, size;
   double error;
@@ -55,24 +62,39 @@ std::vector<Region> worst_regions(const Image& error_sum, int size, int count) {
   return chosen;
 }
 
-std::string format_table(const std::vector<MethodMetrics>& rows, const ReferenceFrame& reference) {
+// What two independent halves of the reference score against each other (its even passes
+// against its odd ones): FLIP and the sparkle distance of the reference's own noise, at half its
+// samples (so above what the full reference shows against the truth).
+ImageMetrics half_reference_floor(const ReferenceFrame& reference, const MetricsViewing& viewing) {
+  ImageMetrics floor;
+  if (reference.passes < 2) return floor;
+  const MetricsReference odd(reference.odd_passes, reference.odd_passes, viewing);
+  floor.flip_ldr = flip::mean(odd.flip_ldr_map(reference.even_passes));
+  floor.flip_hdr = flip::mean(odd.flip_hdr_map(reference.even_passes));
+  floor.sparkle_distance = sparkle_distance(reference.even_passes, reference.odd_passes, kSparkleBlock);
+  return floor;
+}
+
+std::string format_table(const std::vector<MethodMetrics>& rows, const ReferenceFrame& reference,
+                         const ImageMetrics& floor) {
   std::ostringstream s;
   // The name column: 22 wide, wider for a longer name (a variant's).
   int width = 22;
   for (const auto& r : rows) width = std::max(width, static_cast<int>(r.method.size()));
   char line[512];
-  std::snprintf(line, sizeof line, "%-*s %10s %10s %8s %9s %9s %9s\n", width, "method", "rmse", "rmse_spec", "psnr",
-                "energy", "e_spec", "max_err");
+  std::snprintf(line, sizeof line, "%-*s %10s %10s %8s %9s %9s %9s %8s %8s %8s\n", width, "method", "rmse",
+                "rmse_spec", "psnr", "energy", "e_spec", "max_err", "flip", "hdr_flip", "sparkle");
   s << line;
   for (const auto& r : rows) {
     const auto& m = r.metrics;
-    std::snprintf(line, sizeof line, "%-*s %10.5f %10.5f %8.2f %9.4f %9.4f %9.3f\n", width, r.method.c_str(), m.rmse,
-                  m.rmse_specular, m.psnr, m.energy_ratio, m.energy_ratio_specular, m.max_error);
+    std::snprintf(line, sizeof line, "%-*s %10.5f %10.5f %8.2f %9.4f %9.4f %9.3f %8.4f %8.4f %8.4f\n", width,
+                  r.method.c_str(), m.rmse, m.rmse_specular, m.psnr, m.energy_ratio, m.energy_ratio_specular,
+                  m.max_error, m.flip_ldr, m.flip_hdr, m.sparkle_distance);
     s << line;
   }
-  std::snprintf(line, sizeof line, "%-*s %10.5f %10s %8s  +-%.4f  +-%.4f\n", width, "(reference noise)",
-                reference.noise_rmse(), "", "", reference.relative_energy_error(),
-                reference.relative_energy_error(true));
+  std::snprintf(line, sizeof line, "%-*s %10.5f %10s %8s  +-%.4f  +-%.4f %9s %8.4f %8.4f %8.4f\n", width,
+                "(reference noise)", reference.noise_rmse(), "", "", reference.relative_energy_error(),
+                reference.relative_energy_error(true), "", floor.flip_ldr, floor.flip_hdr, floor.sparkle_distance);
   s << line;
   return s.str();
 }
@@ -93,11 +115,13 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
   // One method's images at a time (a film of many methods is several GiB): each error map is
   // made for its metrics and the error sum, then dropped and made again when written.
   std::vector<MethodMetrics> rows;
+  const MetricsViewing viewing = metrics_viewing(session);
+  const MetricsReference metrics_reference(reference.total, reference.specular, viewing);
+  const ImageMetrics floor = half_reference_floor(reference_estimate, viewing);
   Image error_sum(session.width(), session.height());
   float error_scale = 0.0f;
   for (std::size_t i = 0; i < methods.size(); ++i) {
-    rows.push_back(
-        {methods[i].display_name(), measure(frames[i].total, frames[i].specular, reference.total, reference.specular)});
+    rows.push_back({methods[i].display_name(), metrics_reference.measure(frames[i].total, frames[i].specular)});
     const Image error = abs_error_map(frames[i].total, reference.total);
     for (std::size_t p = 0; p < error.pixel_count(); ++p) error_sum.pixels()[p] += error.pixels()[p];
     // One colour scale for all maps (the largest 99.5th percentile) so they compare at a glance.
@@ -132,6 +156,8 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
     write_frame(staged, methods[i].file_stem(), frames[i], film);
     write_png(staged / (methods[i].file_stem() + "-error.png"),
               false_colour(abs_error_map(frames[i].total, reference.total), error_scale));
+    write_png(staged / (methods[i].file_stem() + "-flip.png"),
+              false_colour(as_image(metrics_reference.flip_ldr_map(frames[i].total), session.width()), 1.0f));
     add_crops(static_cast<int>(i) + 1, methods[i].display_name(),
               tonemap_for_display(frames[i].total, film.exposure, film.bloom));
   }
@@ -157,11 +183,23 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
   // standard error widened for few passes: within 2 of it for about 95% of references).
   // block_rmse and glint_detail hold against a reference that is an independent realisation of a
   // glinty surface (core/metrics.hpp), where the per-pixel RMSE rewards blur.
+  // flip_ldr, flip_hdr (perceived difference, 0 .. 1) and sparkle_distance (the glints' number,
+  // size and brightness per 16 x 16 tile) beside them (core/metrics.hpp, core/flip.hpp).
   csv << "method,rmse,rmse_specular,psnr,energy_ratio,energy_ratio_specular,max_error,reference_noise_rmse,"
-         "energy_ratio_error,energy_ratio_specular_error,block_rmse,glint_detail\n";
+         "energy_ratio_error,energy_ratio_specular_error,block_rmse,glint_detail,flip_ldr,flip_hdr,sparkle_distance\n";
   nlohmann::json json = run_metadata(session);
   json["frame"] = frame;
   json["statistics_block"] = kStatisticsBlock;
+  json["sparkle_block"] = kSparkleBlock;
+  json["flip_pixels_per_degree"] = viewing.pixels_per_degree;
+  json["flip_display_exposure"] = viewing.display_exposure;
+  const flip::Exposures& exposures = metrics_reference.hdr_exposures();
+  json["flip_hdr_exposures"] = {{"start", exposures.start}, {"stop", exposures.stop}, {"count", exposures.count}};
+  // Two half-references against each other: method differences below these are the reference's noise.
+  json["reference_floor"] = {{"flip_ldr", floor.flip_ldr},
+                             {"flip_hdr", floor.flip_hdr},
+                             {"sparkle_distance", floor.sparkle_distance},
+                             {"definition", "the reference's even passes against its odd passes (each half its samples)"}};
   // The truth's glint detail: the reference's, its noise taken out.
   json["reference_glint_detail"] = glint_detail(reference.total, &reference_estimate.standard_error);
   json["reference_spp"] = reference_estimate.spp;
@@ -185,10 +223,11 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
     const MethodMetrics& row = rows[i];
     const auto& m = row.metrics;
     char line[512];
-    std::snprintf(line, sizeof line, "%s,%.8g,%.8g,%.6g,%.8g,%.8g,%.8g,%.6g,%.6g,%.6g,%.8g,%.6g\n",
+    std::snprintf(line, sizeof line, "%s,%.8g,%.8g,%.6g,%.8g,%.8g,%.8g,%.6g,%.6g,%.6g,%.8g,%.6g,%.6g,%.6g,%.6g\n",
                   csv_field(row.method).c_str(), m.rmse, m.rmse_specular, m.psnr, m.energy_ratio,
                   m.energy_ratio_specular, m.max_error, noise, m.energy_ratio * energy_error,
-                  m.energy_ratio_specular * energy_error_specular, m.block_rmse, m.glint_detail);
+                  m.energy_ratio_specular * energy_error_specular, m.block_rmse, m.glint_detail, m.flip_ldr,
+                  m.flip_hdr, m.sparkle_distance);
     csv << line;
     json["methods"].push_back({{"method", row.method},
                                {"file", methods[i].file_stem()},  // <file>.png, <file>-error.png
@@ -202,14 +241,17 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
                                {"energy_ratio_error", m.energy_ratio * energy_error},
                                {"energy_ratio_specular_error", m.energy_ratio_specular * energy_error_specular},
                                {"block_rmse", m.block_rmse},
-                               {"glint_detail", m.glint_detail}});
+                               {"glint_detail", m.glint_detail},
+                               {"flip_ldr", m.flip_ldr},
+                               {"flip_hdr", m.flip_hdr},
+                               {"sparkle_distance", m.sparkle_distance}});
   }
   write_text_file(staged / "metrics.csv", csv.str());
   write_text_file(staged / "metrics.json", json.dump(2) + "\n");
   stage.publish({"metrics.csv", "metrics.json"});
   std::cout << "scene " << session.scene().source << ", " << session.width() << "x" << session.height() << ", "
             << describe_reference(reference_estimate) << "\n"
-            << format_table(rows, reference_estimate) << "written to " << out.string() << "/\n";
+            << format_table(rows, reference_estimate, floor) << "written to " << out.string() << "/\n";
   return rows;
 }
 

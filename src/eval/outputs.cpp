@@ -54,6 +54,13 @@ nlohmann::json run_metadata(Session& session) {
   return json;
 }
 
+MetricsViewing metrics_viewing(const Session& session) {
+  MetricsViewing viewing;
+  viewing.display_exposure = session.scene().film.exposure;
+  if (session.options().pixels_per_degree > 0) viewing.pixels_per_degree = session.options().pixels_per_degree;
+  return viewing;
+}
+
 std::string describe_reference(const ReferenceFrame& reference) {
   char line[200];
   std::snprintf(line, sizeof line, "reference %d spp (%d passes), noise rmse %.3g, energy +- %.2g%%", reference.spp,

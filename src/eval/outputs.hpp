@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/file_access.hpp"  // check_output_directory, check_output_file
+#include "core/metrics.hpp"
 #include "eval/session.hpp"
 #include "render/renderer.hpp"
 
@@ -30,6 +31,8 @@ void write_reference(const std::filesystem::path& dir, const std::string& stem, 
 /// The keys that describe a run in every metrics file (compare's and animate's metrics.json,
 /// bench.json): the scene as given, the image size and the GL device. Each command adds its own.
 nlohmann::json run_metadata(Session& session);
+/// How compare and animate look at images for FLIP: the film's exposure, --ppd (or the default).
+MetricsViewing metrics_viewing(const Session& session);
 /// One line on what a reference reached: samples, passes, noise RMSE, energy error.
 std::string describe_reference(const ReferenceFrame& reference);
 

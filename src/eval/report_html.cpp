@@ -71,18 +71,38 @@ json compare_data(const CompareRun& c, const std::string& assets) {
         with_error(column("energy_ratio_specular", "energy ratio specular", "one", 4), "energy_ratio_specular_error"),
         column("max_error", "max error", "lower", 4)}},
       {"floors", {{{"label", "(reference noise)"}, {"values", {{"rmse", noise}, {"rmse_specular", noise}}}}}}};
+  if (c.perceptual) {
+    // Beside RMSE: what a viewer sees (FLIP) and whether the glints are right (sparkle distance),
+    // each with what two half-references score against each other.
+    const std::string floor_label = "two half-references against each other";
+    table["columns"].push_back(with_noise(column("flip_ldr", "FLIP", "lower", 4), c.floor_flip_ldr, floor_label));
+    table["columns"].push_back(with_noise(column("flip_hdr", "HDR-FLIP", "lower", 4), c.floor_flip_hdr, floor_label));
+    table["columns"].push_back(
+        with_noise(column("sparkle_distance", "sparkle distance", "lower", 4), c.floor_sparkle_distance, floor_label));
+    table["floors"].push_back({{"label", "(half-references)"},
+                               {"values",
+                                {{"flip_ldr", c.floor_flip_ldr},
+                                 {"flip_hdr", c.floor_flip_hdr},
+                                 {"sparkle_distance", c.floor_sparkle_distance}}}});
+  }
   json images = {{"reference", assets + "/reference.png"}, {"methods", json::array()}};
   json columns = {"reference"};
   for (const auto& r : c.rows) {
-    table["rows"].push_back({{"method", r.method},
-                             {"rmse", r.rmse},
-                             {"rmse_specular", r.rmse_specular},
-                             {"psnr", r.psnr},
-                             {"energy_ratio", r.energy_ratio},
-                             {"energy_ratio_error", r.energy_ratio_error},
-                             {"energy_ratio_specular", r.energy_ratio_specular},
-                             {"energy_ratio_specular_error", r.energy_ratio_specular_error},
-                             {"max_error", r.max_error}});
+    json row = {{"method", r.method},
+                {"rmse", r.rmse},
+                {"rmse_specular", r.rmse_specular},
+                {"psnr", r.psnr},
+                {"energy_ratio", r.energy_ratio},
+                {"energy_ratio_error", r.energy_ratio_error},
+                {"energy_ratio_specular", r.energy_ratio_specular},
+                {"energy_ratio_specular_error", r.energy_ratio_specular_error},
+                {"max_error", r.max_error}};
+    if (c.perceptual) {
+      row["flip_ldr"] = r.flip_ldr;
+      row["flip_hdr"] = r.flip_hdr;
+      row["sparkle_distance"] = r.sparkle_distance;
+    }
+    table["rows"].push_back(row);
     images["methods"].push_back({{"method", r.method},
                                  {"image", assets + "/" + r.file + ".png"},
                                  {"error", assets + "/" + r.file + "-error.png"}});
@@ -110,12 +130,22 @@ json animate_data(const AnimateRun& a, const std::string& assets) {
                 {"floors",
                  {{{"label", "(reference floor)"},
                    {"values", {{"mean_rmse", a.reference_noise_rmse}, {"flicker", a.flicker_floor}}}}}}};
+  if (a.perceptual)
+    for (const auto& [key, label] : {std::pair{"mean_flip_ldr", "mean FLIP"}, std::pair{"mean_flip_hdr", "mean HDR-FLIP"},
+                                     std::pair{"mean_sparkle_distance", "mean sparkle distance"}})
+      table["columns"].push_back(column(key, label, "lower", 4));
   std::vector<PlotSeries> series, flicker_series;
   std::vector<PlotBar> flicker;
   bool flicker_of_each_frame = true;
   for (std::size_t i = 0; i < a.rows.size(); ++i) {
     const auto& r = a.rows[i];
-    table["rows"].push_back({{"method", r.method}, {"mean_rmse", r.mean_rmse}, {"flicker", r.flicker}});
+    json row = {{"method", r.method}, {"mean_rmse", r.mean_rmse}, {"flicker", r.flicker}};
+    if (a.perceptual) {
+      row["mean_flip_ldr"] = r.mean_flip_ldr;
+      row["mean_flip_hdr"] = r.mean_flip_hdr;
+      row["mean_sparkle_distance"] = r.mean_sparkle_distance;
+    }
+    table["rows"].push_back(row);
     series.push_back({r.method, r.rmse_per_frame});
     flicker.push_back({r.method, r.flicker, "", false, i});
     // Frame 0 has no flicker: it is the first difference's end that is plotted.

@@ -186,6 +186,21 @@ CompareRun read_compare(const Field& root, const fs::path& dir) {
     r.energy_ratio_specular = m["energy_ratio_specular"].measure();
     r.energy_ratio_specular_error = m["energy_ratio_specular_error"].measure();
   }
+  // FLIP and the sparkle distance since compare measures them; older outputs have neither.
+  run.perceptual = root.has("reference_floor");
+  if (run.perceptual) {
+    const Field floor = root["reference_floor"];
+    run.floor_flip_ldr = floor["flip_ldr"].measure();
+    run.floor_flip_hdr = floor["flip_hdr"].measure();
+    run.floor_sparkle_distance = floor["sparkle_distance"].measure();
+    std::size_t i = 0;
+    for (const Field& m : root["methods"].some_elements()) {
+      CompareRow& r = run.rows[i++];
+      r.flip_ldr = m["flip_ldr"].measure();
+      r.flip_hdr = m["flip_hdr"].measure();
+      r.sparkle_distance = m["sparkle_distance"].measure();
+    }
+  }
   const int columns = static_cast<int>(run.rows.size()) + 1;
   for (const Field& c : root["crops"].elements()) {
     WorstRegion& w = run.regions.emplace_back();
@@ -229,8 +244,15 @@ AnimateRun read_animate(const Field& root, const fs::path& dir) {
     for (const Field& v : m["rmse_per_frame"].elements()) r.rmse_per_frame.push_back(v.measure());
     if (m.has("flicker_per_frame"))
       for (const Field& v : m["flicker_per_frame"].elements()) r.flicker_per_frame.push_back(v.measure());
+    if (m.has("mean_flip_ldr")) {
+      r.mean_flip_ldr = m["mean_flip_ldr"].measure();
+      r.mean_flip_hdr = m["mean_flip_hdr"].measure();
+      r.mean_sparkle_distance = m["mean_sparkle_distance"].measure();
+    }
     streams.push_back({r.method, r.file});
   }
+  run.perceptual = !run.rows.empty();
+  for (const Field& m : root["methods"].some_elements()) run.perceptual &= m.has("mean_flip_ldr");
   // animate says whether it encoded videos ("video": "mp4"); then every stream has one, and a
   // missing one is an error like a missing image. Older outputs: the videos that are there.
   const bool encoded = root.has("video") && root["video"].text() == "mp4";

@@ -20,6 +20,7 @@ struct CompareRow {
   double rmse = 0, rmse_specular = 0, psnr = 0, max_error = 0;
   double energy_ratio = 0, energy_ratio_error = 0;
   double energy_ratio_specular = 0, energy_ratio_specular_error = 0;
+  double flip_ldr = 0, flip_hdr = 0, sparkle_distance = 0;  ///< absent in outputs older than them
 };
 
 /// One worst-region strip of compare: crops of the reference, then of each method in order, each
@@ -36,12 +37,17 @@ struct CompareRun {
   std::vector<WorstRegion> regions;
   double reference_noise_rmse = 0;
   double error_map_scale = 0;
+  /// FLIP and the sparkle distance: in every row, and the two half-references' values
+  /// (compare's reference_floor); false for outputs older than them.
+  bool perceptual = false;
+  double floor_flip_ldr = 0, floor_flip_hdr = 0, floor_sparkle_distance = 0;
 };
 
 struct AnimateRow {
   std::string method;  ///< display name
   std::string file;    ///< its video: <file>.mp4
   double mean_rmse = 0, flicker = 0;
+  double mean_flip_ldr = 0, mean_flip_hdr = 0, mean_sparkle_distance = 0;  ///< absent in older outputs
   std::vector<double> rmse_per_frame;
   std::vector<double> flicker_per_frame;  ///< frames 1 .. frames - 1; empty in outputs older than it
 };
@@ -51,6 +57,7 @@ struct AnimateRun {
   int frames = 0;
   double reference_noise_rmse = 0;  ///< mean over frames
   double flicker_floor = 0;
+  bool perceptual = false;  ///< every row has the FLIP and sparkle means
   /// The MP4 of each stream ("reference", then the methods) that exists; others have none (animate
   /// writes PNG frames instead when ffmpeg is missing or fails).
   struct Video {

@@ -42,6 +42,7 @@ struct CommonOptions {
   std::string reference_filter = "box";  ///< --reference-filter: box or gaussian:S (PixelFilter::parse)
   std::string tile;  ///< render --tile INDEX/COLUMNSxROWS: the reference of one tile of the film (parse_tile)
   int max_depth = 1;  ///< --max-depth: the path backend's lit path vertices (1: direct light)
+  double pixels_per_degree = 0;  ///< --ppd (compare, animate): FLIP's viewing; 0: flip::default_pixels_per_degree()
   bool quiet = false;
 };
 

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "core/cache_directory.hpp"
+#include "core/flip.hpp"
 #include "gl/context.hpp"
 #include "gl/shader_library.hpp"
 #include "render/gpu_scene.hpp"
@@ -54,8 +55,9 @@ int main() {
   std::printf("device: %s; films %dx%d, %d samples per pixel\n\n", context->info().renderer.c_str(), kWidth, kHeight,
               kSpp);
   std::printf("| scene | unshadowed / raster energy | stated error (both) | unshadowed vs raster RMSE / raster noise | "
+              "unshadowed vs raster HDR-FLIP | raster halves' HDR-FLIP | path vs raster HDR-FLIP (shadows) | "
               "path / raster energy (shadows) | 4 vertices / 1 (interreflection) |\n"
-              "| --- | ---: | ---: | ---: | ---: | ---: |\n");
+              "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
   int agreeing = 0, scenes = 0;
   for (const BuiltinScene& builtin : builtin_scenes()) {
     const Scene scene = load_scene("builtin:" + builtin.name);
@@ -76,8 +78,16 @@ int main() {
     const bool agree = std::abs(ratio - 1.0) <= 2.0 * stated && noise_share < 1.0;
     agreeing += agree;
     ++scenes;
-    std::printf("| %s | %.4f | %.4f | %.3f | %.4f | %.4f |\n", builtin.name.c_str(), ratio, stated, noise_share,
-                mean(direct.mean.total) / mean(raster.mean.total),
+    // HDR-FLIP (core/flip.hpp) at the raster reference's exposures: the perceived difference, and
+    // what the raster reference's two halves (its even and odd passes) show of its own noise.
+    const double ppd = flip::default_pixels_per_degree();
+    const flip::HdrReference perceived(raster.mean.total, ppd, flip::automatic_exposures(raster.mean.total));
+    const double flip_unshadowed = flip::mean(perceived.error_map(unshadowed.mean.total));
+    const double flip_shadows = flip::mean(perceived.error_map(direct.mean.total));
+    const double flip_halves = flip::mean(
+        flip::HdrReference(raster.odd_passes, ppd, perceived.exposures()).error_map(raster.even_passes));
+    std::printf("| %s | %.4f | %.4f | %.3f | %.4f | %.4f | %.4f | %.4f | %.4f |\n", builtin.name.c_str(), ratio, stated,
+                noise_share, flip_unshadowed, flip_halves, flip_shadows, mean(direct.mean.total) / mean(raster.mean.total),
                 mean(bounced.mean.total) / mean(direct.mean.total));
     std::fflush(stdout);
   }

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # glintlab's FLIP against the authors' implementation (NVlabs/flip, BSD-3-Clause), on glintlab's own
 # image pairs: the synthetic pairs of tests/core/flip_validation_pairs.hpp and a compare run of
-# builtin:glint-area-lights (every method's PNG and EXR against the reference's). Prints a markdown
-# table: pair, kind, the authors' mean, glintlab's, the difference (docs/results.md, "Metrics").
+# builtin:glint-area-lights (every method's PNG and EXR against the reference's). Writes a markdown
+# table (pair, kind, the authors' mean, glintlab's, the difference) into docs/methods.md between
+# the lines <!-- generated:flip-validation --> and <!-- /generated:flip-validation -->, and prints it.
 #
 # The authors' tool is built outside the repository, never vendored:
 #   git clone https://github.com/NVlabs/flip && cd flip/src/cpp/tool &&
@@ -26,7 +27,10 @@ trap 'rm -rf "$work"' EXIT
 
 # mean FLIP by the authors' tool: reference, test, then its options
 authors_mean() { (cd "$work" && "$authors" -r "$1" -t "$2" -v 1 "${@:3}" | awk '/Mean:/ { print $2 }'); }
-ours_mean() { "$glintlab" metrics "$2" "$1" --json "${@:3}" | python3 -c "import json,sys; d=json.load(sys.stdin); print('%.6f' % d['$KEY'])"; }
+ours_mean() {
+  "$glintlab" metrics "$2" "$1" -o "$work/ours.json" "${@:3}" >/dev/null
+  python3 -c "import json; print('%.6f' % json.load(open('$work/ours.json'))['$KEY'])"
+}
 row() {  # name kind reference test [authors' options] -- [glintlab's options]
   local name=$1 kind=$2 ref=$3 test=$4; shift 4
   local a_opts=() g_opts=()
@@ -39,6 +43,7 @@ row() {  # name kind reference test [authors' options] -- [glintlab's options]
   g=$(KEY=$KEY ours_mean "$ref" "$test" "${g_opts[@]}")
   python3 -c "print('| %s | %s | %s | %s | %.1e |' % ('$name', '$kind', '$a', '$g', abs($a - $g)))"
 }
+table() {
 echo "| pair | FLIP | authors' mean (v1.6) | glintlab's | difference |"
 echo "| --- | --- | --- | --- | --- |"
 while read -r name kind rest; do
@@ -56,3 +61,15 @@ for m in conventional deliot2023 kneiphof2024; do
   row "glint-area-lights $m" LDR "$work/render/reference.png" "$work/render/$m.png"
   row "glint-area-lights $m" HDR "$work/render/reference.exr" "$work/render/$m.exr"
 done
+}
+table >"$work/table.md"
+cat "$work/table.md"
+doc=docs/methods.md
+begin="<!-- generated:flip-validation -->" end="<!-- /generated:flip-validation -->"
+grep -qxF "$begin" "$doc" && grep -qxF "$end" "$doc" || { echo "$doc: needs the lines $begin and $end" >&2; exit 1; }
+awk -v f="$work/table.md" -v b="$begin" -v e="$end" '
+  $0 == b { print; while ((getline line < f) > 0) print line; skip = 1; next }
+  $0 == e { skip = 0 }
+  !skip { print }' "$doc" >"$doc.tmp"
+mv "$doc.tmp" "$doc"
+echo "written $doc"

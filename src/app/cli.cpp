@@ -261,7 +261,7 @@ int run_cli(int argc, char** argv) {
   metrics->add_option("--hdr-exposures", metrics_exposures,
                       "HDR-FLIP's exposures START,STOP,COUNT (default: automatic from the reference)");
   metrics->add_option("--flip-map", metrics_o.flip_map, "write the FLIP error map (HDR-FLIP for .exr) to this .png");
-  metrics->add_flag("--json", metrics_o.json, "print JSON");
+  metrics->add_option("-o,--out", metrics_o.json, "also write the metrics to this .json file");
 
   auto* animate = app.add_subcommand("animate", "render the camera path; per-frame RMSE and flicker, videos");
   add_common(animate, animate_o, true);
@@ -284,6 +284,7 @@ int run_cli(int argc, char** argv) {
       "converge", "how fast backends approach a truth: each at rising samples per pixel, RMSE against the truth "
                   "(--reference-backend at --spp) against samples and seconds; table, convergence.json/.csv/.svg");
   add_common(converge, converge_o, false);
+  add_metric_options(converge, converge_o);
   converge->add_option("--backends", converge_options.backends,
                        "the backends timed, separated by commas: ids 'glintlab info' lists, or path:<method>{...}")
       ->required();

@@ -35,11 +35,11 @@ std::string fixed(double v, const char* format = "%.4g") {
 
 std::string table(const Convergence& c) {
   std::ostringstream s;
-  s << "| backend | spp | seconds | rmse | relative rmse |\n| --- | ---: | ---: | ---: | ---: |\n";
+  s << "| backend | spp | seconds | rmse | relative rmse | HDR-FLIP |\n| --- | ---: | ---: | ---: | ---: | ---: |\n";
   for (const auto& curve : c.curves)
     for (const auto& p : curve.points)
       s << "| " << curve.backend << " | " << p.spp << " | " << fixed(p.seconds, "%.3f") << " | " << fixed(p.rmse)
-        << " | " << fixed(p.relative_rmse) << " |\n";
+        << " | " << fixed(p.relative_rmse) << " | " << fixed(p.flip_hdr) << " |\n";
   s << "\ntime to rmse " << fixed(c.target_rmse) << " (the lowest error every curve reaches):\n";
   const double first = c.curves.front().seconds_to_target;
   for (const auto& curve : c.curves)
@@ -79,6 +79,9 @@ Convergence run_converge(Session& session, const ConvergeOptions& options, const
   result.truth_noise_rmse = truth.noise_rmse();
   const glm::dvec3 mean = truth.mean.total.mean();
   result.truth_mean = (mean.r + mean.g + mean.b) / 3.0;
+  const MetricsViewing viewing = metrics_viewing(session);
+  const flip::HdrReference perceived_truth(truth.mean.total, viewing.pixels_per_degree,
+                                           flip::automatic_exposures(truth.mean.total));
 
   for (std::size_t c = 0; c < ids.size(); ++c) {
     ConvergenceCurve curve{.backend = ids[c]};
@@ -101,7 +104,8 @@ Convergence run_converge(Session& session, const ConvergeOptions& options, const
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       require_finite(frame.mean, ids[c] + " at " + std::to_string(settings.spp) + " spp");
       const double error = rmse(frame.mean.total, truth.mean.total);
-      curve.points.push_back({settings.spp, seconds, error, error / result.truth_mean});
+      curve.points.push_back({settings.spp, seconds, error, error / result.truth_mean,
+                              flip::mean(perceived_truth.error_map(frame.mean.total))});
       bar.update(static_cast<int>(s + 1), static_cast<int>(options.steps.size()));
     }
     result.curves.push_back(std::move(curve));
@@ -123,12 +127,17 @@ Convergence run_converge(Session& session, const ConvergeOptions& options, const
   json["target_rmse"] = result.target_rmse;
   json["truth_backend"] = session.reference_backend().id();
   std::ostringstream csv;
-  csv << "backend,spp,seconds,rmse,relative_rmse\n";
+  csv << "backend,spp,seconds,rmse,relative_rmse,flip_hdr\n";
   for (const auto& curve : result.curves) {
     nlohmann::json points = nlohmann::json::array();
     for (const auto& p : curve.points) {
-      points.push_back({{"spp", p.spp}, {"seconds", p.seconds}, {"rmse", p.rmse}, {"relative_rmse", p.relative_rmse}});
-      csv << curve.backend << "," << p.spp << "," << p.seconds << "," << p.rmse << "," << p.relative_rmse << "\n";
+      points.push_back({{"spp", p.spp},
+                        {"seconds", p.seconds},
+                        {"rmse", p.rmse},
+                        {"relative_rmse", p.relative_rmse},
+                        {"flip_hdr", p.flip_hdr}});
+      csv << curve.backend << "," << p.spp << "," << p.seconds << "," << p.rmse << "," << p.relative_rmse << ","
+          << p.flip_hdr << "\n";
     }
     json["curves"].push_back({{"backend", curve.backend},
                               {"points", points},

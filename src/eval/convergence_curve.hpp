@@ -12,6 +12,7 @@ struct ConvergencePoint {
   double seconds = 0;        ///< wall clock of the render, programs compiled beforehand
   double rmse = 0;           ///< of total radiance against the truth
   double relative_rmse = 0;  ///< rmse over the truth's mean
+  double flip_hdr = 0;       ///< mean HDR-FLIP against the truth (core/flip.hpp), the truth's exposures
 };
 
 struct ConvergenceCurve {

@@ -8,7 +8,9 @@
 #include <sstream>
 
 #include "core/colour.hpp"
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/file_access.hpp"
 #include "core/image_io.hpp"
 #include "core/metrics.hpp"
 
@@ -75,8 +77,14 @@ void run_metrics_command(const MetricsCommandOptions& o) {
     throw InputError("test " + o.test + " and reference " + o.reference + " are of different kinds (allowed: both .exr or both .png)");
   if (kind == ImageKind::display && o.hdr_exposures)
     throw InputError("--hdr-exposures: HDR-FLIP needs radiance (.exr), not the .png pictures given");
-  if (!o.flip_map.empty() && lower_extension(o.flip_map) != ".png")
-    throw InputError("--flip-map " + o.flip_map + ": allowed: a .png file name");
+  if (!o.flip_map.empty()) {
+    if (lower_extension(o.flip_map) != ".png") throw InputError("--flip-map " + o.flip_map + ": allowed: a .png file name");
+    check_output_file(o.flip_map, "--flip-map");
+  }
+  if (!o.json.empty()) {
+    if (lower_extension(o.json) != ".json") throw InputError("-o " + o.json + ": allowed: a .json file name");
+    check_output_file(o.json, "-o");
+  }
   const Image test = read_image(o.test, kind), reference = read_image(o.reference, kind);
   require_finite(test, o.test);
   require_finite(reference, o.reference);
@@ -106,10 +114,7 @@ void run_metrics_command(const MetricsCommandOptions& o) {
     json["hdr_exposures"] = {{"start", exposures.start}, {"stop", exposures.stop}, {"count", exposures.count}};
   }
   if (!o.flip_map.empty()) write_png(o.flip_map, false_colour(as_image(map, test.width(), test.height()), 1.0f));
-  if (o.json) {
-    std::cout << json.dump(2) << "\n";
-    return;
-  }
+  if (!o.json.empty()) write_text_file(o.json, json.dump(2) + "\n");
   std::printf("rmse              %.6g\nenergy_ratio      %.6g\nsparkle_distance  %.6g\nflip_ldr          %.6f\n",
               json["rmse"].get<double>(), json["energy_ratio"].get<double>(), json["sparkle_distance"].get<double>(),
               json["flip_ldr"].get<double>());

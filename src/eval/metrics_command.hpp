@@ -14,7 +14,7 @@ struct MetricsCommandOptions {
   float display_exposure = 0.0f;  ///< stops before the displayed picture's ACES curve (EXR inputs)
   std::optional<flip::Exposures> hdr_exposures;  ///< HDR-FLIP's range; default: automatic
   std::string flip_map;  ///< optional .png: the FLIP error map (HDR-FLIP for EXR inputs)
-  bool json = false;     ///< print JSON instead of lines
+  std::string json;      ///< optional .json file: the metrics as JSON (stdout has them as lines)
 };
 
 /// Parses --hdr-exposures "START,STOP,COUNT" (START <= STOP, COUNT >= 2); throws InputError.

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "eval/commands.hpp"
+#include "eval/outputs.hpp"
 #include "scratch_directory.hpp"
 #include "test_scenes.hpp"
 
@@ -93,6 +94,21 @@ TEST(Animate, MetricsAreThoseOfTheFramesItRendered) {
       mean += expected / kFrames;
     }
     EXPECT_NEAR(m.mean_rmse, mean, 1e-9 * mean) << m.method;
+    // FLIP, HDR-FLIP and the sparkle distance of every frame, as compare measures one.
+    ASSERT_EQ(m.sparkle_per_frame.size(), static_cast<std::size_t>(kFrames));
+    ASSERT_EQ(m.flip_ldr_per_frame.size(), static_cast<std::size_t>(kFrames));
+    ASSERT_EQ(m.flip_hdr_per_frame.size(), static_cast<std::size_t>(kFrames));
+    double flip_mean = 0;
+    for (int t = 0; t < kFrames; ++t) {
+      const MetricsReference perceived(reference_images[t], references[t].mean.specular, metrics_viewing(session));
+      const ImageMetrics expected = perceived.measure(frames[t], frames[t]);
+      EXPECT_DOUBLE_EQ(m.sparkle_per_frame[t], expected.sparkle_distance) << m.method << " frame " << t;
+      EXPECT_DOUBLE_EQ(m.flip_ldr_per_frame[t], expected.flip_ldr) << m.method << " frame " << t;
+      EXPECT_DOUBLE_EQ(m.flip_hdr_per_frame[t], expected.flip_hdr) << m.method << " frame " << t;
+      EXPECT_GT(expected.flip_hdr, 0.0) << m.method << " frame " << t;
+      flip_mean += expected.flip_ldr / kFrames;
+    }
+    EXPECT_NEAR(m.mean_flip_ldr, flip_mean, 1e-12) << m.method;
     const double flicker = mean_change_of_difference(frames, reference_images);
     EXPECT_GT(flicker, 0.0) << m.method;
     EXPECT_NEAR(m.flicker, flicker, 1e-6 * flicker) << m.method;
@@ -140,6 +156,9 @@ TEST(Animate, MetricsAreThoseOfTheFramesItRendered) {
     EXPECT_DOUBLE_EQ(m.at("flicker").get<double>(), result.methods[i].flicker);
     EXPECT_EQ(m.at("rmse_per_frame").get<std::vector<double>>(), result.methods[i].rmse_per_frame);
     EXPECT_EQ(m.at("flicker_per_frame").get<std::vector<double>>(), result.methods[i].flicker_per_frame);
+    EXPECT_EQ(m.at("flip_hdr_per_frame").get<std::vector<double>>(), result.methods[i].flip_hdr_per_frame);
+    EXPECT_EQ(m.at("sparkle_distance_per_frame").get<std::vector<double>>(), result.methods[i].sparkle_per_frame);
+    EXPECT_DOUBLE_EQ(m.at("mean_flip_ldr").get<double>(), result.methods[i].mean_flip_ldr);
   }
   const bool mp4 = json.at("video") == "mp4";
   for (const std::string stream : {"reference", "conventional", "vlachos"}) {

@@ -15,6 +15,7 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <set>
 #include <sstream>
 
 #include "core/image_io.hpp"
@@ -379,4 +380,37 @@ TEST(Report, AConvergeRunShowsItsCurvesAndTheirTimeToTheTarget) {
   for (const char* part : {"\"kind\":\"converge\"", "\"seconds_to_target\"", "path-unshadowed",
                            "error against time, builtin:spheres", "error against samples, builtin:spheres"})
     EXPECT_NE(page.find(part), std::string::npos) << part;
+}
+
+TEST(Report, TheCompareTableCarriesFlipAndTheSparkleDistanceWhereTheRunMeasuredThem) {
+  const ScratchDirectory scratch;
+  const fs::path home = scratch / "home", runs = scratch / "runs";
+  make_outputs(runs, home, false);
+  auto table_of = [&](const fs::path& report) {
+    const std::string page = read_text(report / "index.html");
+    const std::string open = "<script type=\"application/json\" id=\"report-data\">";
+    const auto begin = page.find(open) + open.size();
+    const auto data = nlohmann::json::parse(page.substr(begin, page.find("</script>", begin) - begin));
+    for (const auto& run : data["runs"])
+      if (run["kind"] == "compare") return run["table"];
+    return nlohmann::json();
+  };
+  ASSERT_EQ(run_glintlab("report -o " + quoted(scratch / "report") + " " + quoted(runs), home).code, 0);
+  const nlohmann::json table = table_of(scratch / "report");
+  const auto metrics = nlohmann::json::parse(read_text(runs / "compare" / "metrics.json"));
+  std::set<std::string> columns;
+  for (const auto& c : table["columns"]) columns.insert(c["key"].get<std::string>());
+  for (const char* key : {"flip_ldr", "flip_hdr", "sparkle_distance"}) {
+    EXPECT_TRUE(columns.count(key)) << key;
+    for (std::size_t i = 0; i < table["rows"].size(); ++i)
+      EXPECT_EQ(table["rows"][i][key], metrics["methods"][i][key]) << key;
+  }
+  // Outputs from before these metrics: the same report without their columns.
+  auto old = metrics;
+  old.erase("reference_floor");
+  for (auto& m : old["methods"])
+    for (const char* key : {"flip_ldr", "flip_hdr", "sparkle_distance"}) m.erase(key);
+  std::ofstream(runs / "compare" / "metrics.json") << old.dump(2);
+  ASSERT_EQ(run_glintlab("report -o " + quoted(scratch / "old-report") + " " + quoted(runs), home).code, 0);
+  for (const auto& c : table_of(scratch / "old-report")["columns"]) EXPECT_NE(c["key"], "flip_ldr");
 }

@@ -30,6 +30,11 @@ class Helpers:
             "energy": lambda run, m: o.metric(run, m, "energy_ratio"),
             "mean_rmse": lambda run, m: o.metric(run, m, "mean_rmse"),
             "flicker": lambda run, m: o.metric(run, m, "flicker"),
+            # FLIP, HDR-FLIP and the sparkle distance: compare's, or animate's means over frames.
+            "flip": lambda run, m: self.perceptual(run, m, "flip_ldr"),
+            "hdr_flip": lambda run, m: self.perceptual(run, m, "flip_hdr"),
+            "sparkle": lambda run, m: self.perceptual(run, m, "sparkle_distance"),
+            "perceptual_floor": lambda run, key: o.field(run, "reference_floor")[key],
             "ms": lambda run, m: o.metric(run, m, "wall_ms_median"),
             "gpu_ms": lambda run, m: o.metric(run, m, "gpu_ms_median"),
             "entries": lambda run: o.field(run, "methods"),
@@ -38,7 +43,7 @@ class Helpers:
             "stdout": lambda run: o.record(run)["stdout"], "seconds": lambda run: o.record(run)["seconds"],
             "printed_table": self.printed_table, "lines": lines,
             # Sentences and pictures.
-            "ranking_note": self.ranking_note, "gap_note": self.gap_note,
+            "ranking_note": self.ranking_note, "gap_note": self.gap_note, "metrics_note": self.metrics_note,
             "thumbnails": self.thumbnails, "image": self.image, "plot": self.plot,
             "curves": lambda run: o.field(run, "curves"),
             **PURE,
@@ -74,6 +79,27 @@ class Helpers:
         path = self.root / "templates" / "partials" / name
         text = render(path.read_text(), dict(self.names(), **values), f"tools/results/templates/partials/{name}")
         return text.rstrip("\n")
+
+    def perceptual(self, run, method, key):
+        """A compare run's `key` of a method, or an animate run's mean of it over frames."""
+        entry = self.o.entry(run, method)
+        return self.o.metric(run, method, key if key in entry else "mean_" + key)
+
+    def metrics_note(self, run, methods=None):
+        """Which method each metric of a compare run ranks first (among `methods`, default all):
+        one sentence, saying whether RMSE agrees with FLIP and the sparkle distance."""
+        names = methods or self.o.methods(run)
+        if len(names) < 2:
+            return ""
+        best = {label: min(names, key=lambda m: self.perceptual(run, m, key))
+                for label, key in (("RMSE", "rmse"), ("FLIP", "flip_ldr"), ("HDR-FLIP", "flip_hdr"),
+                                   ("the sparkle distance", "sparkle_distance"))}
+        if len(set(best.values())) == 1:
+            return f"RMSE, FLIP, HDR-FLIP and the sparkle distance all rank `{best['RMSE']}` first."
+        parts = [f"{label} ranks `{m}` first" for label, m in best.items()]
+        agree = [label for label in ("FLIP", "HDR-FLIP", "the sparkle distance") if best[label] == best["RMSE"]]
+        tail = (" (RMSE agrees with " + " and ".join(agree) + ")") if agree else " (RMSE agrees with neither)"
+        return "; ".join(parts) + tail + "."
 
     def ranking_note(self, run):
         """Which differences a compare run can rank: the best method, and whether its lead over the

@@ -98,7 +98,7 @@ class Helpers:
             return f"RMSE, FLIP, HDR-FLIP and the sparkle distance all rank `{best['RMSE']}` first."
         parts = [f"{label} ranks `{m}` first" for label, m in best.items()]
         agree = [label for label in ("FLIP", "HDR-FLIP", "the sparkle distance") if best[label] == best["RMSE"]]
-        tail = (" (RMSE agrees with " + " and ".join(agree) + ")") if agree else " (RMSE agrees with neither)"
+        tail = (" (RMSE agrees with " + " and ".join(agree) + ")") if agree else " (RMSE agrees with none of them)"
         return "; ".join(parts) + tail + "."
 
     def ranking_note(self, run):

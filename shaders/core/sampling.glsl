@@ -47,6 +47,16 @@ vec3 sampleBeckmannNormal(vec2 alpha, vec2 u) {
   return normalize(vec3(-slope, 1.0));
 }
 
+// GGX normal sampling proportional to D(h) cos(theta_h): GGX's stretch takes it to alpha = 1,
+// whose D cos is cos / pi, drawn by Malley's method (a uniform disk point lifted to the hemisphere).
+vec3 sampleGGXNormal(vec2 alpha, vec2 u) {
+  vec2 a = max(alpha, vec2(MIN_ALPHA));
+  float r = sqrt(u.x);
+  float phi = TWO_PI * u.y;
+  vec2 d = r * vec2(cos(phi), sin(phi));
+  return normalize(vec3(a * d, sqrt(max(0.0, 1.0 - u.x))));
+}
+
 // Solid-angle density of wi = reflect(-wo, h) for h from sampleGGXVisibleNormal: the visible-normal
 // density G1(wo) max(0, wo.h) D(h) / wo.z (Heitz 2018, eq. 3) times the reflection Jacobian
 // 1 / (4 wo.h) (Walter et al. 2007, eq. 14), i.e. D(h) G1(wo) / (4 wo.z), with G1 / wo.z in its

@@ -2,15 +2,8 @@
 // filter), in closed form where that is accurate and by quadrature where it is not: the box lobes
 // of lobe/lobe.glsl and the light images of lobe/light_image.glsl.
 #include "core/constants.glsl"
+#include "core/erf.glsl"
 #include "generated/gpu_contract.glsl"
-
-// erf, Abramowitz & Stegun 7.1.26 (absolute error < 1.5e-7).
-float erfApprox(float x) {
-  float t = 1.0 / (1.0 + 0.3275911 * abs(x));
-  float y = 1.0 - t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429)))) *
-                      exp(-x * x);
-  return sign(x) * y;
-}
 
 // Average of a slope density over a slope-space box (Kaplanyan et al. 2016's rectangle filter),
 // for axis-aligned A = diag(alpha^2). In units of alpha (u = x / alpha_x, v = y / alpha_y) the

@@ -68,7 +68,7 @@ vec4 evaluate(vec4 a, vec4 b) {
   // E[k | k >= 1] by midpoint quadrature of the normal numbers' CDF, through Box-Muller.
   float sum = 0.0;
   for (int i = 0; i < 256; ++i)
-    for (int j = 0; j < 16; ++j) sum += countGivenAny(law, n, binomialGaussian(vec2((float(i) + 0.5) / 256.0, (float(j) + 0.5) / 16.0)), REMAINING_COUNT_LOGNORMAL);
+    for (int j = 0; j < 16; ++j) sum += countGivenAny(law, n, randomNormal(vec2((float(i) + 0.5) / 256.0, (float(j) + 0.5) / 16.0)), REMAINING_COUNT_LOGNORMAL);
   return vec4(p1, p1 * sum / 4096.0, 0.0, 0.0);
 })", a, std::vector<glm::vec4>(a.size()));
   for (std::size_t i = 0; i < r.size(); i += 2) {
@@ -100,7 +100,7 @@ vec4 evaluate(vec4 a, vec4 b) {
   for (int i = 0; i < 4096; ++i) gate += U * reflectionGate(p1, U * (float(i) + 0.5) / 4096.0);
   for (int i = 0; i < 512; ++i)
     for (int j = 0; j < 16; ++j)
-      count += countGivenAny(law, n, binomialGaussian(vec2((float(i) + 0.5) / 512.0, (float(j) + 0.5) / 16.0)), model);
+      count += countGivenAny(law, n, randomNormal(vec2((float(i) + 0.5) / 512.0, (float(j) + 0.5) / 16.0)), model);
   return vec4(gate / 4096.0, count / 8192.0, p1, 0.0);
 })", a, b);
   std::vector<double> out;

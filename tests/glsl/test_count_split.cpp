@@ -46,8 +46,8 @@ vec4 evaluate(vec4 a, vec4 b) {
     } else {
       float p1 = probabilityAnyReflects(q, c);
       vec2 law = remainingLaw(q, c, p1, REMAINING_COUNT_LOGNORMAL);
-      float drawn = reflectionGate(p1, binomialUnit2(r.xy).x) *
-                    countGivenAny(law, c, binomialGaussian(binomialUnit2(r.zw)), REMAINING_COUNT_LOGNORMAL);
+      float drawn = reflectionGate(p1, randomUnit2(r.xy).x) *
+                    countGivenAny(law, c, randomNormal(randomUnit2(r.zw)), REMAINING_COUNT_LOGNORMAL);
       left = drawn + max(c - drawn, 0.0);  // left + right
       m.w = max(m.w, drawn - c);
       m.z = min(m.z, drawn);

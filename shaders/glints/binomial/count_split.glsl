@@ -28,7 +28,7 @@ ivec2 lightCellOfLeaf(int i) {
 // make it c q (1 - q), the binomial variance of c facets, where that fits in [0, 1] (c >= 1.6 for
 // any q; 1.15 at q = 1/2), and 1 below: a part of a facet goes whole, as a facet does.
 float splitCount(float c, float q, uvec2 r) {
-  vec2 u = binomialUnit2(r);
+  vec2 u = randomUnit2(r);
   float binomial = q * (1.0 - q);
   float varianceB = max(reflectionGateSecondMoment(q) - q * q, 0.0);
   float wholeSecondMoment = varianceB > 0.0 ? min(1.0, binomial / (c * varianceB)) : 1.0;
@@ -70,8 +70,8 @@ void binomialReflectingSharesSplit(BinomialSurface b, vec2 slope, float pNode[LI
       uvec4 r = pcg4d(uvec4(cell, v.key));  // the same numbers as binomialReflectingShare's
       vec2 bilinear = mix(1.0 - f, f, vec2(corner));
       float count[LIGHT_TREE_NODES];
-      count[0] = reflectionGate(p1, binomialUnit2(r.xy).x) *
-                 countGivenAny(law, v.facets, binomialGaussian(binomialUnit2(r.zw)), model);
+      count[0] = reflectionGate(p1, randomUnit2(r.xy).x) *
+                 countGivenAny(law, v.facets, randomNormal(randomUnit2(r.zw)), model);
       splitDownTheTree(count, pNode, cell, v.key);
       float weight = v.perFacet * bilinear.x * bilinear.y;
       for (int l = 0; l < LIGHT_CELLS; ++l) share[l] += weight * count[LIGHT_FIRST_LEAF + l];

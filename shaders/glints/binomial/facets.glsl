@@ -20,7 +20,7 @@
 // order), and it then returns the smooth BRDF divided by the disk's exact mass under P22: the mean
 // over facets is the smooth BRDF, and the count of reflecting facets in a pixel is binomial.
 #include "core/brdf.glsl"
-#include "glints/binomial/random.glsl"
+#include "core/random.glsl"
 #include "lobe/light_image.glsl"
 
 // The facets' own roughness under lights with extent: mirrors to within a milliradian, so their
@@ -50,7 +50,7 @@ BinomialFacet binomialFacetAt(vec2 uv, float logDensity, vec2 alpha, float micro
   vec2 cell = floor(uv * exp(0.5 * logDensity));
   uvec4 r = pcg4d(uvec4(floatBitsToUint(cell), BINOMIAL_FACET_STREAM, 0x85a308d3u));
   BinomialFacet f;
-  f.unitSlope = sampleGgxUnitSlope(binomialUnit2(r.xy));
+  f.unitSlope = sampleGgxUnitSlope(randomUnit2(r.xy));
   vec2 slope = f.unitSlope * max(alpha, vec2(MIN_ALPHA));
   f.normal = normalize(vec3(-slope, 1.0));  // slope = -m.xy / m.z
   f.microfacetRoughness = microfacetRoughness;

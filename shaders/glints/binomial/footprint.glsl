@@ -3,7 +3,7 @@
 // across its minor axis) and anisotropy, and the four anisotropic grids whose weights interpolate it
 // tetrahedrally in (angle, log2 anisotropy, level of detail), so that every grid enters and
 // leaves with weight 0 as the footprint changes.
-#include "glints/binomial/random.glsl"
+#include "core/random.glsl"
 #include "core/constants.glsl"
 #include "core/footprint.glsl"
 
@@ -18,7 +18,7 @@ struct BinomialGrid {
   vec2 major;      // unit uv direction of the cells' long side
   float cellSize;  // uv length of their short side, 2^lod
   float ratio;     // 2^level
-  uint seed;       // the grid's own random numbers (glints/binomial/random.glsl)
+  uint seed;       // the grid's own random numbers (core/random.glsl)
 };
 
 struct BinomialFootprint {

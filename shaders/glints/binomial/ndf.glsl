@@ -57,9 +57,9 @@ BinomialSurface binomialSurface(vec2 uv, BinomialFootprint footprint, float logD
     float area = SIMPLEX_AREA * grid.cellSize * grid.cellSize * grid.ratio;
     for (int t = 0; t < 3; ++t) {
       uvec4 r = pcg4d(uvec4(uvec2(vertex[t]), grid.seed, 0x9e3779b9u));
-      float density = exp(clamp(logDensity + randomization * binomialGaussian(binomialUnit2(r.xy)), 0.0, 50.0));
+      float density = exp(clamp(logDensity + randomization * randomNormal(randomUnit2(r.xy)), 0.0, 50.0));
       float facets = area * density;
-      b.vertices[3 * g + t] = BinomialVertex(facets * grid.weight, w[t] / facets, binomialUnit2(r.zw), r.xy);
+      b.vertices[3 * g + t] = BinomialVertex(facets * grid.weight, w[t] / facets, randomUnit2(r.zw), r.xy);
     }
   }
   return b;
@@ -81,10 +81,10 @@ float binomialReflectingShare(BinomialSurface b, vec2 slope, float p, int model)
     for (int k = 0; k < 4; ++k) {
       ivec2 corner = ivec2(k & 1, k >> 1);
       uvec4 r = pcg4d(uvec4(uvec2(ivec2(c) + corner), v.key));
-      vec2 u = binomialUnit2(r.xy);
+      vec2 u = randomUnit2(r.xy);
       vec2 bilinear = mix(1.0 - f, f, vec2(corner));
       float gate = reflectionGate(p1, u.x);
-      count += bilinear.x * bilinear.y * gate * countGivenAny(law, v.facets, binomialGaussian(binomialUnit2(r.zw)), model);
+      count += bilinear.x * bilinear.y * gate * countGivenAny(law, v.facets, randomNormal(randomUnit2(r.zw)), model);
     }
     sum += v.perFacet * count;
   }

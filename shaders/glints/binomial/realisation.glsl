@@ -35,8 +35,8 @@ float binomialRealisationNdf(BinomialSurface b, vec3 h, vec2 alpha, int model) {
       vec2 law = remainingLaw(p, v.facets, p1, model);
       uvec4 r = pcg4d(uvec4(uvec2(cell), v.key));
       vec2 bilinear = mix(1.0 - f, f, vec2(corner));
-      float count = reflectionGate(p1, binomialUnit2(r.xy).x) *
-                    countGivenAny(law, v.facets, binomialGaussian(binomialUnit2(r.zw)), model);
+      float count = reflectionGate(p1, randomUnit2(r.xy).x) *
+                    countGivenAny(law, v.facets, randomNormal(randomUnit2(r.zw)), model);
       density += bilinear.x * bilinear.y * count / area;
     }
     sum += v.perFacet * density;

@@ -3,6 +3,7 @@
 // the pixel's footprint, a weighted sum over the cells of a virtual MIP hierarchy of linearly
 // transformed products of two dictionary marginals (2021, eqs. 3-6, 10, 15, 18).
 #include "core/constants.glsl"
+#include "core/erf.glsl"
 #include "core/footprint.glsl"
 #include "glints/chermain/dictionary.glsl"
 #include "lobe/lobe.glsl"
@@ -94,35 +95,6 @@ float glintHash(uint n) {
   return float(n & 0x7fffffffu) / float(0x7fffffff);
 }
 
-// erf^-1 (M. Giles, "Approximating the erfinv function", GPU Gems / 2010; single precision).
-float erfInverse(float x) {
-  float w = -log(max((1.0 - x) * (1.0 + x), 1e-30));
-  float p;
-  if (w < 5.0) {
-    w -= 2.5;
-    p = 2.81022636e-08;
-    p = 3.43273939e-07 + p * w;
-    p = -3.5233877e-06 + p * w;
-    p = -4.39150654e-06 + p * w;
-    p = 0.00021858087 + p * w;
-    p = -0.00125372503 + p * w;
-    p = -0.00417768164 + p * w;
-    p = 0.246640727 + p * w;
-    p = 1.50140941 + p * w;
-  } else {
-    w = sqrt(w) - 3.0;
-    p = -0.000200214257;
-    p = 0.000100950558 + p * w;
-    p = 0.00134934322 + p * w;
-    p = -0.00367342844 + p * w;
-    p = 0.00573950773 + p * w;
-    p = -0.0076224613 + p * w;
-    p = 0.00943887047 + p * w;
-    p = 1.00167406 + p * w;
-    p = 2.83297682 + p * w;
-  }
-  return p * x;
-}
 
 // Everything a cell's distribution depends on besides the cell.
 struct GlintQuery {

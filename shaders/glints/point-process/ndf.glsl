@@ -39,11 +39,12 @@ vec2 pointProcessAngular(vec3 h, vec2 alpha) {
   return 0.5 + 0.5 * s.xy * inversesqrt(1.0 + s.z);
 }
 
-// The inverse of pointProcessAngular; (0, 0, -1) outside the disk (no normal there).
+// The inverse of pointProcessAngular; 0 outside the disk (no normal there; reflect(-wo, 0) is below
+// the horizon, so a draw there fails).
 vec3 pointProcessDirection(vec2 x, vec2 alpha) {
   vec2 q = 2.0 * x - 1.0;
   float r2 = dot(q, q);
-  if (r2 >= 1.0) return vec3(0.0, 0.0, -1.0);
+  if (r2 >= 1.0) return vec3(0.0);
   vec3 s = vec3(q * sqrt(2.0 - r2), 1.0 - r2);  // Lambert: z = 1 - r^2, |s.xy| = r sqrt(2 - r^2)
   return normalize(vec3(s.xy * alpha, s.z));
 }
@@ -222,20 +223,22 @@ float pointProcessCellProbability(ivec2 j, float size) {
 
 // The facets of angular cell j in the spatial block of level L: each one's weight, its angular
 // point and its lobe's variance at its own direction (weight 0 outside the disk).
+// (Four facets in vectors, not arrays: a dynamically indexed local array spills to local memory
+// on a GPU; docs/methods.md, "Driver profiles".)
 struct PointProcessCellFacets {
-  float weight[4];
-  vec2 angular[4];
-  float variance[4];
+  vec4 weight;
+  vec4 angularX, angularY;
+  vec4 variance;
   float total;
   float scale;  // max(total, its expectation): a facet is drawn with probability weight / scale
 };
 PointProcessCellFacets pointProcessCellFacets(PointProcessFootprint f, PointProcessLevel L, ivec2 j) {
   PointProcessCellFacets c;
-  c.total = 0.0;
   for (int k = 0; k < 4; ++k) {
     PointProcessFacet facet = pointProcessFacet(L.cell + ivec2(k & 1, k >> 1), j, L.level, L.cellSize, L.angularSize);
     vec3 ha = pointProcessDirection(facet.angular, f.alpha);
-    c.angular[k] = facet.angular;
+    c.angularX[k] = facet.angular.x;
+    c.angularY[k] = facet.angular.y;
     // The lobe's variance at h_a, at least (cell / 16)^2: a proposal wider than a lobe far narrower
     // than a cell costs little, and a narrower one would be a point the density cannot resolve.
     float minimum = L.angularSize / 16.0;
@@ -245,8 +248,8 @@ PointProcessCellFacets pointProcessCellFacets(PointProcessFootprint f, PointProc
     c.weight[k] = ha.z > 0.0 ? pointProcessSurvival(L.w, facet.threshold) * pointProcessSpatialWeight(f, facet.position) *
                                    ndf(f.kind, ha, f.alpha) * ha.z / pointProcessAngularJacobian(ha, f.alpha)
                              : 0.0;
-    c.total += c.weight[k];
   }
+  c.total = dot(c.weight, vec4(1.0));
   // The scale a cell's total is measured against: what a cell of facets at the normal is expected
   // to hold (the level's share, W's mass over the spatial block per uv area, and D_base cos /
   // |dx/dw| = 8 / pi at the normal, its largest for GGX and Beckmann alike). A cell below it (no
@@ -277,7 +280,7 @@ float pointProcessBaseShare(PointProcessFootprint f) {
 }
 
 // A normal h drawn with u uniform in [0, 1)^2 (u picks the angular cell; the other choices take a
-// hash of u); h.z <= 0 when the draw fails.
+// hash of u); 0 when the draw fails.
 vec3 pointProcessSampleNormal(PointProcessFootprint f, vec2 u) {
   uvec4 r = pcg4d(uvec4(floatBitsToUint(u), 0x2545f491u, 0x9e3779b9u));
   vec2 r01 = randomUnit2(r.xy), r23 = randomUnit2(r.zw);
@@ -288,14 +291,16 @@ vec3 pointProcessSampleNormal(PointProcessFootprint f, vec2 u) {
   ivec2 j = ivec2(min(floor(vec2(pointProcessCellQuantile(u.x), pointProcessCellQuantile(u.y)) * cells), vec2(cells - 1.0)));
   PointProcessCellFacets c = pointProcessCellFacets(f, L, j);
   float pick = r23.x * c.scale;
-  if (!(pick < c.total)) return vec3(0.0, 0.0, -1.0);
-  int k = 0;
-  for (int i = 0; i < 3; ++i)
-    if (pick >= c.weight[k]) pick -= c.weight[k++];
+  if (!(pick < c.total)) return vec3(0.0);
+  // The facet whose share of the total holds `pick`: the first whose running sum passes it.
+  vec4 upTo = vec4(c.weight.x, c.weight.x + c.weight.y, c.weight.x + c.weight.y + c.weight.z, c.total);
+  vec4 chosen = vec4(lessThan(vec4(pick), upTo)) * vec4(1.0, vec3(lessThanEqual(upTo.xyz, vec3(pick))));
+  vec2 a = vec2(dot(chosen, c.angularX), dot(chosen, c.angularY));
+  float variance = dot(chosen, c.variance);
+  if (dot(chosen, c.weight) <= 0.0) return vec3(0.0);
   // Inversion of the truncated Gaussian per axis: t uniform between the window's two CDF values.
   vec2 lo = (vec2(j) - 0.5) * L.angularSize, hi = lo + 2.0 * L.angularSize;
-  float s = sqrt(c.variance[k]);
-  vec2 a = c.angular[k];
+  float s = sqrt(variance);
   vec2 t = vec2(r23.y, randomUnit2(pcg4d(r).xy).x);
   vec2 cLo = vec2(erfApprox((lo.x - a.x) * 0.70710678 / s), erfApprox((lo.y - a.y) * 0.70710678 / s));
   vec2 cHi = vec2(erfApprox((hi.x - a.x) * 0.70710678 / s), erfApprox((hi.y - a.y) * 0.70710678 / s));
@@ -323,9 +328,9 @@ float pointProcessNormalPdf(PointProcessFootprint f, vec3 h) {
       vec2 lo = (vec2(j) - 0.5) * L.angularSize, hi = lo + 2.0 * L.angularSize;
       float density = 0.0;
       for (int k = 0; k < 4; ++k) {
-        if (c.weight[k] <= 0.0) continue;
-        vec2 mass = pointProcessWindowMass(c.angular[k], c.variance[k], lo, hi);
-        vec2 d = x - c.angular[k];
+        vec2 a = vec2(c.angularX[k], c.angularY[k]);
+        vec2 mass = pointProcessWindowMass(a, c.variance[k], lo, hi);
+        vec2 d = x - a;
         density += c.weight[k] * exp(-0.5 * dot(d, d) / c.variance[k]) / (TWO_PI * c.variance[k] * mass.x * mass.y);
       }
       lobes += L.share * pointProcessCellProbability(j, L.angularSize) * density / c.scale;

@@ -69,15 +69,23 @@ float ggxVisibleReflectionPdf(vec3 wo, vec3 wi, vec2 alpha) {
   return ndfGGX(h, alpha) / (4.0 * (wo.z + smithLambdaCos(0, wo, alpha)));
 }
 
-// Solid-angle density of wi = reflect(-wo, h) for h from sampleBeckmannNormal: D(h) h.z / (4 wo.h).
-// Normals facing away from wo (wo.h < 0) reflect below the horizon, where this is 0.
-float beckmannReflectionPdf(vec3 wo, vec3 wi, vec2 alpha) {
+// The half vector h of wo and wi, and the Jacobian 1 / (4 wo.h) that turns a density of normals
+// into one of the directions wi = reflect(-wo, h) they reflect to (Walter et al. 2007, eq. 14);
+// 0 where there is none: normals facing away from wo (wo.h <= 0) reflect below the horizon.
+float reflectionJacobian(vec3 wo, vec3 wi, out vec3 h) {
   vec3 m = wo + wi;
+  h = vec3(0.0, 0.0, 1.0);
   if (dot(m, m) <= 0.0) return 0.0;
-  vec3 h = normalize(m);
+  h = normalize(m);
   float oh = dot(wo, h);
-  if (oh <= 0.0) return 0.0;
-  return ndfBeckmann(h, alpha) * h.z / (4.0 * oh);
+  return oh > 0.0 ? 1.0 / (4.0 * oh) : 0.0;
+}
+
+// Solid-angle density of wi = reflect(-wo, h) for h from sampleBeckmannNormal: D(h) h.z / (4 wo.h).
+float beckmannReflectionPdf(vec3 wo, vec3 wi, vec2 alpha) {
+  vec3 h;
+  float jacobian = reflectionJacobian(wo, wi, h);
+  return jacobian > 0.0 ? ndfBeckmann(h, alpha) * h.z * jacobian : 0.0;
 }
 
 // Power-heuristic weight of a strategy of density `pdf` against one of density `other` (Veach

@@ -8,6 +8,7 @@
 #include "core/brdf.glsl"
 #include "core/constants.glsl"
 #include "core/material.glsl"
+#include "core/sampling.glsl"
 #include "generated/gpu_contract.glsl"
 
 struct NormalGlintPoint {
@@ -53,10 +54,7 @@ vec3 sampleNormalGlintNormal(NormalGlintPoint p, vec2 u) {
 // Solid-angle density of wi = reflect(-wo, h) for h from sampleNormalGlintNormal: the density of h
 // is P(h.xy) ds/dw_h = D(h) h.z, times the reflection Jacobian 1 / (4 wo.h) (Walter et al. 2007, eq. 14).
 float normalGlintReflectionPdf(NormalGlintPoint p, vec3 wo, vec3 wi) {
-  vec3 m = wo + wi;
-  if (dot(m, m) <= 0.0) return 0.0;
-  vec3 h = normalize(m);
-  float oh = dot(wo, h);
-  if (oh <= 0.0) return 0.0;
-  return normalGlintNdf(p, h) * h.z / (4.0 * oh);
+  vec3 h;
+  float jacobian = reflectionJacobian(wo, wi, h);
+  return jacobian > 0.0 ? normalGlintNdf(p, h) * h.z * jacobian : 0.0;
 }

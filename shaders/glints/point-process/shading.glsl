@@ -11,7 +11,11 @@ PointProcessFootprint preparePointProcessGlints(Surface s, MaterialData m, float
   float tiling = m.diffuse_tiling.a;
   Footprint f = footprintInUnits(s.footprint, tiling);
   float sigma = PIXEL_FILTER_SIGMA * footprintScale;
-  return pointProcessFootprint(s.uv / tiling, sigma * sigma * f.uvCovariance, pointProcessGlintsLogDensity(m),
+  mat2 covariance = sigma * sigma * f.uvCovariance;
+  // Non-finite derivatives (at the horizon) give a point: the NDF's own floor of a facet spacing.
+  if (any(isnan(vec4(covariance[0], covariance[1]))) || any(isinf(vec4(covariance[0], covariance[1]))))
+    covariance = mat2(0.0);
+  return pointProcessFootprint(s.uv / tiling, covariance, pointProcessGlintsLogDensity(m),
                                pointProcessGlintsMicrofacetRoughness(m), s.ndf, s.alpha);
 }
 
@@ -22,13 +26,9 @@ vec3 pointProcessSpecularCos(PointProcessFootprint f, vec3 wo, vec3 wi, vec3 f0)
   return fresnelSchlick(f0, dot(wo, h)) * (0.25 * pointProcessNdf(f, h) * smithG2OverCos(f.kind, wo, wi, f.alpha));
 }
 
-// The solid-angle density of wi = reflect(-wo, h) for h from pointProcessSampleNormal: the density of
-// h times the reflection Jacobian 1 / (4 wo.h) (Walter et al. 2007, eq. 14).
+// The solid-angle density of wi = reflect(-wo, h) for h from pointProcessSampleNormal.
 float pointProcessReflectionPdf(PointProcessFootprint f, vec3 wo, vec3 wi) {
-  vec3 m = wo + wi;
-  if (dot(m, m) <= 0.0) return 0.0;
-  vec3 h = normalize(m);
-  float oh = dot(wo, h);
-  if (oh <= 0.0) return 0.0;
-  return pointProcessNormalPdf(f, h) / (4.0 * oh);
+  vec3 h;
+  float jacobian = reflectionJacobian(wo, wi, h);
+  return jacobian > 0.0 ? pointProcessNormalPdf(f, h) * jacobian : 0.0;
 }

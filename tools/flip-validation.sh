@@ -17,6 +17,7 @@ build=${2:-build/release}
 for t in "$build/glintlab" "$build/tests/flip_validation_pairs"; do
   [[ -x $t ]] || { echo "flip-validation: no executable at '$t' (make build)" >&2; exit 2; }
 done
+tools/splice-generated.sh --check docs/methods.md flip-validation
 authors=$(realpath "$authors")
 glintlab=$(realpath "$build/glintlab")
 work=$(mktemp -d)
@@ -64,12 +65,5 @@ done
 }
 table >"$work/table.md"
 cat "$work/table.md"
-doc=docs/methods.md
-begin="<!-- generated:flip-validation -->" end="<!-- /generated:flip-validation -->"
-grep -qxF "$begin" "$doc" && grep -qxF "$end" "$doc" || { echo "$doc: needs the lines $begin and $end" >&2; exit 1; }
-awk -v f="$work/table.md" -v b="$begin" -v e="$end" '
-  $0 == b { print; while ((getline line < f) > 0) print line; skip = 1; next }
-  $0 == e { skip = 0 }
-  !skip { print }' "$doc" >"$doc.tmp"
-mv "$doc.tmp" "$doc"
-echo "written $doc"
+tools/splice-generated.sh docs/methods.md flip-validation "$work/table.md"
+echo "written docs/methods.md"

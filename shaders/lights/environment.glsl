@@ -4,7 +4,8 @@
 // and a sampler by the map's luminance x sin(theta) with its density; the prefiltered maps of the
 // split sum belong to the lobe methods (lobe/environment_shading.glsl).
 // Fields: colour_type.rgb: the intensity; position_radius: (cos, sin) of the turn, the map's
-// width and height; direction_cos.x: 1 when the map has luminance to sample by, y: 1 when visible.
+// width and height; direction_cos.x: 1 when the map has luminance to sample by, y: 1 when visible;
+// axis_u.xyz: its luminance levels L_1 .. L_3 for glints under it (glints/binomial/environment_glints.glsl).
 // The map's convention (src/scene/lights/environment_map.hpp): texel row 0 at the top, polar angle
 // theta = pi v from +y, azimuth phi = 2 pi (u - 0.5), d = (sin theta sin phi, cos theta,
 // -sin theta cos phi): the map's centre is -z and it is not mirrored seen from inside.

@@ -55,6 +55,10 @@ inline constexpr int kEnvironmentRadianceUnit = 6;
 inline constexpr int kEnvironmentCdfUnit = 7;
 inline constexpr int kEnvironmentSpecularUnit = 8;
 inline constexpr int kEnvironmentIrradianceUnit = 9;
+/// Texture unit of the environment's luminance-level weights for glints under it, prefiltered as
+/// the specular chain (its `environment-glint-weights` resource, kneiphof2025's;
+/// shaders/glints/binomial/environment_glints.glsl).
+inline constexpr int kEnvironmentGlintWeightsUnit = 10;
 /// Per-draw texture transforms (uTextureTransforms in shaders/core/material.glsl), by slot.
 inline constexpr int kTextureSlotNormalMap = 0;
 inline constexpr int kTextureSlotBaseColor = 1;
@@ -63,7 +67,7 @@ inline constexpr int kTextureSlotEmissive = 3;
 inline constexpr int kTextureSlots = 4;
 /// Units from here on hold the precomputed tables, in their registry's order
 /// (src/tables/registry.cpp); GLSL sees each as TABLE_UNIT_<ID>.
-inline constexpr int kFirstTableUnit = 10;
+inline constexpr int kFirstTableUnit = 11;
 
 /// MaterialGpu::f0_ndf.w: the microfacet distribution.
 inline constexpr int kNdfGgx = 0;

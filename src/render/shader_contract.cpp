@@ -309,6 +309,7 @@ ShaderDefines contract_defines() {
       {"ENVIRONMENT_CDF_UNIT", std::to_string(kEnvironmentCdfUnit)},
       {"ENVIRONMENT_SPECULAR_UNIT", std::to_string(kEnvironmentSpecularUnit)},
       {"ENVIRONMENT_IRRADIANCE_UNIT", std::to_string(kEnvironmentIrradianceUnit)},
+      {"ENVIRONMENT_GLINT_WEIGHTS_UNIT", std::to_string(kEnvironmentGlintWeightsUnit)},
       {"TEXTURE_SLOT_NORMAL_MAP", std::to_string(kTextureSlotNormalMap)},
       {"TEXTURE_SLOT_BASE_COLOR", std::to_string(kTextureSlotBaseColor)},
       {"TEXTURE_SLOT_METALLIC_ROUGHNESS", std::to_string(kTextureSlotMetallicRoughness)},

@@ -63,7 +63,7 @@ TEST(MethodReference, TheBinaryListsOnlyTheBuiltInMethods) {
   for (const auto& m : all_methods()) ids.push_back(m.id);
   EXPECT_EQ(ids, (std::vector<std::string>{"conventional", "toksvig", "vlachos", "kaplanyan-beckmann", "kaplanyan-rect",
                                            "kaplanyan-ggx", "tokuyoshi", "lean", "podee", "chermain2020",
-                                           "chermain2021", "deliot2023", "kneiphof2024", "yan2016", "deng2022",
+                                           "chermain2021", "deliot2023", "kneiphof2024", "kneiphof2025", "yan2016", "deng2022",
                                            "kemppinen2025"}));
 }
 

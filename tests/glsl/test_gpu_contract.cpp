@@ -136,6 +136,7 @@ TEST(GpuContract, GeneratedDefinesAreTheCppConstants) {
       {"ENVIRONMENT_CDF_UNIT", kEnvironmentCdfUnit},
       {"ENVIRONMENT_SPECULAR_UNIT", kEnvironmentSpecularUnit},
       {"ENVIRONMENT_IRRADIANCE_UNIT", kEnvironmentIrradianceUnit},
+      {"ENVIRONMENT_GLINT_WEIGHTS_UNIT", kEnvironmentGlintWeightsUnit},
       {"TEXTURE_SLOT_NORMAL_MAP", kTextureSlotNormalMap},
       {"TEXTURE_SLOT_BASE_COLOR", kTextureSlotBaseColor},
       {"TEXTURE_SLOT_METALLIC_ROUGHNESS", kTextureSlotMetallicRoughness},

@@ -90,7 +90,7 @@ TEST(MethodRegistry, ListsTheBuiltInMethodsInTheirDeclaredOrderThenTheTestMethod
   const std::vector<std::string> expected{"conventional", "toksvig",        "vlachos",      "kaplanyan-beckmann",
                                           "kaplanyan-rect", "kaplanyan-ggx", "tokuyoshi",    "lean",
                                           "podee",        "chermain2020",   "chermain2021", "deliot2023",
-                                          "kneiphof2024", "yan2016",        "deng2022",     "kemppinen2025", "test-gain"};
+                                          "kneiphof2024", "kneiphof2025",   "yan2016",      "deng2022",     "kemppinen2025", "test-gain"};
   std::vector<std::string> ids;
   for (const auto& m : all_methods()) ids.push_back(m.id);
   EXPECT_EQ(ids, expected);

@@ -13,6 +13,7 @@ namespace glintlab {
 
 ResourceType prefiltered_ndf_resource();
 ResourceType environment_map_resource();
+ResourceType environment_glint_weights_resource();
 ResourceType position_normal_elements_resource();
 ResourceType environment_lobes_resource();
 
@@ -50,6 +51,7 @@ const std::vector<ResourceType>& all_resource_types() {
     list.push_back(environment_map_resource());
     list.push_back(position_normal_elements_resource());
     list.push_back(environment_lobes_resource());
+    list.push_back(environment_glint_weights_resource());
     return list;
   }();
   return types;

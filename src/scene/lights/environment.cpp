@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "scene/lights/environment_glint_levels.hpp"
 #include "scene/lights/environment_map.hpp"
 #include "scene/lights/environment_studio.hpp"
 #include "scene/lights/light_keys.hpp"
@@ -60,6 +61,9 @@ LightKind environment_light_kind() {
             g.position_radius = glm::vec4(static_cast<float>(std::cos(turn)), static_cast<float>(std::sin(turn)),
                                           static_cast<float>(map.width()), static_cast<float>(map.height()));
             g.direction_cos = glm::vec4(sampleable ? 1.0f : 0.0f, l.visible ? 1.0f : 0.0f, 0.0f, 0.0f);
+            // Its luminance levels L_1 .. L_3 for glints under it (environment_glint_levels.hpp).
+            const auto levels = environment_glint_luminance_levels(map);
+            g.axis_u = glm::vec4(levels[1], levels[2], levels[3], 0.0f);
             return g;
           },
       .emitter = nullptr,  // seen where camera rays miss: the background pass (shaders/passes/background.frag)

@@ -25,15 +25,11 @@ std::array<float, kEnvironmentGlintLevels> environment_glint_tent_weights(
   return w;
 }
 
-EnvironmentGlintLevels environment_glint_levels(const Image& radiance) {
-  EnvironmentGlintLevels out;
-  if (radiance.empty()) return out;
+std::array<float, kEnvironmentGlintLevels> environment_glint_luminance_levels(const Image& radiance) {
+  std::array<float, kEnvironmentGlintLevels> levels{};
   float brightest = 0.0f;
   for (const glm::vec3& p : radiance.pixels()) brightest = std::max(brightest, luminance(p));
-  out.weights = Image(radiance.width(), radiance.height());
-  if (brightest <= 0.0f) {
-    return out;  // all black: every texel is level 0 (weights of levels 1..3 zero)
-  }
+  if (brightest <= 0.0f) return levels;  // black (or empty): every texel is level 0
   const float black = kEnvironmentGlintBlackLevel * brightest;
   float dimmest = brightest;
   for (const glm::vec3& p : radiance.pixels())
@@ -41,10 +37,18 @@ EnvironmentGlintLevels environment_glint_levels(const Image& radiance) {
   // L_i = exp(lerp(ln Y_min, ln Y_max, i / 3)) for i = 1, 2, 3: Y_min itself is not a level.
   for (int i = 1; i < kEnvironmentGlintLevels; ++i) {
     const double t = double(i) / (kEnvironmentGlintLevels - 1);
-    out.luminance[static_cast<std::size_t>(i)] =
+    levels[static_cast<std::size_t>(i)] =
         static_cast<float>(std::exp((1.0 - t) * std::log(double(dimmest)) + t * std::log(double(brightest))));
   }
-  out.luminance.back() = brightest;  // exactly
+  levels.back() = brightest;  // exactly
+  return levels;
+}
+
+EnvironmentGlintLevels environment_glint_levels(const Image& radiance) {
+  EnvironmentGlintLevels out;
+  if (radiance.empty()) return out;
+  out.luminance = environment_glint_luminance_levels(radiance);
+  out.weights = Image(radiance.width(), radiance.height());
   for (std::size_t i = 0; i < radiance.pixel_count(); ++i) {
     const auto w = environment_glint_tent_weights(luminance(radiance.pixels()[i]), out.luminance);
     out.weights.pixels()[i] = glm::vec3(w[1], w[2], w[3]);

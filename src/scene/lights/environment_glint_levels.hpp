@@ -7,7 +7,7 @@
 // region's weight map, prefiltered by the same GGX chain as the radiance
 // (environment_prefilter.hpp), is the share of a lobe's reflected directions that fall in the
 // region; a facet count split among the regions by those shares, each region lit by its level,
-// gives the glints' brightness under the environment (the method `kneiphof2025`, to come).
+// gives the glints' brightness under the environment (the method `kneiphof2025`).
 // Because the filter is linear and the same, sum_k L_k w_k stays the luminance of the prefiltered
 // radiance at every texel of every level: the glints' mean is the split sum's.
 #include <array>
@@ -29,6 +29,8 @@ struct EnvironmentGlintLevels {
 
 /// The levels and weights of a radiance map (an empty map gives all levels 0 and no weights).
 EnvironmentGlintLevels environment_glint_levels(const Image& radiance);
+/// The levels alone (what the environment light's GPU record carries; all 0 for a black map).
+std::array<float, kEnvironmentGlintLevels> environment_glint_luminance_levels(const Image& radiance);
 
 /// The tent weights of luminance y between the levels (w_0 .. w_3).
 std::array<float, kEnvironmentGlintLevels> environment_glint_tent_weights(

@@ -4,45 +4,26 @@
 // directions in each region; the levels themselves travel in the light's record (axis_u). A scene
 // without an environment gets a 1 x 1 chain of zeros (nothing reads it there).
 #include <algorithm>
-#include <span>
 #include <stdexcept>
 #include <string>
 
 #include "core/gpu_contract.hpp"
-#include "core/hash.hpp"
 #include "gl/context.hpp"
 #include "gl/objects.hpp"
 #include "render/resources/resource.hpp"
+#include "render/resources/scene_environment.hpp"
 #include "scene/lights/environment_glint_levels.hpp"
-#include "scene/lights/environment_map.hpp"
 #include "scene/lights/environment_prefilter.hpp"
 
 namespace glintlab {
 
 namespace {
 
-const EnvironmentMap* environment_of(const Scene& scene) {
-  for (const Light& l : scene.lights)
-    if (l.environment) return l.environment.get();
-  return nullptr;
-}
-
-// The map replicated texel for texel until it is as wide as the chain's base (as the
-// environment-map resource does, so that both chains are the same mip chain).
-Image widened(const Image& map) {
-  const int factor = (kEnvironmentSpecularBaseWidth + map.width() - 1) / map.width();
-  if (factor <= 1) return map;
-  Image wide(map.width() * factor, map.height() * factor);
-  for (int y = 0; y < wide.height(); ++y)
-    for (int x = 0; x < wide.width(); ++x) wide.at(x, y) = map.at(x / factor, y / factor);
-  return wide;
-}
-
 class EnvironmentGlintWeightsResource : public GpuResource {
  public:
   explicit EnvironmentGlintWeightsResource(const EnvironmentMap* map) {
     std::vector<Image> levels = {Image(1, 1)};
-    if (map) levels = prefilter_environment_specular(environment_glint_levels(widened(map->radiance)).weights);
+    if (map) levels = prefilter_environment_specular(environment_glint_levels(widened_for_specular_chain(map->radiance)).weights);
     texture_ = gl::make_texture(GL_TEXTURE_2D);
     glTextureStorage2D(texture_.id(), static_cast<GLsizei>(levels.size()), GL_RGB32F, levels[0].width(),
                        levels[0].height());
@@ -76,19 +57,13 @@ ResourceType environment_glint_weights_resource() {
       .binding = "sampler at ENVIRONMENT_GLINT_WEIGHTS_UNIT",
       .key =
           [](const ResourceContext& c) {
-            const EnvironmentMap* map = environment_of(c.scene);
             Hasher h;
-            h.value(map != nullptr);
-            if (map) {
-              h.value(map->radiance.width());
-              h.value(map->radiance.height());
-              h.span(std::span<const glm::vec3>(map->radiance.pixels()));
-            }
+            hash_environment(h, scene_environment(c.scene));
             return h.hex();
           },
       .estimate_bytes =
           [](const ResourceContext& c) -> std::uint64_t {
-            const EnvironmentMap* map = environment_of(c.scene);
+            const EnvironmentMap* map = scene_environment(c.scene);
             if (!map) return 12;
             // A chain of at most 256 x 128 (4/3 of its base level), as the radiance's; the weights
             // of the widened map while it is made.
@@ -98,7 +73,7 @@ ResourceType environment_glint_weights_resource() {
             return 12 * base * (base / 2) * 4 / 3 + 12 * w * h;
           },
       .make = [](const ResourceContext& c) -> std::unique_ptr<GpuResource> {
-        return std::make_unique<EnvironmentGlintWeightsResource>(environment_of(c.scene));
+        return std::make_unique<EnvironmentGlintWeightsResource>(scene_environment(c.scene));
       },
   };
 }

@@ -15,21 +15,16 @@
 #include "core/gpu_contract.hpp"
 #include "core/hash.hpp"
 #include "prefilter/environment_sg_fit.hpp"
+#include "render/resources/scene_environment.hpp"
 #include "render/resources/storage_buffers_resource.hpp"
 
 namespace glintlab {
 
 namespace {
 
-const EnvironmentMap* environment_of(const Scene& scene) {
-  for (const Light& l : scene.lights)
-    if (l.environment) return l.environment.get();
-  return nullptr;
-}
-
 int requested_lobes(const ResourceContext& c) {
   const auto it = c.params.find("environment_lobes");
-  return it == c.params.end() || !environment_of(c.scene) ? 0 : static_cast<int>(it->second);
+  return it == c.params.end() || !scene_environment(c.scene) ? 0 : static_cast<int>(it->second);
 }
 
 }  // namespace
@@ -41,7 +36,7 @@ ResourceType environment_lobes_resource() {
       .binding = "storage buffer ENVIRONMENT_LOBES_BINDING",
       .key =
           [](const ResourceContext& c) {
-            const EnvironmentMap* map = environment_of(c.scene);
+            const EnvironmentMap* map = scene_environment(c.scene);
             Hasher h;
             h.value(requested_lobes(c));
             if (map && requested_lobes(c) > 0) {
@@ -57,7 +52,7 @@ ResourceType environment_lobes_resource() {
             std::vector<float> packed(4, 0.0f);  // the count (as float bits of an int), then padding to a vec4
             const int lobes = requested_lobes(c);
             if (lobes > 0) {
-              const EnvironmentMap& map = *environment_of(c.scene);
+              const EnvironmentMap& map = *scene_environment(c.scene);
               const SphericalGaussianFit fit =
                   fit_spherical_gaussians(map, lobes, std::min(kSphericalGaussianFitRows, map.radiance.height()));
               packed[0] = std::bit_cast<float>(static_cast<std::int32_t>(fit.lobes.size()));

@@ -14,6 +14,7 @@
 #include "gl/context.hpp"
 #include "gl/objects.hpp"
 #include "render/resources/resource.hpp"
+#include "render/resources/scene_environment.hpp"
 #include "scene/lights/environment_map.hpp"
 #include "scene/lights/environment_prefilter.hpp"
 #include "scene/lights/environment_sampling.hpp"
@@ -21,13 +22,6 @@
 namespace glintlab {
 
 namespace {
-
-/// The scene's environment map (at most one: the parser checks), or null.
-const EnvironmentMap* scene_environment(const Scene& scene) {
-  for (const Light& l : scene.lights)
-    if (l.environment) return l.environment.get();
-  return nullptr;
-}
 
 gl::Texture make_texture(GLenum format, int levels, int width, int height, GLenum min_filter, GLenum wrap_s) {
   gl::Texture t = gl::make_texture(GL_TEXTURE_2D);
@@ -45,18 +39,6 @@ void upload_rgb(const gl::Texture& t, int level, const Image& image) {
 
 std::uint64_t rgb_bytes(const Image& image) { return 12ull * image.pixel_count(); }
 
-/// The map replicated texel for texel (the same piecewise-constant light) until it is at least as
-/// wide as the prefiltered chain's base: the chain then starts at kEnvironmentSpecularBaseWidth
-/// and halves down to its coarsest level, a GL mip chain whatever the map's size.
-Image widened_for_the_chain(const Image& map) {
-  const int factor = (kEnvironmentSpecularBaseWidth + map.width() - 1) / map.width();
-  if (factor <= 1) return map;
-  Image wide(map.width() * factor, map.height() * factor);
-  for (int y = 0; y < wide.height(); ++y)
-    for (int x = 0; x < wide.width(); ++x) wide.at(x, y) = map.at(x / factor, y / factor);
-  return wide;
-}
-
 class EnvironmentMapResource : public GpuResource {
  public:
   explicit EnvironmentMapResource(const EnvironmentMap& map) {
@@ -69,7 +51,7 @@ class EnvironmentMapResource : public GpuResource {
     glTextureSubImage2D(cdf_.id(), 0, 0, 0, sampling.width + 1, sampling.height + 1, GL_RED, GL_FLOAT,
                         sampling.cdf.data());
 
-    const PrefilteredEnvironment prefiltered = prefilter_environment(widened_for_the_chain(radiance));
+    const PrefilteredEnvironment prefiltered = prefilter_environment(widened_for_specular_chain(radiance));
     const auto& levels = prefiltered.specular_levels;
     specular_ = make_texture(GL_RGB32F, static_cast<int>(levels.size()), levels[0].width(), levels[0].height(),
                              GL_LINEAR_MIPMAP_LINEAR, GL_REPEAT);
@@ -112,14 +94,8 @@ ResourceType environment_map_resource() {
                  "ENVIRONMENT_IRRADIANCE_UNIT",
       .key =
           [](const ResourceContext& c) {
-            const EnvironmentMap* map = scene_environment(c.scene);
             Hasher h;
-            h.value(map != nullptr);
-            if (map) {
-              h.value(map->radiance.width());
-              h.value(map->radiance.height());
-              h.span(std::span<const glm::vec3>(map->radiance.pixels()));
-            }
+            hash_environment(h, scene_environment(c.scene));
             return h.hex();
           },
       .estimate_bytes =

@@ -141,6 +141,15 @@ int environment_specular_samples(int level) {
   return level <= 1 ? 64 : level == 2 ? 128 : 256;
 }
 
+Image widened_for_specular_chain(const Image& map) {
+  const int factor = (kEnvironmentSpecularBaseWidth + map.width() - 1) / map.width();
+  if (factor <= 1) return map;
+  Image wide(map.width() * factor, map.height() * factor);
+  for (int y = 0; y < wide.height(); ++y)
+    for (int x = 0; x < wide.width(); ++x) wide.at(x, y) = map.at(x / factor, y / factor);
+  return wide;
+}
+
 std::vector<Image> prefilter_environment_specular(const Image& radiance) {
   const MipPyramid source(radiance);
   std::vector<Image> levels;

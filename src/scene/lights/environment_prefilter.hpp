@@ -50,6 +50,11 @@ double environment_specular_alpha(int level);
 /// The GGX samples per texel of level m >= 1 (more for the wider lobes of the coarser levels).
 int environment_specular_samples(int level);
 
+/// The map replicated texel for texel (the same piecewise-constant light) until it is at least as
+/// wide as the specular chain's base: the chain then starts at kEnvironmentSpecularBaseWidth and
+/// halves down to its coarsest level, a GL mip chain whatever the map's size.
+Image widened_for_specular_chain(const Image& map);
+
 std::vector<Image> prefilter_environment_specular(const Image& radiance);
 Image environment_irradiance(const Image& radiance);
 /// Both of the above.

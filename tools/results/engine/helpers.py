@@ -86,17 +86,24 @@ class Helpers:
         return self.o.metric(run, method, key if key in entry else "mean_" + key)
 
     def metrics_note(self, run, methods=None):
-        """Which method each metric of a compare run ranks first (among `methods`, default all):
-        one sentence, saying whether RMSE agrees with FLIP and the sparkle distance."""
+        """Which method each metric of a compare run ranks first (among `methods`, default all), and
+        whether its lead over the next is more than the reference's own noise (RMSE: twice its noise
+        RMSE; FLIP, HDR-FLIP, sparkle: what two half-references score against each other): one
+        sentence, saying whether RMSE agrees with the others."""
         names = methods or self.o.methods(run)
         if len(names) < 2:
             return ""
-        best = {label: min(names, key=lambda m: self.perceptual(run, m, key))
-                for label, key in (("RMSE", "rmse"), ("FLIP", "flip_ldr"), ("HDR-FLIP", "flip_hdr"),
-                                   ("the sparkle distance", "sparkle_distance"))}
-        if len(set(best.values())) == 1:
-            return f"RMSE, FLIP, HDR-FLIP and the sparkle distance all rank `{best['RMSE']}` first."
-        parts = [f"{label} ranks `{m}` first" for label, m in best.items()]
+        floors = self.o.field(run, "reference_floor")
+        metrics = (("RMSE", "rmse", 2 * self.o.field(run, "reference_noise_rmse")),
+                   ("FLIP", "flip_ldr", floors["flip_ldr"]), ("HDR-FLIP", "flip_hdr", floors["flip_hdr"]),
+                   ("the sparkle distance", "sparkle_distance", floors["sparkle_distance"]))
+        best, parts = {}, []
+        for label, key, floor in metrics:
+            ranked = sorted(names, key=lambda m: self.perceptual(run, m, key))
+            best[label] = ranked[0]
+            gap = self.perceptual(run, ranked[1], key) - self.perceptual(run, ranked[0], key)
+            parts.append(f"{label} ranks `{ranked[0]}` first" +
+                         ("" if gap > floor else f" (by {gap:.4f}, within the reference's noise {floor:.4f}: not a ranking)"))
         agree = [label for label in ("FLIP", "HDR-FLIP", "the sparkle distance") if best[label] == best["RMSE"]]
         tail = (" (RMSE agrees with " + " and ".join(agree) + ")") if agree else " (RMSE agrees with none of them)"
         return "; ".join(parts) + tail + "."

@@ -1,21 +1,4 @@
 #pragma once
-// Error classes that map to the CLI's exit codes (README.md, "Use"):
-// InputError -> 2 (bad usage or input), RuntimeFailure -> 1 (failure at run time).
-#include <stdexcept>
-#include <string>
-
-namespace glintlab {
-
-/// Bad user input: the message names the file, key or line, the value and what is allowed.
-class InputError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-/// Something failed at run time (GL context, driver, disk, NaN in a result).
-class RuntimeFailure : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-}  // namespace glintlab
+// The error classes live in the installed interface (include/glintlab/error.hpp), so that a program
+// linking glintlab catches the same types the CLI maps to its exit codes.
+#include "glintlab/error.hpp"

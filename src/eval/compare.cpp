@@ -62,19 +62,6 @@ std::vector<Region> worst_regions(const Image& error_sum, int size, int count) {
   return chosen;
 }
 
-// What two independent halves of the reference score against each other (its even passes
-// against its odd ones): FLIP and the sparkle distance of the reference's own noise, at half its
-// samples (so above what the full reference shows against the truth).
-ImageMetrics half_reference_floor(const ReferenceFrame& reference, const MetricsViewing& viewing) {
-  ImageMetrics floor;
-  if (reference.passes < 2) return floor;
-  const MetricsReference odd(reference.odd_passes, reference.odd_passes, viewing);
-  floor.flip_ldr = flip::mean(odd.flip_ldr_map(reference.even_passes));
-  floor.flip_hdr = flip::mean(odd.flip_hdr_map(reference.even_passes));
-  floor.sparkle_distance = sparkle_distance(reference.even_passes, reference.odd_passes, kSparkleBlock);
-  return floor;
-}
-
 std::string format_table(const std::vector<MethodMetrics>& rows, const ReferenceFrame& reference,
                          const ImageMetrics& floor) {
   std::ostringstream s;

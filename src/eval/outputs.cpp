@@ -68,4 +68,15 @@ std::string describe_reference(const ReferenceFrame& reference) {
   return line;
 }
 
+// At half the samples, so above what the full reference shows against the truth.
+ImageMetrics half_reference_floor(const ReferenceFrame& reference, const MetricsViewing& viewing) {
+  ImageMetrics floor;
+  if (reference.passes < 2) return floor;
+  const MetricsReference odd(reference.odd_passes, reference.odd_passes, viewing);
+  floor.flip_ldr = flip::mean(odd.flip_ldr_map(reference.even_passes));
+  floor.flip_hdr = flip::mean(odd.flip_hdr_map(reference.even_passes));
+  floor.sparkle_distance = sparkle_distance(reference.even_passes, reference.odd_passes, kSparkleBlock);
+  return floor;
+}
+
 }  // namespace glintlab

@@ -33,6 +33,10 @@ void write_reference(const std::filesystem::path& dir, const std::string& stem, 
 nlohmann::json run_metadata(Session& session);
 /// How compare and animate look at images for FLIP: the film's exposure, --ppd (or the default).
 MetricsViewing metrics_viewing(const Session& session);
+/// What two independent halves of a reference score against each other (its even passes against
+/// its odd ones): FLIP and the sparkle distance of its own noise at half its samples, the floor
+/// below which a difference between methods is noise. Zero with fewer than two passes.
+ImageMetrics half_reference_floor(const ReferenceFrame& reference, const MetricsViewing& viewing);
 /// One line on what a reference reached: samples, passes, noise RMSE, energy error.
 std::string describe_reference(const ReferenceFrame& reference);
 

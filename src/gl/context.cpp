@@ -5,6 +5,8 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <map>
+#include <mutex>
 #include <sstream>
 #include <vector>
 
@@ -60,6 +62,25 @@ EGLDisplay open_surfaceless_display() {
   return d;
 }
 
+// Live headless contexts per display. EGL gives one display per device and eglTerminate ends
+// every context on it, so a display is terminated with its last context: a program (the Python
+// module, the library) may hold several contexts at once.
+std::mutex display_users_mutex;
+std::map<EGLDisplay, int> display_users;
+
+void add_display_user(EGLDisplay display) {
+  std::lock_guard lock(display_users_mutex);
+  ++display_users[display];
+}
+
+// True when no context uses the display any more.
+bool remove_display_user(EGLDisplay display) {
+  std::lock_guard lock(display_users_mutex);
+  if (--display_users[display] > 0) return false;
+  display_users.erase(display);
+  return true;
+}
+
 }  // namespace
 
 std::unique_ptr<GlContext> GlContext::create_headless() {
@@ -82,6 +103,7 @@ std::unique_ptr<GlContext> GlContext::create_headless() {
     throw RuntimeFailure(m == "hardware" ? std::string("no hardware EGL device found (GLINTLAB_GL=hardware); ") + kPackageHint
                                          : std::string("no EGL display without a window system could be opened; install the ") + kPackageHint);
   ctx->display_ = display;
+  add_display_user(display);
   if (!eglBindAPI(EGL_OPENGL_API)) throw RuntimeFailure("EGL cannot bind the desktop OpenGL API");
 
   const EGLint config_attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
@@ -119,10 +141,19 @@ std::unique_ptr<GlContext> GlContext::adopt_current(std::string platform) {
 GlContext::~GlContext() {
   auto display = static_cast<EGLDisplay>(display_);
   if (display != EGL_NO_DISPLAY) {
-    eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    if (eglGetCurrentContext() == static_cast<EGLContext>(context_))
+      eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     if (context_) eglDestroyContext(display, static_cast<EGLContext>(context_));
-    eglTerminate(display);
+    if (remove_display_user(display)) eglTerminate(display);
   }
+}
+
+void GlContext::make_current() const {
+  auto display = static_cast<EGLDisplay>(display_);
+  if (display == EGL_NO_DISPLAY || eglGetCurrentContext() == static_cast<EGLContext>(context_)) return;
+  if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, static_cast<EGLContext>(context_)))
+    throw RuntimeFailure("EGL cannot make glintlab's context current again (EGL error " + std::to_string(eglGetError()) +
+                         ")");
 }
 
 GlDeviceInfo GlContext::info() const {

@@ -27,6 +27,9 @@ class GlContext {
   GlContext(const GlContext&) = delete;
   GlContext& operator=(const GlContext&) = delete;
 
+  /// Makes a headless context current on this thread again, where a program holds several (the
+  /// library's Labs); an adopted context is the window's business: nothing is done.
+  void make_current() const;
   [[nodiscard]] GlDeviceInfo info() const;
   [[nodiscard]] bool is_software() const;
 

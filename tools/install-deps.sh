@@ -5,7 +5,9 @@
 #                                       GLFW and Dear ImGui: the viewer; xvfb: its test on a virtual display;
 #                                       chromium: the HTML report's test in a real browser; GNU parallel: the
 #                                       tiled-reference recipe's test; glslang and
-#                                       SPIRV-Tools: glintlab-shader-stats and shader tests)
+#                                       SPIRV-Tools: glintlab-shader-stats and shader tests; SPIRV-Cross:
+#                                       glintlab export's HLSL and MSL; pybind11, numpy and pytest: the
+#                                       Python module and its tests)
 #        tools/install-deps.sh demo     only what building and running the glintlab binary need (make demo):
 #                                       no test, benchmark, fuzzing, video or browser packages
 #        tools/install-deps.sh results  also what the runs of tools/results.py use (jq: tools/bench-constant-cost.sh)
@@ -26,7 +28,8 @@ demo_packages=(
 )
 packages=("${demo_packages[@]}"
   libgtest-dev libgmock-dev libbenchmark-dev
-  glslang-tools glslang-dev spirv-tools spirv-headers
+  glslang-tools glslang-dev spirv-tools spirv-headers spirv-cross
+  pybind11-dev python3-dev python3-numpy python3-pytest
   clang libclang-rt-dev
   ffmpeg parallel
   xvfb xauth chromium

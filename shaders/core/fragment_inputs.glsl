@@ -2,11 +2,20 @@
 // and the draw's material. Declared before the method module, so that a method may re-evaluate
 // the attributes elsewhere in the pixel (attributesAtOffset; see podee/pixel_corners.glsl).
 #include "core/material_inputs.glsl"
+#include "core/surface.glsl"  // Footprint, makeFootprint, vertexTangentFrame
 
+#ifdef EXPORTED_SHADER
+// An exported shader's entry point (export/shade_pixel.frag) sets them from its arguments.
+vec3 vPosition;
+vec3 vNormal;
+vec4 vTangent;
+vec2 vUV;
+#else
 in vec3 vPosition;
 in vec3 vNormal;
 in vec4 vTangent;
 in vec2 vUV;
+#endif
 
 // The vertex attributes at `offset` pixels from the pixel centre, perspective-correct, as
 // interpolateAtOffset would give them (extrapolated linearly beyond the triangle). An attribute
@@ -31,4 +40,16 @@ VertexAttributes attributesAtOffset(vec2 offset) {
   vec4 tangent = affineAtOffset(vTangent * invW, offset) * w;
   vec4 uv = affineAtOffset(vec4(vUV, 0.0, 0.0) * invW, offset) * w;
   return VertexAttributes(position.xyz, normal.xyz, tangent, uv.xy);
+}
+
+// The pixel footprint (core/footprint.glsl) from the fine screen-space derivatives of the
+// interpolated attributes: the raster pass's ray differentials (per pixel, not per quad). Call in
+// uniform control flow. Its normal derivatives are the interpolated normal's as interpolated, on
+// the front side (the caller turns them to the seen side).
+Footprint screenSpaceFootprint(vec3 view, vec2 uv) {
+  vec3 t, b;
+  vertexTangentFrame(normalize(vNormal), vTangent, 1.0, t, b);  // t is the same on either side
+  return makeFootprint(dFdxFine(vPosition), dFdyFine(vPosition), dFdxFine(vNormal), dFdyFine(vNormal), dFdxFine(t),
+                       dFdyFine(t), dFdxFine(view), dFdyFine(view), dFdxFine(vUV), dFdyFine(vUV), dFdxFine(uv),
+                       dFdyFine(uv));
 }

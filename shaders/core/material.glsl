@@ -10,6 +10,13 @@ layout(std140, binding = MATERIAL_BLOCK_BINDING) uniform MaterialBlock { Materia
 
 // Per draw: the affine maps from the surface's uv to each of the draw's material textures'
 // coordinates (the normal map's tiling; KHR_texture_transform), indexed by TEXTURE_SLOT_*.
+#ifdef EXPORTED_SHADER
+// A block in an exported shader: Vulkan's GLSL, which HLSL and MSL are made from, has no loose uniforms.
+layout(std140, binding = TEXTURE_TRANSFORM_BLOCK_BINDING) uniform TextureTransformBlock {
+  mat3x2 uTextureTransforms[TEXTURE_SLOTS];
+};
+#else
 uniform mat3x2 uTextureTransforms[TEXTURE_SLOTS];
+#endif
 
 #include "generated/material_params.glsl"

@@ -5,7 +5,11 @@
 #include "generated/gpu_contract.glsl"
 
 layout(binding = NORMAL_MAP_UNIT) uniform sampler2D uNormalMap;
+#ifdef EXPORTED_SHADER
+int uMaterial;  // set by an exported shader's entry point from its argument (export/shade_pixel.frag)
+#else
 uniform int uMaterial;
+#endif
 
 // Normal-map coordinates of a uv (the material's tiling and texture transform applied).
 vec2 normalMapCoordinates(vec2 uv) { return uTextureTransforms[TEXTURE_SLOT_NORMAL_MAP] * vec3(uv, 1.0); }

@@ -20,18 +20,6 @@
 layout(location = 0) out vec4 outTotal;
 layout(location = 1) out vec4 outSpecular;
 
-// The pixel footprint (core/footprint.glsl) from the fine screen-space derivatives of the
-// interpolated attributes: the raster pass's ray differentials (per pixel, not per quad). Call in
-// uniform control flow. Its normal derivatives are the interpolated normal's as interpolated, on
-// the front side (the caller turns them to the seen side).
-Footprint screenSpaceFootprint(vec3 view, vec2 uv) {
-  vec3 t, b;
-  vertexTangentFrame(normalize(vNormal), vTangent, 1.0, t, b);  // t is the same on either side
-  return makeFootprint(dFdxFine(vPosition), dFdyFine(vPosition), dFdxFine(vNormal), dFdyFine(vNormal), dFdxFine(t),
-                       dFdyFine(t), dFdxFine(view), dFdyFine(view), dFdxFine(vUV), dFdyFine(vUV), dFdxFine(uv),
-                       dFdyFine(uv));
-}
-
 void main() {
   MaterialData m = materials[uMaterial];
   vec2 uv = normalMapCoordinates(vUV);

@@ -15,6 +15,7 @@
 #include "eval/prefilter_report.hpp"
 #include "prefilter/prefilter_params.hpp"
 #include "eval/program_command.hpp"
+#include "export/export_command.hpp"
 #include "eval/progress.hpp"
 #include "eval/reference_tiles.hpp"
 #include "eval/report.hpp"
@@ -383,6 +384,25 @@ int run_cli(int argc, char** argv) {
   program->add_option("--driver-profile", program_o.driver_profile,
                       "software or hardware (docs/methods.md, \"Driver profiles\")")->default_str(program_o.driver_profile);
 
+  ExportOptions export_o;
+  auto* export_cmd = app.add_subcommand(
+      "export", "one method as a self-contained shader for an engine: GLSL with the entry point glintlabShade, its "
+                "SPIR-V, HLSL and MSL, its tables as files and a README on binding them (docs/export.md)");
+  export_cmd->add_option("--method", export_o.method, "a method or variant (as --methods takes one)")
+      ->default_str(export_o.method);
+  export_cmd->add_option("--param", export_o.params, "a method parameter, baked in as a constant");
+  export_cmd->add_option("--material-kind", export_o.material_kind, "the material's kind (see 'glintlab materials')")
+      ->default_str(default_material_kind().id);
+  export_cmd->add_flag("--normal-map", export_o.normal_map, "the material has a normal map");
+  export_cmd->add_flag("--textures", export_o.textures, "the material's parameters vary per texel (glTF's textures)");
+  export_cmd->add_flag("--anisotropic", export_o.anisotropic, "the material's lobe can be anisotropic");
+  export_cmd->add_option("--light", export_o.light, "the kind of the light glintlabShade takes")
+      ->default_str(export_o.light);
+  export_cmd->add_option("--driver-profile", export_o.driver_profile,
+                         "hardware (GPUs: loops kept rolled) or software (docs/methods.md, \"Driver profiles\")")
+      ->default_str(export_o.driver_profile);
+  export_cmd->add_option("-o,--out", export_o.out, "the directory it is written into")->required();
+
   auto* report = app.add_subcommand("report", "a static HTML page (index.html, assets/) of compare, animate, bench and converge "
                                                "outputs: sortable metrics, a reference/method slider, videos, plots");
   std::vector<std::string> report_inputs;
@@ -450,6 +470,8 @@ int run_cli(int argc, char** argv) {
       run_environment_fit_report(load_scene(environment_fit_scene), environment_fit_o);
     } else if (app.got_subcommand("view")) {
       return run_view(view_o, view_options);
+    } else if (app.got_subcommand("export")) {
+      for (const std::string& file : run_export(export_o)) std::cout << export_o.out << "/" << file << "\n";
     } else if (app.got_subcommand("program")) {
       std::cout << program_source(program_o);
     } else if (app.got_subcommand("converge")) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/error.hpp"
+#include "render/shader_contract.hpp"
 #include "scene/lights/light_kind.hpp"
 
 namespace glintlab {
@@ -70,6 +71,20 @@ std::string forward_program_text(const ShaderLibrary& shaders, const std::string
   ShaderDefines defines = forward_variant(module, light_ranges_of(lights), material);
   defines.insert(defines.end(), extra.begin(), extra.end());
   return shaders.expand(stage == ProgramStage::Vertex ? "passes/forward.vert" : "passes/forward.frag", defines);
+}
+
+std::string exported_program_text(const ShaderLibrary& shaders, const std::string& module, MaterialVariant material,
+                                  const LightKind& light, const ShaderDefines& extra) {
+  const auto& kinds = all_light_kinds();
+  LightCounts counts(kinds.size(), 0);
+  for (std::size_t k = 0; k < kinds.size(); ++k)
+    if (kinds[k].id == light.id) counts[k] = 1;
+  ShaderDefines defines = forward_variant(module, light_ranges_of(counts), material);
+  defines.insert(defines.end(), {{"EXPORTED_SHADER", "1"},
+                                 {"EXPORTED_LIGHT_KIND", light_code_name(light)},
+                                 {"EXPORTED_LIGHT_COMPACT", light.compact ? "1" : "0"}});
+  defines.insert(defines.end(), extra.begin(), extra.end());
+  return shaders.expand("export/shade_pixel.frag", defines);
 }
 
 }  // namespace glintlab

@@ -31,4 +31,11 @@ enum class ProgramStage { Vertex, Fragment };
 std::string forward_program_text(const ShaderLibrary& shaders, const std::string& module, MaterialVariant material,
                                  const LightCounts& lights, ProgramStage stage, const ShaderDefines& extra = {});
 
+struct LightKind;
+/// The expanded text of an exported method (shaders/export/shade_pixel.frag; `glintlab export`):
+/// the forward pass's shading of a pixel as the function glintlabShade, for one light of `light`'s
+/// kind, in `material`'s variant and the library's driver profile.
+std::string exported_program_text(const ShaderLibrary& shaders, const std::string& module, MaterialVariant material,
+                                  const LightKind& light, const ShaderDefines& extra = {});
+
 }  // namespace glintlab

@@ -23,9 +23,6 @@ std::string upper(std::string s) {
   return s;
 }
 
-/// LIGHT_<ID>: the kind's code in GLSL.
-std::string code_name(const LightKind& kind) { return "LIGHT_" + upper(kind.id); }
-
 const char* form_name(LightForm form) {
   switch (form) {
     case LightForm::Disk: return "LIGHT_FORM_DISK";
@@ -63,7 +60,7 @@ bool polygon_form(const LightKind& k) { return k.form == LightForm::Polygon; }
 
 /// LIGHT_<ID>_COMPILED: 1 when the program shades lights of the kind (the scene has some, or the
 /// module builds them), else 0.
-std::string compiled_define(const LightKind& kind) { return code_name(kind) + "_COMPILED"; }
+std::string compiled_define(const LightKind& kind) { return light_code_name(kind) + "_COMPILED"; }
 
 /// The preprocessor's count of the compiled kinds among those `has` selects (`selected`) or not.
 std::string count_of(bool (*has)(const LightKind&), bool selected) {
@@ -83,7 +80,7 @@ std::string dispatch(const Dispatch& d) {
   for (const LightKind& k : all_light_kinds()) {
     if (!d.applies(k)) continue;
     const std::string call = k.glsl_prefix() + d.suffix + "(" + d.arguments + ")";
-    out += if_present(k, "  if (kind == " + code_name(k) + ") " +
+    out += if_present(k, "  if (kind == " + light_code_name(k) + ") " +
                              (d.returns_value ? "return " + call + ";\n" : "{ " + call + "; return; }\n"));
   }
   return out + "  " + d.fallback + "\n}\n\n";
@@ -94,7 +91,7 @@ std::string dispatch(const Dispatch& d) {
 std::string property(const std::string& name, bool (*has)(const LightKind&)) {
   std::string terms;
   for (const LightKind& k : all_light_kinds())
-    if (has(k)) terms += (terms.empty() ? "" : " || ") + std::string("kind == ") + code_name(k);
+    if (has(k)) terms += (terms.empty() ? "" : " || ") + std::string("kind == ") + light_code_name(k);
   return "bool " + name + "(LightData L) {\n#if " + count_of(has, false) + " == 0\n  return true;\n#elif " +
          count_of(has, true) + " == 0\n  return false;\n#else\n  int kind = lightType(L);\n  return " +
          (terms.empty() ? "false" : terms) + ";\n#endif\n}\n\n";
@@ -121,7 +118,7 @@ std::string light_kinds_glsl() {
   out += "int lightForm(LightData L) {\n  int kind = lightType(L);\n";
   for (const LightKind& k : all_light_kinds())
     if (k.form != LightForm::None)
-      out += if_present(k, "  if (kind == " + code_name(k) + ") return " + form_name(k.form) + ";\n");
+      out += if_present(k, "  if (kind == " + light_code_name(k) + ") return " + form_name(k.form) + ";\n");
   out += "  return LIGHT_FORM_NONE;\n}\n\n";
 
   const std::vector<Dispatch> functions = {
@@ -163,7 +160,7 @@ std::string shade_all_lights_glsl() {
          "Radiance shadeAllLights(Surface s) {\n  Radiance sum = Radiance(vec3(0.0), vec3(0.0));\n";
   for (const LightKind& k : all_light_kinds())
     out += "#if " + light_count_define(k) + " > 0\n  addRadiance(sum, " +
-           (k.compact ? "shadeCompactLights" : "shadeEnvironmentLights") + "(s, " + code_name(k) + "));\n#endif\n";
+           (k.compact ? "shadeCompactLights" : "shadeEnvironmentLights") + "(s, " + light_code_name(k) + "));\n#endif\n";
   return out + "  return sum;\n}\n";
 }
 
@@ -280,8 +277,8 @@ std::string glsl_float(float v) {
 
 }  // namespace
 
-std::string light_count_define(const LightKind& kind) { return code_name(kind) + "_COUNT"; }
-std::string light_built_define(const LightKind& kind) { return code_name(kind) + "_BUILT"; }
+std::string light_count_define(const LightKind& kind) { return light_code_name(kind) + "_COUNT"; }
+std::string light_built_define(const LightKind& kind) { return light_code_name(kind) + "_BUILT"; }
 
 ShaderDefines contract_defines() {
   ShaderDefines d = {
@@ -326,7 +323,7 @@ ShaderDefines contract_defines() {
       {"REFERENCE_SURFACE_REALISATION", std::to_string(static_cast<int>(ReferenceSurface::Realisation))},
       {"REFERENCE_SURFACE_FACETS", std::to_string(static_cast<int>(ReferenceSurface::Facets))},
   };
-  for (const LightKind& k : all_light_kinds()) d.emplace_back(code_name(k), std::to_string(k.code()));
+  for (const LightKind& k : all_light_kinds()) d.emplace_back(light_code_name(k), std::to_string(k.code()));
   d.emplace_back("LIGHT_KIND_COUNT", std::to_string(all_light_kinds().size()));
   for (const MaterialKind& k : all_material_kinds()) d.emplace_back(k.define(), std::to_string(k.code()));
   for (auto& define : table_defines()) d.push_back(std::move(define));  // TABLE_UNIT_<ID>, the tables' constants
@@ -358,5 +355,7 @@ std::string material_kind_module(const MaterialKind& kind) { return "generated/m
 void add_contract_sources(ShaderLibrary& shaders) {
   for (auto& [path, text] : generated_shader_sources()) shaders.add_source(path, std::move(text));
 }
+
+std::string light_code_name(const LightKind& kind) { return "LIGHT_" + upper(kind.id); }
 
 }  // namespace glintlab

@@ -27,6 +27,8 @@ void add_contract_sources(ShaderLibrary& shaders);
 ShaderDefines contract_defines();
 
 struct LightKind;
+/// LIGHT_<ID>: the define of the kind's code in GLSL.
+std::string light_code_name(const LightKind& kind);
 /// LIGHT_<ID>_COUNT: the forward variant's define of how many lights of the kind the scene has;
 /// the generated light dispatch and light loop compile only the kinds a scene has.
 std::string light_count_define(const LightKind& kind);

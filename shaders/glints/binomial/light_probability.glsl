@@ -12,7 +12,9 @@
 float ggxTotalNdf(float alpha) {
   float a2 = alpha * alpha;
   float s2 = max(1.0 - a2, 0.0), s = sqrt(s2);
-  float atanhOverS = s < 1e-2 ? 1.0 + s2 * (1.0 / 3.0 + s2 * 0.2) : atanh(min(s, 0.99999994)) / s;
+  // atanh written out (= Mesa's own): HLSL, which exported shaders translate to, has none.
+  float t = min(s, 0.99999994);
+  float atanhOverS = s < 1e-2 ? 1.0 + s2 * (1.0 / 3.0 + s2 * 0.2) : 0.5 * log((1.0 + t) / (1.0 - t)) / s;
   return 1.0 + a2 * atanhOverS;
 }
 

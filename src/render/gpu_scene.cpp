@@ -44,12 +44,6 @@ GpuMesh upload(const Mesh& mesh, const glm::mat4& transform, int material) {
   return g;
 }
 
-/// The kind's record, tagged with the kind's code (shaders/lights/light_data.glsl, lightType).
-LightGpu to_gpu(const Light& l) {
-  LightGpu g = l.kind->pack(l);
-  g.colour_type.w = static_cast<float>(l.kind->code());
-  return g;
-}
 
 /// A repeating, trilinearly filtered float texture with a full mip chain averaged from level 0.
 gl::Texture make_mipmapped_texture(GLenum format, GLenum channels, int width, int height, const float* texels) {
@@ -148,6 +142,23 @@ GpuScene::NormalMapTextures GpuScene::upload_normal_map(const NormalMap& map) {
   return t;
 }
 
+LightGpu pack_light(const Light& l) {
+  LightGpu g = l.kind->pack(l);
+  g.colour_type.w = static_cast<float>(l.kind->code());
+  return g;
+}
+
+MaterialGpu pack_material(const Material& m) {
+  const TexturedMetalRough x = m.textures.value_or(TexturedMetalRough{});
+  const float ndf = static_cast<float>(m.ndf == Ndf::Beckmann ? kNdfBeckmann : kNdfGgx);
+  return {glm::vec4(m.f0, ndf), glm::vec4(m.diffuse, m.normal_map_tiling),
+          glm::vec4(m.alpha, m.rho, m.anisotropy_rotation),
+          glm::vec4(m.kind_params[0], m.kind_params[1], m.kind_params[2], m.kind_params[3]),
+          glm::vec4(m.emission, 0.0f),
+          x.base_color, glm::vec4(x.metallic, x.roughness, x.anisotropy, 0.0f),
+          glm::vec4(x.dielectric_f0, 0.0f)};
+}
+
 GpuScene::GpuScene(const Scene& scene, TableCache tables)
     : scene_(scene), resources_(std::move(tables)), scene_resource_ids_(scene_resources(scene)) {
   for (const auto& shape : scene.shapes) meshes_.push_back(upload(*shape.mesh, shape.transform, shape.material));
@@ -159,14 +170,7 @@ GpuScene::GpuScene(const Scene& scene, TableCache tables)
 
   std::vector<MaterialGpu> materials;
   for (const auto& m : scene.materials) {
-    const TexturedMetalRough x = m.textures.value_or(TexturedMetalRough{});
-    const float ndf = static_cast<float>(m.ndf == Ndf::Beckmann ? kNdfBeckmann : kNdfGgx);
-    materials.push_back({glm::vec4(m.f0, ndf), glm::vec4(m.diffuse, m.normal_map_tiling),
-                         glm::vec4(m.alpha, m.rho, m.anisotropy_rotation),
-                         glm::vec4(m.kind_params[0], m.kind_params[1], m.kind_params[2], m.kind_params[3]),
-                         glm::vec4(m.emission, 0.0f),
-                         x.base_color, glm::vec4(x.metallic, x.roughness, x.anisotropy, 0.0f),
-                         glm::vec4(x.dielectric_f0, 0.0f)});
+    materials.push_back(pack_material(m));
     normal_maps_.push_back(m.normal_map ? upload_normal_map(*m.normal_map) : NormalMapTextures{});
     kinds_.push_back(m.kind);
     textures_.push_back(material_textures(m));
@@ -183,7 +187,7 @@ GpuScene::GpuScene(const Scene& scene, TableCache tables)
     for (const auto& l : scene.lights)
       if (l.kind == &kind) {
         if (!kind.compact && l.visible) background_light_ = static_cast<int>(lights.size());
-        lights.push_back(to_gpu(l));
+        lights.push_back(pack_light(l));
       }
     light_ranges_.emplace_back(begin, static_cast<int>(lights.size()));
   }

@@ -36,6 +36,12 @@ struct GpuEmitter {
   bool two_sided = false;
 };
 
+/// A light's record in the light block (shaders/lights/light_data.glsl): its kind's packing, tagged
+/// with the kind's code. What an engine that binds an exported shader packs too (docs/export.md).
+LightGpu pack_light(const Light& light);
+/// A material's record in the material block (shaders/core/material.glsl).
+MaterialGpu pack_material(const Material& material);
+
 class GpuScene {
  public:
   /// `tables`: where precomputed tables (and other resources with a disk cache) are cached

@@ -83,8 +83,14 @@ std::vector<std::string> list_builtin_scenes() {
 
 struct Lab::State {
   explicit State(const CommonOptions& options) : session(options, Workload{.methods = 1, .reference = true}) {}
-  // Its GL objects are deleted in its own context, whichever Lab's is current.
-  ~State() { current(); }
+  // Its GL objects are deleted in its own context, whichever Lab's is current (if EGL cannot make
+  // it current again, the context goes with its objects all the same).
+  ~State() {
+    try {
+      current();
+    } catch (const RuntimeFailure&) {
+    }
+  }
   Session session;
   // Every call draws in this Lab's context (a program may hold several Labs).
   Session& current() {

@@ -72,8 +72,8 @@ std::vector<std::string> run_export(const ExportOptions& o) {
   const MethodChoice& method = choices.front();
   const MaterialVariant material = program_material_variant(o.material_kind, o.normal_map, o.textures, o.anisotropic);
   const LightKind& light = light_kind(o.light);
-  const std::string kind = o.material_kind.empty() ? default_material_kind().id : o.material_kind;
-  const std::string stem = method.file_stem() + "." + kind + "." + light.id;
+  const MaterialKind& kind = o.material_kind.empty() ? default_material_kind() : find_material_kind(o.material_kind);
+  const std::string stem = method.file_stem() + "." + kind.id + "." + light.id;
 
   const ExportedShader shader = export_shader(method, material, light, profile);
   OutputStage stage(o.out);

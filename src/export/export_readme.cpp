@@ -2,7 +2,9 @@
 
 #include <sstream>
 
+#include "core/gpu_contract.hpp"
 #include "scene/lights/light_kind.hpp"
+#include "scene/materials/material_kind.hpp"
 
 namespace glintlab {
 
@@ -32,7 +34,7 @@ std::string value_text(const ParamDecl& p, const ParamValues& values) {
 std::string export_readme(const ExportReadme& r) {
   std::ostringstream s;
   const MethodDescriptor& m = *r.method.method;
-  s << "# " << r.method.display_name() << " for a " << r.material_kind << " material under a " << r.light.id
+  s << "# " << r.method.display_name() << " for a " << r.kind.id << " material under a " << r.light.id
     << " light\n\n"
     << m.title << " (" << m.citation << "), exported by `glintlab export` from glintlab's own shaders.\n\n"
     << "| file | what |\n| --- | --- |\n"
@@ -57,6 +59,24 @@ std::string export_readme(const ExportReadme& r) {
        "The radiance of one light: sum `diffuse + specular` over your lights, add `emission` once. "
        "`MaterialData`, `LightData` and `FrameData` are std140 structs declared at the top of the GLSL file "
        "(generated from src/core/gpu_contract.hpp's field lists).\n\n";
+  // The records from their one declaration (src/core/gpu_contract.hpp).
+  auto fields = [&](const char* record, const char* how, const auto& list) {
+    s << "`" << record << "` (std140) " << how << ":\n\n| field | type | meaning |\n| --- | --- | --- |\n";
+    for (const Std140Field& f : list) s << "| `" << f.name << "` | " << f.glsl_type << " | " << f.meaning << " |\n";
+    s << "\n";
+  };
+  fields("MaterialData", "as glintlab packs a material (pack_material, src/render/gpu_scene.cpp)", kMaterialFields);
+  if (!r.kind.params.empty()) {
+    s << "`kind_params` of a " << r.kind.id << " material, in order (x, y, z, w):\n\n";
+    for (const MaterialParamDecl& p : r.kind.params)
+      s << "- `" << p.key << "` (" << p.min << " .. " << p.max << ", default " << p.default_value << "): "
+        << p.description << "\n";
+    s << "\n";
+  }
+  fields("LightData", "as glintlab packs a light (pack_light: the kind's own packing, colour_type.a its code)",
+         kLightFields);
+  fields("FrameData", "as glintlab fills it for a view (frame_uniforms, src/render/renderer.cpp)", kFrameFields);
+  s << "For one view: `target` = (width, height, 1, 0) and `tile` = (0, 0, 1, 0); `target.w` must stay 0.\n\n";
   s << "## What the compiled code reads\n\nFrom spirv-cross's reflection of the SPIR-V; bind these, nothing "
        "else is read. Bindings are OpenGL's (uniform blocks and texture units count apart); for Vulkan, give the "
        "textures a set of their own or shift them.\n\n| resource | kind | binding | what |\n| --- | --- | --- | --- |\n";

@@ -10,10 +10,12 @@
 
 namespace glintlab {
 
+struct MaterialKind;
+
 struct ExportReadme {
   std::string stem;
   const MethodChoice& method;
-  std::string material_kind;
+  const MaterialKind& kind;
   const LightKind& light;
   const ExportedShader& shader;
   const std::vector<ExportedTable>& tables;  ///< those the compiled code samples

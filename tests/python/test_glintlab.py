@@ -43,6 +43,15 @@ def test_scenes_open(lab):
     assert lab.frames >= 1
 
 
+def test_a_scene_file_renders_as_its_builtin(lab, tmp_path):
+    printed = run_cli("scenes", "--print", SCENE.split(":")[1])
+    assert printed.returncode == 0
+    scene_file = tmp_path / "spheres.toml"
+    scene_file.write_text(printed.stdout)
+    from_file = glintlab.Lab(str(scene_file), **SIZE)
+    assert np.array_equal(from_file.render("conventional")["total"], lab.render("conventional")["total"])
+
+
 def test_render_is_float32_hxwx3_with_its_specular_part(lab):
     r = lab.render("conventional")
     for key in ("total", "specular"):

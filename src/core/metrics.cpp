@@ -203,7 +203,8 @@ std::vector<float> MetricsReference::flip_hdr_map(const Image& total) const {
   return hdr_.error_map(total);
 }
 
-ImageMetrics MetricsReference::measure(const Image& total, const Image& specular) const {
+ImageMetrics MetricsReference::measure(const Image& total, const Image& specular,
+                                       std::vector<float>* flip_ldr_map_out) const {
   ImageMetrics m;
   m.rmse = rmse(total, total_);
   m.rmse_specular = rmse(specular, specular_);
@@ -213,7 +214,9 @@ ImageMetrics MetricsReference::measure(const Image& total, const Image& specular
   m.max_error = max_abs_error(total, total_);
   m.block_rmse = block_rmse(total, total_, kStatisticsBlock);
   m.glint_detail = glint_detail(total);
-  m.flip_ldr = flip::mean(flip_ldr_map(total));
+  std::vector<float> ldr_map = flip_ldr_map(total);
+  m.flip_ldr = flip::mean(ldr_map);
+  if (flip_ldr_map_out) *flip_ldr_map_out = std::move(ldr_map);
   m.flip_hdr = flip::mean(flip_hdr_map(total));
   m.sparkle_distance = sparkle_distance(total, total_, kSparkleBlock);
   return m;

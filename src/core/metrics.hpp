@@ -76,7 +76,9 @@ Image displayed_linear(const Image& radiance, float exposure);
 class MetricsReference {
  public:
   MetricsReference(const Image& total, const Image& specular, const MetricsViewing& viewing);
-  [[nodiscard]] ImageMetrics measure(const Image& total, const Image& specular) const;
+  /// `flip_ldr_map_out`: also the LDR-FLIP map the mean was taken of (compare writes it).
+  [[nodiscard]] ImageMetrics measure(const Image& total, const Image& specular,
+                                     std::vector<float>* flip_ldr_map_out = nullptr) const;
   /// LDR-FLIP's and HDR-FLIP's error maps of one image.
   [[nodiscard]] std::vector<float> flip_ldr_map(const Image& total) const;
   [[nodiscard]] std::vector<float> flip_hdr_map(const Image& total) const;

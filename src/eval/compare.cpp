@@ -105,10 +105,16 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
   const MetricsViewing viewing = metrics_viewing(session);
   const MetricsReference metrics_reference(reference.total, reference.specular, viewing);
   const ImageMetrics floor = half_reference_floor(reference_estimate, viewing);
+  // Published as a unit: written into a staging folder, moved into `out` with the metrics last.
+  OutputStage stage(out);
+  const std::filesystem::path& staged = stage.path();
   Image error_sum(session.width(), session.height());
   float error_scale = 0.0f;
   for (std::size_t i = 0; i < methods.size(); ++i) {
-    rows.push_back({methods[i].display_name(), metrics_reference.measure(frames[i].total, frames[i].specular)});
+    std::vector<float> flip_map;  // written now: made once, for the mean and the picture
+    rows.push_back({methods[i].display_name(),
+                    metrics_reference.measure(frames[i].total, frames[i].specular, &flip_map)});
+    write_png(staged / (methods[i].file_stem() + "-flip.png"), false_colour(as_image(flip_map, session.width()), 1.0f));
     const Image error = abs_error_map(frames[i].total, reference.total);
     for (std::size_t p = 0; p < error.pixel_count(); ++p) error_sum.pixels()[p] += error.pixels()[p];
     // One colour scale for all maps (the largest 99.5th percentile) so they compare at a glance.
@@ -133,9 +139,6 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
     }
   };
 
-  // Published as a unit: written into a staging folder, moved into `out` with the metrics last.
-  OutputStage stage(out);
-  const std::filesystem::path& staged = stage.path();
   const Film& film = session.scene().film;
   write_reference(staged, "reference", reference_estimate, film);
   add_crops(0, "reference", tonemap_for_display(reference.total, film.exposure, film.bloom));
@@ -143,8 +146,6 @@ std::vector<MethodMetrics> run_compare(Session& session, const std::vector<Metho
     write_frame(staged, methods[i].file_stem(), frames[i], film);
     write_png(staged / (methods[i].file_stem() + "-error.png"),
               false_colour(abs_error_map(frames[i].total, reference.total), error_scale));
-    write_png(staged / (methods[i].file_stem() + "-flip.png"),
-              false_colour(as_image(metrics_reference.flip_ldr_map(frames[i].total), session.width()), 1.0f));
     add_crops(static_cast<int>(i) + 1, methods[i].display_name(),
               tonemap_for_display(frames[i].total, film.exposure, film.bloom));
   }

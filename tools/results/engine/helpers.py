@@ -100,11 +100,18 @@ class Helpers:
         best, parts = {}, []
         for label, key, floor in metrics:
             ranked = sorted(names, key=lambda m: self.perceptual(run, m, key))
-            best[label] = ranked[0]
-            gap = self.perceptual(run, ranked[1], key) - self.perceptual(run, ranked[0], key)
-            parts.append(f"{label} ranks `{ranked[0]}` first" +
-                         ("" if gap > floor else f" (by {gap:.4f}, within the reference's noise {floor:.4f}: not a ranking)"))
-        agree = [label for label in ("FLIP", "HDR-FLIP", "the sparkle distance") if best[label] == best["RMSE"]]
+            value = lambda m: self.perceptual(run, m, key)  # noqa: E731
+            # Methods with the same value (identical images) tie: the lead is over the first that differs.
+            first = [m for m in ranked if value(m) == value(ranked[0])]
+            best[label] = set(first)
+            who = f"`{first[0]}`" if len(first) == 1 else " and ".join(f"`{m}`" for m in first) + " (tied)"
+            rest = ranked[len(first):]
+            gap = value(rest[0]) - value(ranked[0]) if rest else 0.0
+            parts.append(f"{label} ranks {who} first" +
+                         ("" if rest and gap > floor else
+                          f" (by {gap:.4f}, within the reference's noise {floor:.4f}: not a ranking)" if rest else
+                          " (every method the same)"))
+        agree = [label for label in ("FLIP", "HDR-FLIP", "the sparkle distance") if best[label] & best["RMSE"]]
         tail = (" (RMSE agrees with " + " and ".join(agree) + ")") if agree else " (RMSE agrees with none of them)"
         return "; ".join(parts) + tail + "."
 

@@ -95,6 +95,33 @@ class RankingNotes(unittest.TestCase):
         self.assertEqual(self.note([("lean", 0.25)], 0.1), "")
 
 
+class MetricsNotes(unittest.TestCase):
+    """Each metric's first method, whether its lead is more than the reference's own noise, and ties."""
+
+    def note(self, rows, noise, floors):
+        with tempfile.TemporaryDirectory() as t:
+            d = Path(t) / "r"
+            d.mkdir()
+            methods = [dict(method=m, file=m, rmse=r, flip_ldr=f, flip_hdr=h, sparkle_distance=s)
+                       for m, r, f, h, s in rows]
+            floor = dict(zip(("flip_ldr", "flip_hdr", "sparkle_distance"), floors))
+            (d / "metrics.json").write_text(json.dumps(
+                {"reference_noise_rmse": noise, "reference_floor": floor, "methods": methods, "crops": []}))
+            runs = {"r": Run("r", "compare", "test", "", {})}
+            return Helpers(Outputs(runs, Path(t), None), ROOT, Path(t) / "images", "images").metrics_note("r")
+
+    def test_leads_within_the_noise_are_not_rankings_and_identical_methods_tie(self):
+        note = self.note([("a", 0.5, 0.10, 0.20, 0.3), ("b", 0.6, 0.10, 0.25, 0.1), ("c", 0.9, 0.30, 0.20, 0.4)],
+                         0.01, (0.05, 0.01, 0.05))
+        self.assertEqual(note, "RMSE ranks `a` first; FLIP ranks `a` and `b` (tied) first; HDR-FLIP ranks `a` and `c` "
+                               "(tied) first; the sparkle distance ranks `b` first (RMSE agrees with FLIP and HDR-FLIP).")
+        close = self.note([("a", 0.5, 0.10, 0.2, 0.3), ("b", 0.51, 0.11, 0.3, 0.4)], 0.01, (0.05, 0.01, 0.05))
+        self.assertIn("RMSE ranks `a` first (by 0.0100, within the reference's noise 0.0200: not a ranking)", close)
+        self.assertIn("FLIP ranks `a` first (by 0.0100, within the reference's noise 0.0500: not a ranking)", close)
+        same = self.note([("a", 0.5, 0.1, 0.2, 0.3), ("b", 0.5, 0.1, 0.2, 0.3)], 0.01, (0.05, 0.01, 0.05))
+        self.assertIn("RMSE ranks `a` and `b` (tied) first (every method the same)", same)
+
+
 class Runs(unittest.TestCase):
     def test_for_makes_every_combination_or_one_run_per_table(self):
         raw = [{"id": "a-{{ s }}-{{ spp }}", "command": "compare", "for": {"s": "scenes", "spp": [64, 1024]},

@@ -103,9 +103,11 @@ json compare_data(const CompareRun& c, const std::string& assets) {
       row["sparkle_distance"] = r.sparkle_distance;
     }
     table["rows"].push_back(row);
-    images["methods"].push_back({{"method", r.method},
-                                 {"image", assets + "/" + r.file + ".png"},
-                                 {"error", assets + "/" + r.file + "-error.png"}});
+    json method_images = {{"method", r.method},
+                          {"image", assets + "/" + r.file + ".png"},
+                          {"error", assets + "/" + r.file + "-error.png"}};
+    if (c.perceptual) method_images["flip"] = assets + "/" + r.file + "-flip.png";
+    images["methods"].push_back(method_images);
     columns.push_back(r.method);
   }
   json regions = json::array();

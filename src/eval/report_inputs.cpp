@@ -419,6 +419,7 @@ std::vector<std::string> report_assets(const ReportRun& run) {
     for (const auto& r : c->rows) {
       files.push_back(r.file + ".png");
       files.push_back(r.file + "-error.png");
+      if (c->perceptual) files.push_back(r.file + "-flip.png");  // written with FLIP since it is measured
     }
     for (const auto& w : c->regions) files.push_back(w.file);
   } else if (const auto* a = std::get_if<AnimateRun>(&run.data)) {

@@ -135,7 +135,8 @@ TEST(Report, ChromiumLoadsEveryImageAndVideoAndTheSliderMoves) {
     mp4s += e.path().extension() == ".mp4";
   }
   const auto crops = nlohmann::json::parse(read_text(scratch / "runs" / "compare" / "metrics.json"))["crops"].size();
-  EXPECT_EQ(pngs, 1 + 2 * 2 + static_cast<int>(crops));  // reference, each method and its error map, the strips
+  // The reference, each method with its error map and FLIP map, the strips.
+  EXPECT_EQ(pngs, 1 + 2 * 3 + static_cast<int>(crops));
   EXPECT_EQ(mp4s, 3);                                    // reference and both methods
   const std::string page = read_text(scratch / "report" / "index.html");
   EXPECT_EQ(page.find(scratch.path().string()), std::string::npos) << "the page names a path of this machine";
@@ -382,21 +383,27 @@ TEST(Report, AConvergeRunShowsItsCurvesAndTheirTimeToTheTarget) {
     EXPECT_NE(page.find(part), std::string::npos) << part;
 }
 
-TEST(Report, TheCompareTableCarriesFlipAndTheSparkleDistanceWhereTheRunMeasuredThem) {
+TEST(Report, ACompareRunCarriesFlipTheSparkleDistanceAndFlipMapsWhereItMeasuredThem) {
   const ScratchDirectory scratch;
   const fs::path home = scratch / "home", runs = scratch / "runs";
   make_outputs(runs, home, false);
-  auto table_of = [&](const fs::path& report) {
+  auto compare_of = [&](const fs::path& report) {
     const std::string page = read_text(report / "index.html");
     const std::string open = "<script type=\"application/json\" id=\"report-data\">";
     const auto begin = page.find(open) + open.size();
     const auto data = nlohmann::json::parse(page.substr(begin, page.find("</script>", begin) - begin));
     for (const auto& run : data["runs"])
-      if (run["kind"] == "compare") return run["table"];
+      if (run["kind"] == "compare") return run;
     return nlohmann::json();
   };
+  auto table_of = [&](const fs::path& report) { return compare_of(report)["table"]; };
   ASSERT_EQ(run_glintlab("report -o " + quoted(scratch / "report") + " " + quoted(runs), home).code, 0);
   const nlohmann::json table = table_of(scratch / "report");
+  // Each method's FLIP map is offered beside its error map, copied with the report.
+  for (const auto& m : compare_of(scratch / "report")["images"]["methods"]) {
+    ASSERT_TRUE(m.contains("flip")) << m.dump();
+    EXPECT_TRUE(fs::is_regular_file(scratch / "report" / m["flip"].get<std::string>())) << m.dump();
+  }
   const auto metrics = nlohmann::json::parse(read_text(runs / "compare" / "metrics.json"));
   std::set<std::string> columns;
   for (const auto& c : table["columns"]) columns.insert(c["key"].get<std::string>());
@@ -413,4 +420,5 @@ TEST(Report, TheCompareTableCarriesFlipAndTheSparkleDistanceWhereTheRunMeasuredT
   std::ofstream(runs / "compare" / "metrics.json") << old.dump(2);
   ASSERT_EQ(run_glintlab("report -o " + quoted(scratch / "old-report") + " " + quoted(runs), home).code, 0);
   for (const auto& c : table_of(scratch / "old-report")["columns"]) EXPECT_NE(c["key"], "flip_ldr");
+  for (const auto& m : compare_of(scratch / "old-report")["images"]["methods"]) EXPECT_FALSE(m.contains("flip"));
 }

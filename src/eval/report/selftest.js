@@ -41,15 +41,15 @@ async function selftest() {
             run.id + ': video ' + video.getAttribute('src') + ' did not load' +
             (video.error ? ' (error ' + video.error.code + ')' : ''));
     }
-    // Every method's image and error map through the viewer's own controls.
-    const select = section.querySelector('.controls select');
-    const errorMap = section.querySelector('.controls input[type=checkbox]');
+    // Every method's image and maps through the viewer's own controls.
+    const select = section.querySelector('.controls select.method');
+    const view = section.querySelector('.controls select.view');
     if (select) {
       const top = section.querySelector('.viewer img.top');
       for (const option of select.options) {
-        for (const error of [false, true]) {
+        for (const shown of view.options) {
           select.value = option.value;
-          errorMap.checked = error;
+          view.value = shown.value;
           select.dispatchEvent(new Event('change'));
           await settled(top);
           if (top.complete && top.naturalWidth > 0)
@@ -57,13 +57,12 @@ async function selftest() {
           else
             problems.push(run.id + ': image ' + top.getAttribute('src') + ' did not load');
           const rampShown = section.querySelector('.ramp').offsetParent !== null;
-          if (rampShown !== error)
+          if (rampShown !== (shown.value !== 'image'))
             problems.push(
-                run.id + ': the error map\u2019s colour ramp is ' + (rampShown ? 'shown' : 'hidden') +
-                ' with the error map ' + (error ? 'on' : 'off'));
+                run.id + ': the colour ramp is ' + (rampShown ? 'shown' : 'hidden') + ' with the ' + shown.text);
         }
       }
-      errorMap.checked = false;
+      view.value = 'image';
       select.dispatchEvent(new Event('change'));
     }
     const slider = section.querySelector('input.slider');

@@ -43,42 +43,52 @@ function viewer(run, chosen) {
     slider.value = String(Math.min(100, Math.max(0, 100 * (e.clientX - box.left) / box.width)));
     slider.dispatchEvent(new Event('input'));
   });
-  const select =
-      el('select', {'aria-label': 'method'}, ...methods.map((m) => el('option', {value: m.method, text: m.method})));
+  const select = el('select', {class: 'method', 'aria-label': 'method'},
+                    ...methods.map((m) => el('option', {value: m.method, text: m.method})));
   select.value = chosen;
-  const errorMap = el('input', {type: 'checkbox'});
+  // What the right of the split shows: the method's picture, |method - reference| in false colour,
+  // or compare's per-pixel LDR-FLIP (runs that measured FLIP), both on the one ramp below.
+  const views = [{value: 'image', text: 'image'}, {value: 'error', text: 'error map'}];
+  if (methods.every((m) => m.flip)) views.push({value: 'flip', text: 'FLIP map'});
+  const view = el('select', {class: 'view', 'aria-label': 'what the right side shows'},
+                  ...views.map((v) => el('option', v)));
   const showRegions = el('input', {type: 'checkbox'});
   showRegions.checked = true;
   const legend = el('p', {class: 'note'});
-  // The error maps' colours from 0 to the run's scale: the ramp compare paints them with.
-  const ramp =
-      el('div', {class: 'ramp'}, el('span', {text: '0'}), el('span', {class: 'bar'}),
-         el('span', {text: formatted(run.error_map_scale, 3) + ' and above'}));
+  // The maps' colours from 0 to their scale: the ramp compare paints them with.
+  const rampTop = el('span');
+  const ramp = el('div', {class: 'ramp'}, el('span', {text: '0'}), el('span', {class: 'bar'}), rampTop);
   ramp.querySelector('.bar').style.background = run.error_ramp;
+  const legends = {
+    image: (m) => 'Left of the split: the reference; right: ' + m.method +
+        '. Drag on the image or the slider to move the split.',
+    error: (m) => 'Right of the split: |' + m.method +
+        ' \u2212 reference| in false colour, one scale for every method of this run (full colour at ' +
+        formatted(run.error_map_scale, 3) + ').',
+    flip: (m) => 'Right of the split: LDR-FLIP of ' + m.method +
+        ' against the reference per pixel (the displayed pictures; 0 identical, 1 the largest difference).'
+  };
   const update = () => {
     const m = methods.find((x) => x.method === select.value);
-    const src = errorMap.checked ? m.error : m.image;
+    const src = {image: m.image, error: m.error, flip: m.flip}[view.value];
     if (top.dataset.src !== src) {
       top.dataset.src = src;
       if (top.hasAttribute('src')) top.src = src;
     }
-    top.alt = rightTag.textContent = errorMap.checked ? m.method + ' error map' : m.method;
-    legend.textContent = errorMap.checked ?
-        'Right of the split: |' + m.method +
-            ' \u2212 reference| in false colour, one scale for every method of this run (full colour at ' +
-            formatted(run.error_map_scale, 3) + ').' :
-        'Left of the split: the reference; right: ' + m.method + '. Drag on the image or the slider to move the split.';
-    ramp.hidden = !errorMap.checked;
+    top.alt = rightTag.textContent = view.value === 'image' ? m.method : m.method + ' ' + view.selectedOptions[0].text;
+    legend.textContent = legends[view.value](m);
+    rampTop.textContent = view.value === 'flip' ? '1' : formatted(run.error_map_scale, 3) + ' and above';
+    ramp.hidden = view.value === 'image';
     frame.closest('section')?.querySelectorAll('.cell').forEach(
         (c) => c.classList.toggle('chosen', c.dataset.column === m.method));
   };
   select.addEventListener('change', update);
-  errorMap.addEventListener('change', update);
+  view.addEventListener('change', update);
   showRegions.addEventListener('change', () => frame.classList.toggle('hide-regions', !showRegions.checked));
   setSplit();
   const controls =
       el('div', {class: 'controls'}, el('label', null, 'reference | ', select),
-         el('label', null, errorMap, ' error map'), el('label', null, showRegions, ' worst regions'));
+         el('label', null, 'show ', view), el('label', null, showRegions, ' worst regions'));
   return {nodes: [controls, frame, slider, legend, ramp], update};
 }
 
